@@ -1,0 +1,58 @@
+//! # kli — Kuramoto–Lohe Interpolation of rotations
+//!
+//! The method of Kapić and Crnkić, "Interpolating Rotations with Non-abelian Kuramoto Model on the
+//! 3-Sphere": to go from the rotation `p` to `r`, integrate
+//!
+//! ```text
+//! q' = r - (q·r) q,   q(0) = p          (paper eq. 3)
+//! ```
+//!
+//! until `||r - q|| < ε` (Algorithm 1). The solution is known in closed form
+//! (`../shared/MATH.md`): it is SLERP along the same great circle, with the clock
+//! `tan(φ(t)/2) = tan(φ0/2) e^(-t)`.
+//!
+//! Quaternions are [`glam::DQuat`] (f64). The paper, and the JavaScript API, write them scalar
+//! first, `[w, x, y, z]`: see [`from_wxyz`] and [`to_wxyz`]. Every function normalises its inputs
+//! and returns a [`KliError`] naming the bad argument rather than panicking.
+//!
+//! ```
+//! use kli::{kli, from_wxyz, KliOptions};
+//!
+//! let p = from_wxyz([0.0, 0.0, 0.0, 1.0]);
+//! let r = from_wxyz([0.5, 0.5, 0.5, 0.5]);
+//! let path = kli(p, r, &KliOptions::default())?;
+//! assert_eq!(path.steps(), 1166);
+//! assert!((path.final_time() - 11.66).abs() < 1e-12);
+//! # Ok::<(), kli::KliError>(())
+//! ```
+//!
+//! Modules, one concept each: [`model`] (the vector field), [`integrator`] (RK4, Euler, geodesic),
+//! [`algorithm`] (Algorithm 1), [`great_arc`] (the circle from `p` to the target),
+//! [`closed_form`] (the exact solution), [`slerp`](mod@slerp), [`hopf`](mod@hopf),
+//! [`axis_angle`](mod@axis_angle) (polar form), and on wasm32 the
+//! JavaScript boundary `bindings` and the canvas `render`er.
+
+pub mod axis_angle;
+
+pub mod closed_form;
+pub mod error;
+pub mod great_arc;
+pub mod hopf;
+pub mod integrator;
+pub mod algorithm;
+pub mod model;
+pub mod quaternion;
+pub mod slerp;
+
+#[cfg(target_arch = "wasm32")]
+pub mod bindings;
+
+pub use axis_angle::{axis_angle, from_axis_angle};
+pub use closed_form::{kli_exact, kli_reach_time, kli_to_slerp_parameter};
+pub use error::KliError;
+pub use glam::{DQuat, DVec3};
+pub use hopf::hopf;
+pub use integrator::Integrator;
+pub use algorithm::{KliOptions, KliPath, kli};
+pub use quaternion::{from_wxyz, to_wxyz};
+pub use slerp::slerp;

@@ -1,0 +1,73 @@
+//! Spherical linear interpolation (Shoemake 1985), `Slerp(p, r; s) = p (p⁻¹ r)^s`: the point of the
+//! great circle from `p` to the target at angle `(1 - s) φ0` from the target.
+//!
+//! Built on [`GreatArc`], so it is accurate near `p ≈ r` and `p ≈ -r` and follows the same
+//! `shortest_path` rule as KLI.
+
+use glam::DQuat;
+
+use crate::closed_form::arc;
+use crate::error::KliError;
+use crate::great_arc::GreatArc;
+
+/// `Slerp(p, r; s)`; inputs are normalised. `s` outside `[0, 1]` extrapolates along the circle.
+pub fn slerp(p: DQuat, r: DQuat, s: f64, shortest_path: bool) -> Result<DQuat, KliError> {
+    if !s.is_finite() {
+        return Err(KliError::InvalidNumber { name: "s".into(), value: s, requirement: "a finite number" });
+    }
+    Ok(point_at(&arc(p, r, shortest_path)?, s))
+}
+
+/// The SLERP point of `arc` at parameter `s`.
+#[inline]
+pub fn point_at(arc: &GreatArc, s: f64) -> DQuat {
+    if s == 0.0 {
+        return arc.start();
+    }
+    arc.point_at_angle((1.0 - s) * arc.angle())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::quaternion::{from_wxyz, unit};
+
+    /// Shoemake's product form, `p (p⁻¹ r)^s`, through glam's axis–angle conversions.
+    fn shoemake(p: DQuat, r: DQuat, s: f64) -> DQuat {
+        let (axis, angle) = (p.conjugate() * r).to_axis_angle();
+        p * DQuat::from_axis_angle(axis, angle * s)
+    }
+
+    #[test]
+    fn matches_shoemake_product_form() {
+        let p = unit("p", from_wxyz([0.3, -0.1, 0.7, 0.2])).unwrap();
+        let r = unit("r", from_wxyz([0.5, 0.4, -0.2, 0.6])).unwrap();
+        for s in [0.0, 0.1, 0.25, 0.5, 0.9, 1.0] {
+            let got = slerp(p, r, s, true).unwrap();
+            assert!((got - shoemake(p, r, s)).length() < 1e-12, "s = {s}");
+        }
+    }
+
+    #[test]
+    fn shortest_path_negates_the_far_end() {
+        let p = from_wxyz([1.0, 0.0, 0.0, 0.0]);
+        let r = from_wxyz([-0.6, 0.8, 0.0, 0.0]);
+        // Short way: to -r = (0.6, -0.8): half way is the unit bisector of p and -r.
+        let half = slerp(p, r, 0.5, true).unwrap();
+        let bisector = (p - r) * (1.0 / (p - r).length());
+        assert!((half - bisector).length() < 1e-15);
+        // Long way: to r, through the bisector of p and r.
+        let half_long = slerp(p, r, 0.5, false).unwrap();
+        let bisector_long = (p + r) * (1.0 / (p + r).length());
+        assert!((half_long - bisector_long).length() < 1e-15);
+    }
+
+    #[test]
+    fn ends_are_exact_and_s_is_checked() {
+        let p = unit("p", from_wxyz([0.3, -0.1, 0.7, 0.2])).unwrap();
+        let r = unit("r", from_wxyz([0.5, 0.4, -0.2, 0.6])).unwrap();
+        assert_eq!(slerp(p, r, 0.0, true).unwrap(), p);
+        assert!((slerp(p, r, 1.0, true).unwrap() - r).length() < 1e-15);
+        assert!(slerp(p, r, f64::NAN, true).unwrap_err().to_string().starts_with("s must be"));
+    }
+}

@@ -1,0 +1,260 @@
+//! The JavaScript API under Node (wasm-bindgen-test): the paper's numbers through the boundary,
+//! and every bad input turning into a JavaScript `Error` after which the module still works.
+//! Expected values come from MATH.md or are computed here by an independent formula.
+#![cfg(target_arch = "wasm32")]
+
+use js_sys::{Array, Float64Array, Object, Reflect};
+use kli::bindings::{self as api, KliOptionsObject, QuaternionLike, Vector3Like};
+use wasm_bindgen::{JsCast, JsError, JsValue};
+use wasm_bindgen_test::wasm_bindgen_test;
+
+const P: [f64; 4] = [0.0, 0.0, 0.0, 1.0];
+const R: [f64; 4] = [0.5, 0.5, 0.5, 0.5];
+
+fn quat(values: &[f64]) -> QuaternionLike {
+    let array: Array = values.iter().map(|&v| JsValue::from_f64(v)).collect();
+    array.unchecked_into()
+}
+
+fn typed(values: &[f64]) -> QuaternionLike {
+    Float64Array::from(values).unchecked_into()
+}
+
+fn options(entries: &[(&str, JsValue)]) -> Option<KliOptionsObject> {
+    let object = Object::new();
+    for (key, value) in entries {
+        Reflect::set(&object, &(*key).into(), value).unwrap();
+    }
+    Some(object.unchecked_into())
+}
+
+fn message(error: JsError) -> String {
+    let value = JsValue::from(error);
+    assert!(value.is_instance_of::<js_sys::Error>(), "not an Error: {value:?}");
+    value.unchecked_into::<js_sys::Error>().message().into()
+}
+
+fn close(a: &[f64], b: &[f64], tolerance: f64) -> bool {
+    a.len() == b.len() && a.iter().zip(b).all(|(x, y)| (x - y).abs() <= tolerance)
+}
+
+/// The paper's example still gives T = 11.66: the module survived whatever came before.
+fn assert_still_works() {
+    let path = api::kli(&quat(&P), &quat(&R), None).unwrap();
+    assert_eq!(path.steps(), 1166);
+}
+
+#[wasm_bindgen_test]
+fn paper_example_reaches_at_11_66() {
+    let path = api::kli(&quat(&P), &quat(&R), None).unwrap();
+    assert!((path.final_time() - 11.66).abs() < 1e-9, "T = {}", path.final_time());
+    assert_eq!(path.steps(), 1166);
+    let times = path.times().to_vec();
+    assert_eq!(times.len(), 1167);
+    assert_eq!(times[0], 0.0);
+    assert!((times[1166] - 11.66).abs() < 1e-9);
+    assert_eq!(path.quaternions().len(), 4 * 1167);
+    assert_eq!(path.hopf_curve().len(), 3 * 1167);
+    assert!(close(&path.target().to_vec(), &R, 0.0));
+    assert_eq!(path.integrator(), "rk4");
+}
+
+#[wasm_bindgen_test]
+fn table_1_to_four_decimals_with_the_corrected_row() {
+    // MATH.md, "The paper's example": t and the first and last components (the middle three
+    // equal the second).
+    let table = [
+        (0.0, 0.0, 1.0),
+        (0.2, 0.0943, 0.9866),
+        (0.4, 0.1754, 0.9527),
+        (0.55, 0.2270, 0.9195),
+        (0.85, 0.3083, 0.8455),
+        (1.2, 0.3732, 0.7630),
+        (1.8, 0.4364, 0.6548),
+    ];
+    let path = api::kli(&quat(&P), &quat(&R), None).unwrap();
+    let q = path.quaternions().to_vec();
+    let times = path.times().to_vec();
+    for (t, a, d) in table {
+        let n = (t / 0.01_f64).round() as usize;
+        assert!((times[n] - t).abs() < 1e-12);
+        let sample = &q[4 * n..4 * n + 4];
+        assert!(close(sample, &[a, a, a, d], 5e-5), "t = {t}: {sample:?}");
+    }
+    // The last row: within ε of r.
+    let last = &q[4 * 1166..];
+    assert!(close(last, &R, 1e-5), "{last:?}");
+}
+
+#[wasm_bindgen_test]
+fn integrated_path_matches_the_closed_form() {
+    // At δ = 0.01 both fourth-order schemes agree with the exact solution to 1e-8 (measured 1.3e-10
+    // and 7e-11); |q| stays 1 to 1e-9 for RK4 (measured 1.2e-10) and to rounding for geodesic.
+    for (integrator, agreement, norm_drift) in [("rk4", 1e-8, 1e-9), ("geodesic", 1e-8, 1e-14)] {
+        let path = api::kli(&quat(&P), &quat(&R), options(&[("integrator", integrator.into())])).unwrap();
+        let q = path.quaternions().to_vec();
+        for (n, &t) in path.times().to_vec().iter().enumerate() {
+            let exact = path.at(t).unwrap().to_vec();
+            assert!(close(&q[4 * n..4 * n + 4], &exact, agreement), "{integrator} t = {t}");
+            let norm = q[4 * n..4 * n + 4].iter().map(|c| c * c).sum::<f64>().sqrt();
+            assert!((norm - 1.0).abs() < norm_drift, "{integrator} t = {t}: |q| = {norm}");
+        }
+    }
+    // Euler drifts off the sphere: the reason it is there.
+    let euler = api::kli(&quat(&P), &quat(&R), options(&[("integrator", "euler".into())])).unwrap();
+    let q = euler.quaternions().to_vec();
+    let drift = q.chunks(4).map(|c| (c.iter().map(|x| x * x).sum::<f64>().sqrt() - 1.0).abs()).fold(0.0, f64::max);
+    assert!(drift > 1e-4, "Euler drift {drift}");
+}
+
+#[wasm_bindgen_test]
+fn closed_form_values() {
+    // tan(φ(t)/2) = tan(π/6) e^-t on the paper's pair, computed here with plain trigonometry.
+    let phi0 = std::f64::consts::FRAC_PI_3;
+    for t in [0.0, 0.2, 1.8, 7.0] {
+        let phi = 2.0 * ((phi0 / 2.0).tan() * (-t as f64).exp()).atan();
+        let expected: Vec<f64> = (0..4).map(|i| ((phi).sin() * P[i] + (phi0 - phi).sin() * R[i]) / phi0.sin()).collect();
+        let got = api::kli_exact(&quat(&P), &quat(&R), t, None).unwrap().to_vec();
+        assert!(close(&got, &expected, 1e-15), "t = {t}");
+        let s = api::kli_to_slerp_parameter(&quat(&P), &quat(&R), t, None).unwrap();
+        assert!((s - (1.0 - phi / phi0)).abs() < 1e-15);
+        let via_slerp = api::slerp(&quat(&P), &quat(&R), s, None).unwrap().to_vec();
+        assert!(close(&via_slerp, &got, 1e-15));
+    }
+    let t_star = api::kli_reach_time(&quat(&P), &quat(&R), 1e-5, None).unwrap();
+    assert!((t_star - 11.6568).abs() < 5e-5, "T* = {t_star}");
+}
+
+#[wasm_bindgen_test]
+fn slerp_matches_the_textbook_formula() {
+    // sin((1-s)θ)/sin θ · p + sin(sθ)/sin θ · r on a well-separated pair (θ = acos(p·r)).
+    let p = [0.3_f64, -0.1, 0.7, 0.2];
+    let r = [0.5_f64, 0.4, -0.2, 0.6];
+    let norm = |v: [f64; 4]| {
+        let l = v.iter().map(|c| c * c).sum::<f64>().sqrt();
+        v.map(|c| c / l)
+    };
+    let (pu, ru) = (norm(p), norm(r));
+    let theta = pu.iter().zip(&ru).map(|(a, b)| a * b).sum::<f64>().acos();
+    for s in [0.0, 0.125, 0.5, 0.875, 1.0] {
+        let expected: Vec<f64> =
+            (0..4).map(|i| (((1.0 - s) * theta).sin() * pu[i] + (s * theta).sin() * ru[i]) / theta.sin()).collect();
+        let got = api::slerp(&typed(&p), &quat(&r), s, None).unwrap().to_vec();
+        assert!(close(&got, &expected, 1e-12), "s = {s}: {got:?} vs {expected:?}");
+    }
+}
+
+#[wasm_bindgen_test]
+fn hopf_end_points_and_axis_angle() {
+    assert!(close(&api::hopf(&quat(&P)).unwrap().to_vec(), &[-1.0, 0.0, 0.0], 0.0));
+    assert!(close(&api::hopf(&quat(&R)).unwrap().to_vec(), &[0.0, 1.0, 0.0], 0.0));
+    let path = api::kli(&quat(&P), &quat(&R), None).unwrap();
+    let curve = path.hopf_curve().to_vec();
+    assert!(close(&curve[..3], &[-1.0, 0.0, 0.0], 0.0));
+    assert!(close(&curve[curve.len() - 3..], &[0.0, 1.0, 0.0], 2e-5));
+    // p = k: a half turn about z; r: 120° about (1,1,1)/√3.
+    assert!(close(&api::axis_angle(&quat(&P)).unwrap().to_vec(), &[0.0, 0.0, 1.0, std::f64::consts::PI], 0.0));
+    let c = 1.0 / 3.0_f64.sqrt();
+    let expected = [c, c, c, 2.0 * std::f64::consts::PI / 3.0];
+    assert!(close(&api::axis_angle(&quat(&R)).unwrap().to_vec(), &expected, 1e-15));
+    let axis: Vector3Like = Float64Array::from(&[1.0, 1.0, 1.0][..]).unchecked_into();
+    let q = api::from_axis_angle(&axis, 2.0 * std::f64::consts::PI / 3.0).unwrap().to_vec();
+    assert!(close(&q, &R, 1e-15));
+}
+
+#[wasm_bindgen_test]
+fn shortest_path_both_ways() {
+    // p·r = -0.6: the short way goes to -r through angle acos(0.6), the long way to r through
+    // acos(-0.6). T* = ln(tan(φ0/2)/tan(asin(ε/2))) for each, computed here.
+    let p = [1.0, 0.0, 0.0, 0.0];
+    let r = [-0.6, 0.8, 0.0, 0.0];
+    let t_star = |phi0: f64| ((phi0 / 2.0).tan() / (5e-6_f64).asin().tan()).ln();
+    let short = api::kli(&quat(&p), &quat(&r), None).unwrap();
+    assert!(close(&short.target().to_vec(), &[0.6, -0.8, 0.0, 0.0], 1e-15));
+    assert!(short.final_time() >= t_star(0.6_f64.acos()) && short.final_time() < t_star(0.6_f64.acos()) + 0.01);
+    let long = api::kli(&quat(&p), &quat(&r), options(&[("shortestPath", false.into())])).unwrap();
+    assert!(close(&long.target().to_vec(), &r, 1e-15));
+    let t_long = t_star((-0.6_f64).acos());
+    assert!(long.final_time() >= t_long && long.final_time() < t_long + 0.01, "{}", long.final_time());
+    // SLERP half way: the bisector of p and -r, or of p and r.
+    let half = api::slerp(&quat(&p), &quat(&r), 0.5, None).unwrap().to_vec();
+    assert!(close(&half, &[1.6 / 1.6_f64.hypot(0.8), -0.8 / 1.6_f64.hypot(0.8), 0.0, 0.0], 1e-15));
+    let half_long = api::slerp(&quat(&p), &quat(&r), 0.5, options(&[("shortestPath", false.into())])).unwrap().to_vec();
+    assert!(close(&half_long, &[0.4 / 0.4_f64.hypot(0.8), 0.8 / 0.4_f64.hypot(0.8), 0.0, 0.0], 1e-15));
+}
+
+fn expect_error(result: Result<impl Sized, JsError>, starts_with: &str) {
+    match result {
+        Ok(_) => panic!("expected an Error starting with {starts_with:?}"),
+        Err(e) => {
+            let text = message(e);
+            assert!(text.starts_with(starts_with), "{text:?} does not start with {starts_with:?}");
+        }
+    }
+    assert_still_works();
+}
+
+#[wasm_bindgen_test]
+fn bad_quaternions_throw_errors_naming_the_argument() {
+    let p = quat(&P);
+    expect_error(api::kli(&quat(&[1.0, 2.0, 3.0]), &p, None), "p must be an array of 4 numbers");
+    expect_error(api::kli(&p, &typed(&[1.0, 2.0, 3.0, 4.0, 5.0]), None), "r must hold 4 numbers");
+    expect_error(api::kli(&quat(&[1.0, f64::NAN, 0.0, 0.0]), &p, None), "p must be a quaternion of 4 finite numbers");
+    expect_error(api::kli(&p, &quat(&[f64::INFINITY, 0.0, 0.0, 0.0]), None), "r must be a quaternion of 4 finite numbers");
+    expect_error(api::kli(&p, &typed(&[0.0, 0.0, f64::NEG_INFINITY, 0.0]), None), "r must be a quaternion");
+    expect_error(api::kli(&quat(&[0.0; 4]), &p, None), "p must be a quaternion of 4 finite numbers [w, x, y, z], not all zero: it has zero length");
+    let strings: QuaternionLike = JsValue::from("abcd").unchecked_into();
+    expect_error(api::kli(&strings, &p, None), "p must be an array of 4 numbers");
+    let mixed: Array = [JsValue::from("1"), 0.into(), 0.into(), 0.into()].into_iter().collect();
+    expect_error(api::slerp(&p, mixed.unchecked_ref(), 0.5, None), "r must hold 4 numbers [w, x, y, z]: element 0 is \"1\"");
+    let null: QuaternionLike = JsValue::NULL.unchecked_into();
+    expect_error(api::hopf(&null), "q must be an array of 4 numbers");
+    expect_error(api::axis_angle(&quat(&[0.0; 4])), "q must be a quaternion");
+    let axis: Vector3Like = Float64Array::from(&[0.0, 0.0, 0.0][..]).unchecked_into();
+    expect_error(api::from_axis_angle(&axis, 1.0), "axis must be 3 finite numbers");
+    let axis: Vector3Like = Float64Array::from(&[1.0, 0.0, 0.0][..]).unchecked_into();
+    expect_error(api::from_axis_angle(&axis, f64::NAN), "angle must be a finite number");
+}
+
+#[wasm_bindgen_test]
+fn bad_options_throw_errors_naming_the_option() {
+    let (p, r) = (quat(&P), quat(&R));
+    for name in ["tolerance", "step", "maxTime"] {
+        for bad in [0.0, -1.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            expect_error(api::kli(&p, &r, options(&[(name, bad.into())])), &format!("{name} must be a finite number > 0"));
+        }
+        expect_error(api::kli(&p, &r, options(&[(name, "1e-5".into())])), &format!("{name} must be a number (got \"1e-5\""));
+    }
+    expect_error(api::kli(&p, &r, options(&[("integrator", "rk5".into())])), "integrator must be \"rk4\", \"euler\" or \"geodesic\" (got \"rk5\")");
+    expect_error(api::kli(&p, &r, options(&[("integrator", 4.into())])), "integrator must be");
+    expect_error(api::kli(&p, &r, options(&[("shortestPath", "yes".into())])), "shortestPath must be true or false");
+    expect_error(api::kli(&p, &r, options(&[("tolerence", 1e-3.into())])), "options has an unknown key \"tolerence\"");
+    let number: KliOptionsObject = JsValue::from(5).unchecked_into();
+    expect_error(api::kli(&p, &r, Some(number)), "options must be an object");
+}
+
+#[wasm_bindgen_test]
+fn bad_times_and_impossible_requests_throw() {
+    let (p, r) = (quat(&P), quat(&R));
+    for t in [-1.0, -1e-300, f64::NAN, f64::INFINITY] {
+        expect_error(api::kli_exact(&p, &r, t, None), "t must be a finite number ≥ 0");
+        expect_error(api::kli_to_slerp_parameter(&p, &r, t, None), "t must be a finite number ≥ 0");
+        let path = api::kli(&p, &r, None).unwrap();
+        expect_error(path.at(t), "t must be a finite number ≥ 0");
+    }
+    expect_error(api::kli_reach_time(&p, &r, 0.0, None), "tolerance must be a finite number > 0");
+    expect_error(api::slerp(&p, &r, f64::NAN, None), "s must be a finite number");
+    // ε below what f64 resolves: reported, not looped forever.
+    expect_error(api::kli(&p, &r, options(&[("tolerance", 1e-20.into())])), "tolerance 1e-20 not reached within maxTime 100");
+    expect_error(api::kli(&p, &r, options(&[("maxTime", 5.into())])), "tolerance 1e-5 not reached within maxTime 5");
+    expect_error(api::kli(&p, &r, options(&[("step", 1e-7.into())])), "step is too small for maxTime");
+    // p = -r the long way round: an equilibrium.
+    let minus_p = quat(&[0.0, 0.0, 0.0, -3.0]);
+    let long = || options(&[("shortestPath", false.into())]);
+    expect_error(api::kli(&p, &minus_p, long()), "p and r are antipodal");
+    expect_error(api::kli_exact(&p, &minus_p, 1.0, long()), "p and r are antipodal");
+    expect_error(api::slerp(&p, &minus_p, 0.5, long()), "p and r are antipodal");
+    // The short way, -r is p itself: nothing to do.
+    let path = api::kli(&p, &minus_p, None).unwrap();
+    assert_eq!((path.steps(), path.final_time()), (0, 0.0));
+}
