@@ -14,6 +14,10 @@ use crate::integrator::Integrator;
 /// The most samples a path may hold (40 MB of times and quaternions).
 pub const MAX_SAMPLES: usize = 1_000_000;
 
+/// `||q| - 1|` past which a step in R⁴ is taken to have left S³. Euler on the paper's example
+/// drifts by 1e-3, far inside this.
+pub const LEFT_SPHERE: f64 = 0.25;
+
 /// The knobs of Algorithm 1. `Default` gives the paper's `ε = 1e-5`, `δ = 0.01`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct KliOptions {
@@ -78,9 +82,22 @@ pub fn kli(p: DQuat, r: DQuat, options: &KliOptions) -> Result<KliPath, KliError
             return Ok(KliPath { times, quaternions, arc, options: *options });
         }
         closest = closest.min(distance);
-        q = integrator.step(q, target, step);
+        let next = integrator.step(q, target, step);
+        if !((next.length() - 1.0).abs() < LEFT_SPHERE) {
+            let time = (n + 1) as f64 * step;
+            return Err(KliError::LeftSphere { integrator: integrator.name(), time, norm: next.length() });
+        }
+        if next == q {
+            // Stuck: at the antipode (a numerical equilibrium), or at the target closer than
+            // f64 resolves, where looping on to max_time would change nothing.
+            if distance > 1.0 {
+                return Err(KliError::Stalled { time: n as f64 * step, distance });
+            }
+            break;
+        }
+        q = next;
     }
-    if steps_allowed > last as f64 {
+    if quaternions.len() == last + 1 && steps_allowed > last as f64 {
         Err(KliError::TooManySteps { steps: steps_allowed, limit: MAX_SAMPLES - 1 })
     } else {
         Err(KliError::NotReached {
@@ -187,6 +204,17 @@ mod tests {
         let options = KliOptions { step: 1e-6, ..Default::default() };
         let err = kli(p, r, &options).unwrap_err().to_string();
         assert!(err.starts_with("step is too small"), "{err}");
+    }
+
+    #[test]
+    fn numerical_equilibrium_is_reported() {
+        // 2e-15 from -p: exact arithmetic would leave after ~45 time units, but δ q' ≈ 2e-17
+        // is below the resolution of q's components.
+        let p = from_wxyz([0.5; 4]);
+        let r = -p + from_wxyz([0.5, -0.5, 0.5, -0.5]) * 2e-15;
+        let options = KliOptions { shortest_path: false, ..Default::default() };
+        let err = kli(p, r, &options).unwrap_err().to_string();
+        assert!(err.starts_with("p is so close to -r that a step does not move q"), "{err}");
     }
 
     #[test]

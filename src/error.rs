@@ -16,6 +16,12 @@ pub enum KliError {
     Antipodal,
     /// Algorithm 1 did not meet the tolerance by `max_time`.
     NotReached { tolerance: f64, max_time: f64, closest: f64, predicted: f64 },
+    /// A step left `q` unchanged short of the tolerance: `p` so close to `-r` (taken the long way)
+    /// that `δ q'` is below the resolution of f64, a numerical equilibrium.
+    Stalled { time: f64, distance: f64 },
+    /// An integrator that works in R⁴ let `|q|` run away from 1. Near `-r` the sphere repels
+    /// off-sphere errors (`d|q|²/dt = 2 (q·r)(1 - |q|²)`), so rounding grows like `e^(2t)`.
+    LeftSphere { integrator: &'static str, time: f64, norm: f64 },
     /// `max_time / step` asks for more samples than a path may hold.
     TooManySteps { steps: f64, limit: usize },
 }
@@ -41,6 +47,18 @@ impl fmt::Display for KliError {
                 f,
                 "tolerance {tolerance:e} not reached within maxTime {max_time} (closest distance \
                  {closest:e}; the closed form predicts T* = {predicted}): raise maxTime or the tolerance"
+            ),
+            KliError::Stalled { time, distance } => write!(
+                f,
+                "p is so close to -r that a step does not move q (stuck at distance {distance} from \
+                 the target at t = {time}): with shortestPath false the flow starts at a numerical \
+                 equilibrium; use shortestPath: true or a larger step"
+            ),
+            KliError::LeftSphere { integrator, time, norm } => write!(
+                f,
+                "integrator {integrator} left the sphere S³ (|q| = {norm} at t = {time}): near -r the \
+                 sphere repels the rounding errors of a step taken in R⁴; use integrator \"geodesic\", \
+                 which stays on S³, or shortestPath: true"
             ),
             KliError::TooManySteps { steps, limit } => write!(
                 f,

@@ -71,7 +71,7 @@ fn along_great_circle(q: DQuat, increment: DQuat) -> DQuat {
 
 impl fmt::Display for Integrator {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
+        f.pad(self.name())
     }
 }
 

@@ -1,0 +1,125 @@
+// The built package (pkg/) as its users get it: packed with `npm pack`, installed into an empty
+// project, imported by name in Node with initSync, bundled with esbuild, and type-checked with tsc.
+import { test, before } from "node:test";
+import assert from "node:assert/strict";
+import { execFileSync } from "node:child_process";
+import { mkdtempSync, writeFileSync, readFileSync, readdirSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
+
+const root = new URL("../../", import.meta.url).pathname;
+const bin = (name) => join(root, "node_modules/.bin", name);
+let project;
+
+// `node file` prints one JSON line; returns it parsed.
+const run = (file) => JSON.parse(execFileSync("node", [file], { cwd: project, encoding: "utf8" }));
+
+before(() => {
+  project = mkdtempSync(join(tmpdir(), "kli-package-"));
+  const tarball = execFileSync("npm", ["pack", "--silent", "--pack-destination", project], {
+    cwd: join(root, "pkg"),
+    encoding: "utf8",
+  }).trim().split("\n").pop();
+  writeFileSync(join(project, "package.json"), JSON.stringify({ name: "consumer", private: true, type: "module" }));
+  execFileSync("npm", ["install", "--no-audit", "--no-fund", "--offline", join(project, tarball)], { cwd: project, stdio: "ignore" });
+});
+
+test("the tarball holds every file the package needs, and only those", () => {
+  const installed = readdirSync(join(project, "node_modules/kli")).sort();
+  assert.deepEqual(installed, ["README.md", "kli.d.ts", "kli.js", "kli_bg.wasm", "kli_bg.wasm.d.ts", "package.json"]);
+  const manifest = JSON.parse(readFileSync(join(project, "node_modules/kli/package.json"), "utf8"));
+  const cargo = readFileSync(join(root, "Cargo.toml"), "utf8");
+  assert.equal(manifest.version, cargo.match(/^version = "(.*)"/m)[1]);
+  assert.equal(manifest.type, "module");
+  assert.equal(manifest.types, "kli.d.ts");
+  assert.equal(manifest.sideEffects, false);
+});
+
+test("imports by name in Node with initSync and gives T = 11.66", () => {
+  writeFileSync(join(project, "node.mjs"), `
+    import { readFileSync } from "node:fs";
+    import { initSync, kli, kliReachTime } from "kli";
+    initSync({ module: readFileSync(new URL(import.meta.resolve("kli/kli_bg.wasm"))) });
+    const path = kli([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]);
+    console.log(JSON.stringify({ T: path.finalTime, steps: path.steps, star: kliReachTime([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5], 1e-5) }));
+  `);
+  const { T, steps, star } = run("node.mjs");
+  assert.ok(Math.abs(T - 11.66) < 1e-9, `T = ${T}`);
+  assert.equal(steps, 1166);
+  assert.ok(Math.abs(star - 11.6568) < 5e-5, `T* = ${star}`);
+});
+
+test("errors thrown through the generated glue are Errors, and the module keeps working", () => {
+  writeFileSync(join(project, "errors.mjs"), `
+    import { readFileSync } from "node:fs";
+    import { initSync, kli, kliExact, slerp } from "kli";
+    initSync({ module: readFileSync(new URL(import.meta.resolve("kli/kli_bg.wasm"))) });
+    const p = [0, 0, 0, 1], r = [0.5, 0.5, 0.5, 0.5];
+    const attempts = [
+      () => kli(p, [0, 0, 0, 0]),
+      () => kli(p, r, { tolerance: -1 }),
+      () => kli(p, r, { integrator: "rk5" }),
+      () => kliExact(p, r, -1),
+      () => slerp(p, [0, 0, 0, -1], 0.5, { shortestPath: false }),
+      () => kli("abcd", r),
+      () => kli(p, r, { step: undefined, tolerence: 1 }),
+    ];
+    const messages = attempts.map((attempt) => {
+      try { attempt(); return "no error"; } catch (e) { return (e instanceof Error ? "" : "not an Error: ") + e.message; }
+    });
+    console.log(JSON.stringify({ messages, T: kli(p, r, undefined).finalTime, T2: kli(p, r, null).finalTime }));
+  `);
+  const { messages, T, T2 } = run("errors.mjs");
+  const starts = ["r must be a quaternion", "tolerance must be a finite number > 0 (got -1)", "integrator must be",
+    "t must be a finite number ≥ 0 (got -1)", "p and r are antipodal", "p must be an array of 4 numbers",
+    'options has an unknown key "tolerence"'];
+  messages.forEach((message, i) => assert.ok(message.startsWith(starts[i]), `${message} !~ ${starts[i]}`));
+  assert.equal(T, 11.66);
+  assert.equal(T2, 11.66);
+});
+
+test("bundles with esbuild and runs", () => {
+  writeFileSync(join(project, "entry.mjs"), `
+    import init, { initSync, kli } from "kli";
+    import { readFileSync } from "node:fs";
+    initSync({ module: readFileSync(process.argv[2]) });
+    console.log(JSON.stringify({ T: kli([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]).finalTime, init: typeof init }));
+  `);
+  execFileSync(bin("esbuild"), ["entry.mjs", "--bundle", "--format=esm", "--platform=node", "--outfile=bundle.mjs"], { cwd: project, stdio: "pipe" });
+  const out = JSON.parse(execFileSync("node", ["bundle.mjs", join(project, "node_modules/kli/kli_bg.wasm")], { cwd: project, encoding: "utf8" }));
+  assert.deepEqual(out, { T: 11.66, init: "function" });
+});
+
+test("the TypeScript types are precise: right use compiles, wrong use does not", () => {
+  writeFileSync(join(project, "use.ts"), `
+    import { kli, slerp, hopf, axisAngle, type KliOptions, type KliPath, type Integrator } from "kli";
+    const options: KliOptions = { tolerance: 1e-5, step: 0.01, maxTime: 100, integrator: "geodesic", shortestPath: true };
+    const path: KliPath = kli([0, 0, 0, 1], new Float64Array([0.5, 0.5, 0.5, 0.5]), options);
+    const T: number = path.finalTime;
+    const q: Float64Array = path.at(T);
+    const which: Integrator = path.integrator;
+    const s: Float64Array = slerp([1, 0, 0, 0], [0, 1, 0, 0], 0.5);
+    const h: Float64Array = hopf(q);
+    const a: Float64Array = axisAngle(s);
+    // @ts-expect-error: not an integrator
+    kli([0, 0, 0, 1], [1, 0, 0, 0], { integrator: "rk5" });
+    // @ts-expect-error: tolerance is a number
+    kli([0, 0, 0, 1], [1, 0, 0, 0], { tolerance: "small" });
+    // @ts-expect-error: unknown option
+    kli([0, 0, 0, 1], [1, 0, 0, 0], { tolerence: 1e-3 });
+    // @ts-expect-error: a quaternion is numbers
+    kli("abcd", [1, 0, 0, 0]);
+    // @ts-expect-error: finalTime is read-only
+    path.finalTime = 3;
+    export { T, q, which, h, a };
+  `);
+  writeFileSync(join(project, "tsconfig.json"), JSON.stringify({
+    compilerOptions: { strict: true, noEmit: true, module: "nodenext", moduleResolution: "nodenext", target: "es2022", lib: ["esnext", "dom"], skipLibCheck: false },
+    files: ["use.ts"],
+  }));
+  try {
+    execFileSync(bin("tsc"), ["-p", "tsconfig.json"], { cwd: project, encoding: "utf8" });
+  } catch (e) {
+    assert.fail(`tsc: ${e.stdout}${e.stderr}`);
+  }
+});
