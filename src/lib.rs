@@ -42,6 +42,7 @@ pub mod integrator;
 pub mod algorithm;
 pub mod model;
 pub mod quaternion;
+pub mod render;
 pub mod slerp;
 
 #[cfg(target_arch = "wasm32")]

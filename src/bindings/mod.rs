@@ -10,6 +10,9 @@ use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
 use crate::quaternion::{from_wxyz, to_wxyz};
+
+mod demo;
+pub use demo::Demo;
 use crate::{Integrator, KliError, KliOptions};
 
 #[wasm_bindgen(typescript_custom_section)]

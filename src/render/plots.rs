@@ -1,0 +1,155 @@
+//! The plots beside the views: the distance `||target - q(t)||` on a log scale with the tolerance,
+//! `T` and `T*`; the time warp `s(t)` against SLERP's `t / T`; the drift of `|q|` from 1.
+
+use super::pen::{GRID, INK, KLI, MUTED, Pen, SLERP};
+use super::scene::Scene;
+
+/// A plot frame: data ranges mapped onto a rectangle of the canvas.
+struct Panel {
+    left: f64,
+    top: f64,
+    width: f64,
+    height: f64,
+    x_max: f64,
+    y_min: f64,
+    y_max: f64,
+}
+
+impl Panel {
+    fn at(&self, x: f64, y: f64) -> (f64, f64) {
+        let fx = if self.x_max > 0.0 { x / self.x_max } else { 0.0 };
+        let fy = (y.clamp(self.y_min, self.y_max) - self.y_min) / (self.y_max - self.y_min);
+        (self.left + fx * self.width, self.top + (1.0 - fy) * self.height)
+    }
+
+    fn frame(&self, pen: &Pen, title: &str, y_ticks: &[(f64, String)]) {
+        pen.text(title, (self.left, self.top - 14.0), INK, 12.5, "left");
+        for (y, label) in y_ticks {
+            let (_, py) = self.at(0.0, *y);
+            pen.line((self.left, py), (self.left + self.width, py), GRID, 1.0, &[]);
+            pen.text(label, (self.left - 5.0, py), MUTED, 10.5, "right");
+        }
+        let step = nice_step(self.x_max);
+        let mut x = 0.0;
+        while x <= self.x_max * (1.0 + 1e-9) && step > 0.0 {
+            let (px, py) = self.at(x, self.y_min);
+            pen.line((px, py), (px, py + 4.0), MUTED, 1.0, &[]);
+            pen.text(&trim(x), (px, py + 12.0), MUTED, 10.5, "center");
+            x += step;
+        }
+        pen.line((self.left, self.top + self.height), (self.left + self.width, self.top + self.height), MUTED, 1.0, &[]);
+        pen.line((self.left, self.top), (self.left, self.top + self.height), MUTED, 1.0, &[]);
+        pen.text("t", (self.left + self.width + 8.0, self.top + self.height), MUTED, 11.0, "center");
+    }
+
+    fn series(&self, pen: &Pen, xs: &[f64], ys: impl Iterator<Item = f64>, color: &str, width: f64, dash: &[f64]) {
+        let points: Vec<(f64, f64)> = xs.iter().zip(ys).map(|(&x, y)| self.at(x, y)).collect();
+        pen.polyline(&points, color, width, dash);
+    }
+
+    fn now(&self, pen: &Pen, t: f64) {
+        let (x, _) = self.at(t.min(self.x_max), 0.0);
+        pen.line((x, self.top), (x, self.top + self.height), INK, 1.0, &[2.0, 3.0]);
+    }
+}
+
+/// A tick spacing of 1, 2 or 5 × 10^k giving about five ticks over `[0, span]`.
+fn nice_step(span: f64) -> f64 {
+    if !(span > 0.0) || !span.is_finite() {
+        return 0.0;
+    }
+    let raw = span / 5.0;
+    let magnitude = 10f64.powf(raw.log10().floor());
+    [1.0, 2.0, 5.0, 10.0].iter().map(|m| m * magnitude).find(|&s| s >= raw).unwrap_or(raw)
+}
+
+fn trim(x: f64) -> String {
+    let text = format!("{x:.2}");
+    text.trim_end_matches('0').trim_end_matches('.').to_string()
+}
+
+fn decades(low: i32, high: i32, every: i32) -> Vec<(f64, String)> {
+    (low..=high).filter(|e| (e - low) % every == 0).map(|e| (e as f64, format!("1e{e}"))).collect()
+}
+
+fn log10_floor(values: &[f64], floor: f64) -> impl Iterator<Item = f64> + '_ {
+    values.iter().map(move |&v| if v > 0.0 { v.log10().max(floor) } else { floor })
+}
+
+/// The plotting rectangle `(left, top, width, height)` of plot `index` (0 distance, 1 time warp,
+/// 2 drift) in a canvas of `(width, height)`: side by side when wide, stacked when narrow.
+pub fn plot_area(index: usize, width: f64, height: f64) -> (f64, f64, f64, f64) {
+    let wide = width >= 2.0 * height;
+    let (cell_w, cell_h) = if wide { (width / 3.0, height) } else { (width, height / 3.0) };
+    let (col, row) = if wide { (index as f64, 0.0) } else { (0.0, index as f64) };
+    (col * cell_w + 46.0, row * cell_h + 30.0, (cell_w - 70.0).max(10.0), (cell_h - 58.0).max(10.0))
+}
+
+/// The time axis of every plot ends a little past both `T` and `T*`.
+pub fn time_axis_end(scene: &Scene) -> f64 {
+    scene.final_time().max(scene.predicted_time()).max(1e-9) * 1.04
+}
+
+/// Draws the three plots into `(width, height)`.
+pub fn draw_plots(pen: &Pen, width: f64, height: f64, scene: &Scene, t: f64) {
+    let cell = |i: usize, x_max: f64, y_min: f64, y_max: f64| {
+        let (left, top, width, height) = plot_area(i, width, height);
+        Panel { left, top, width, height, x_max, y_min, y_max }
+    };
+    let times = scene.path().times();
+    let final_time = scene.final_time();
+    let x_max = time_axis_end(scene);
+    let tolerance = scene.path().options().tolerance;
+
+    // 1. Distance to the target, log scale.
+    let smallest = scene.distances().iter().copied().filter(|&d| d > 0.0).fold(tolerance, f64::min);
+    let low = (smallest.log10().floor() as i32 - 1).max(-17);
+    let panel = cell(0, x_max, low as f64, 0.5);
+    let every = ((1 - low) / 6).max(1);
+    panel.frame(pen, "distance ||r − q(t)|| (log)", &decades(low, 0, every));
+    panel.series(pen, times, log10_floor(scene.distances(), low as f64), KLI, 2.0, &[]);
+    let (x0, ty) = panel.at(0.0, tolerance.log10());
+    pen.line((x0, ty), (panel.left + panel.width, ty), MUTED, 1.0, &[4.0, 3.0]);
+    pen.text(&format!("ε = {tolerance:e}"), (panel.left + panel.width, ty - 8.0), MUTED, 10.5, "right");
+    let (tx, _) = panel.at(final_time, 0.0);
+    pen.line((tx, panel.top), (tx, panel.top + panel.height), KLI, 1.0, &[]);
+    let (sx, _) = panel.at(scene.predicted_time(), 0.0);
+    pen.line((sx, panel.top), (sx, panel.top + panel.height), INK, 1.0, &[3.0, 3.0]);
+    pen.text(&format!("T = {final_time:.2}  T* = {:.4}", scene.predicted_time()), (panel.left + panel.width, panel.top + 8.0), INK, 10.5, "right");
+    panel.now(pen, t);
+
+    // 2. The time warp s(t) of KLI against SLERP's linear clock.
+    let panel = cell(1, x_max, 0.0, 1.0);
+    let ticks: Vec<(f64, String)> = [0.0, 0.25, 0.5, 0.75, 1.0].iter().map(|&y| (y, trim(y))).collect();
+    panel.frame(pen, "SLERP parameter s(t)", &ticks);
+    panel.series(pen, times, times.iter().map(|&x| if final_time > 0.0 { x / final_time } else { 1.0 }), SLERP, 1.5, &[5.0, 4.0]);
+    panel.series(pen, times, scene.warp().iter().copied(), KLI, 2.0, &[]);
+    pen.text("KLI", panel.at(x_max * 0.08, 0.93), KLI, 11.0, "left");
+    pen.text("SLERP, s = t/T", panel.at(x_max * 0.55, 0.3), SLERP, 11.0, "left");
+    panel.now(pen, t);
+
+    // 3. Drift of |q| from 1 for the chosen integrator.
+    let largest = scene.norm_drift().iter().copied().fold(0.0_f64, f64::max);
+    let high = if largest > 0.0 { (largest.log10().ceil() as i32).clamp(-15, 0) } else { -15 };
+    let panel = cell(2, x_max, -17.0, high as f64);
+    let integrator = scene.path().options().integrator;
+    panel.frame(pen, &format!("| |q| − 1 |, {integrator} (log)"), &decades(-17, high, ((high + 17) / 5).max(1)));
+    panel.series(pen, times, log10_floor(scene.norm_drift(), -17.0), KLI, 2.0, &[]);
+    pen.text(&format!("max {largest:.1e}"), (panel.left + panel.width, panel.top + 8.0), INK, 10.5, "right");
+    panel.now(pen, t);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn nice_steps() {
+        assert_eq!(nice_step(11.66), 5.0);
+        assert_eq!(nice_step(1.0), 0.2);
+        assert_eq!(nice_step(40.0), 10.0);
+        assert_eq!(nice_step(0.0), 0.0);
+        assert_eq!(trim(2.5), "2.5");
+        assert_eq!(trim(10.0), "10");
+    }
+}

@@ -1,0 +1,24 @@
+// Offline support: every file the page needs is cached when first fetched; the network is tried
+// first so a rebuilt page is never stale, and the cache answers when the server is gone.
+const CACHE = "kli-demo-v1";
+const FILES = ["./", "index.html", "style.css", "main.js", "state.js", "pkg/kli.js", "pkg/kli_bg.wasm"];
+
+self.addEventListener("install", (event) => {
+  event.waitUntil(caches.open(CACHE).then((cache) => cache.addAll(FILES)).then(() => self.skipWaiting()));
+});
+
+self.addEventListener("activate", (event) => event.waitUntil(self.clients.claim()));
+
+self.addEventListener("fetch", (event) => {
+  const url = new URL(event.request.url);
+  if (event.request.method !== "GET" || url.origin !== self.location.origin) return;
+  event.respondWith(
+    fetch(event.request)
+      .then((response) => {
+        const copy = response.clone();
+        caches.open(CACHE).then((cache) => cache.put(event.request, copy));
+        return response;
+      })
+      .catch(() => caches.match(event.request, { ignoreSearch: true })),
+  );
+});
