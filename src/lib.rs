@@ -29,10 +29,11 @@
 //! Modules, one concept each: [`model`] (the vector field), [`integrator`] (RK4, Euler, geodesic),
 //! [`algorithm`] (Algorithm 1), [`great_arc`] (the circle from `p` to the target),
 //! [`closed_form`] (the exact solution), [`slerp`](mod@slerp), [`hopf`](mod@hopf),
-//! [`axis_angle`](mod@axis_angle) (polar form), and on wasm32 the
+//! [`axis_angle`](mod@axis_angle) (polar form), [`batch`] (many pairs at once), and on wasm32 the
 //! JavaScript boundary `bindings` and the canvas `render`er.
 
 pub mod axis_angle;
+pub mod batch;
 
 pub mod closed_form;
 pub mod error;

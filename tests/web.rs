@@ -258,3 +258,118 @@ fn bad_times_and_impossible_requests_throw() {
     let path = api::kli(&p, &minus_p, None).unwrap();
     assert_eq!((path.steps(), path.final_time()), (0, 0.0));
 }
+
+// ---- Batch API -------------------------------------------------------------------------------
+
+fn f64s(values: &[f64]) -> JsValue {
+    Float64Array::from(values).into()
+}
+
+/// n pairs (more than one 4096-pair chunk) including near-identical and near-antipodal ones.
+fn batch_pairs(n: usize) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+    let mut seed = 0x9E37_79B9_7F4A_7C15_u64;
+    let mut uniform = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed as f64 / u64::MAX as f64) * 2.0 - 1.0
+    };
+    let (mut starts, mut ends, mut params) = (Vec::new(), Vec::new(), Vec::new());
+    for i in 0..n {
+        let p: Vec<f64> = (0..4).map(|_| uniform()).collect();
+        let r: Vec<f64> = match i % 3 {
+            0 => (0..4).map(|_| uniform()).collect(),
+            1 => p.iter().enumerate().map(|(k, c)| c + if k == 1 { 1e-12 } else { 0.0 }).collect(),
+            _ => p.iter().enumerate().map(|(k, c)| -c + if k == 2 { 1e-12 } else { 0.0 }).collect(),
+        };
+        starts.extend(p);
+        ends.extend(r);
+        params.push(uniform().abs() * 3.0);
+    }
+    (starts, ends, params)
+}
+
+#[wasm_bindgen_test]
+fn batches_agree_with_the_single_calls() {
+    let n = 5000;
+    let (starts, ends, params) = batch_pairs(n);
+    let (starts_js, ends_js, params_js) = (f64s(&starts), f64s(&ends), f64s(&params));
+    for name in ["slerp", "kliExact"] {
+        let out = f64s(&vec![0.0; 4 * n]);
+        let returned = if name == "slerp" {
+            api::slerp_batch(&starts_js, &ends_js, &params_js, &out, None)
+        } else {
+            api::kli_exact_batch(&starts_js, &ends_js, &params_js, &out, None)
+        }
+        .unwrap();
+        assert!(JsValue::from(returned.clone()) == out, "{name} returns out itself");
+        let got = returned.to_vec();
+        for i in (0..n).step_by(7) {
+            let (p, r) = (quat(&starts[4 * i..4 * i + 4]), quat(&ends[4 * i..4 * i + 4]));
+            let single = if name == "slerp" { api::slerp(&p, &r, params[i], None) } else { api::kli_exact(&p, &r, params[i], None) };
+            assert!(close(&got[4 * i..4 * i + 4], &single.unwrap().to_vec(), 1e-12), "{name} pair {i}");
+        }
+    }
+}
+
+#[wasm_bindgen_test]
+fn kli_exact_batch_matches_the_plain_formula_to_1e_12() {
+    // The plain formulas of MATH.md with inverse trigonometry, on pairs with p·r ≥ 0 well apart
+    // from ±r (where acos itself is accurate): q = [sin φ p + sin(φ0 − φ) r] / sin φ0.
+    let p = [0.3_f64, -0.1, 0.7, 0.2];
+    let r = [0.5_f64, 0.4, 0.2, 0.6];
+    let unit = |v: [f64; 4]| v.map(|c| c / v.iter().map(|x| x * x).sum::<f64>().sqrt());
+    let (pu, ru) = (unit(p), unit(r));
+    let phi0 = pu.iter().zip(&ru).map(|(a, b)| a * b).sum::<f64>().acos();
+    let times: Vec<f64> = (0..200).map(|k| k as f64 * 0.05).collect();
+    let n = times.len();
+    let out = api::kli_exact_batch(&f64s(&p.repeat(n)), &f64s(&r.repeat(n)), &f64s(&times), &f64s(&vec![0.0; 4 * n]), None).unwrap().to_vec();
+    let sampled = api::kli_sample(&quat(&p), &quat(&r), &f64s(&times), None).unwrap();
+    for (k, &t) in times.iter().enumerate() {
+        let phi = 2.0 * ((phi0 / 2.0).tan() * (-t).exp()).atan();
+        let expected: Vec<f64> = (0..4).map(|c| (phi.sin() * pu[c] + (phi0 - phi).sin() * ru[c]) / phi0.sin()).collect();
+        assert!(close(&out[4 * k..4 * k + 4], &expected, 1e-12), "kliExactBatch t = {t}");
+        assert!(close(&sampled[4 * k..4 * k + 4], &expected, 1e-12), "kliSample t = {t}");
+    }
+}
+
+#[wasm_bindgen_test]
+fn kli_sample_near_plus_and_minus_r() {
+    // Near ±r the batch path agrees with the single closed-form call to 1e-12.
+    for r in [[1.0, 1e-12, 0.0, 0.0], [-1.0, 0.0, 1e-12, 0.0]] {
+        let p = [1.0, 0.0, 0.0, 0.0];
+        for shortest in [true, false] {
+            let o = || options(&[("shortestPath", shortest.into())]);
+            let times: Vec<f64> = (0..300).map(|k| k as f64 * 0.1).collect();
+            let sampled = api::kli_sample(&quat(&p), &quat(&r), &f64s(&times), o()).unwrap();
+            for (k, &t) in times.iter().enumerate() {
+                let single = api::kli_exact(&quat(&p), &quat(&r), t, o()).unwrap().to_vec();
+                assert!(close(&sampled[4 * k..4 * k + 4], &single, 1e-12), "r = {r:?} shortest {shortest} t = {t}");
+            }
+        }
+    }
+}
+
+#[wasm_bindgen_test]
+fn batch_errors_name_the_argument_and_element() {
+    let n = 5000;
+    let (mut starts, ends, mut params) = batch_pairs(n);
+    let out = || f64s(&vec![0.0; 4 * n]);
+    let kli_batch = |s: &[f64], p: &[f64], o: JsValue| api::kli_exact_batch(&f64s(s), &f64s(&ends), &f64s(p), &o, None);
+    expect_error(kli_batch(&starts, &params[..10], out()), "starts must hold 4 numbers per t value: 40 for 10 values (got 20000)");
+    expect_error(kli_batch(&starts, &params, f64s(&[0.0; 8])), "out must hold 4 numbers per t value");
+    let plain: Array = [1.0, 0.0, 0.0, 0.0].iter().map(|&v| JsValue::from(v)).collect();
+    expect_error(api::slerp_batch(&plain, &f64s(&ends), &f64s(&params), &out(), None), "starts must be a Float64Array (got an array of length 4)");
+    params[4321] = -1.0;
+    expect_error(kli_batch(&starts, &params, out()), "t[4321] must be a finite number ≥ 0 (got -1)");
+    params[4321] = 1.0;
+    starts[4 * 4500 + 2] = f64::NAN;
+    expect_error(kli_batch(&starts, &params, out()), "starts[4500] must be a quaternion of 4 finite numbers");
+    expect_error(api::slerp_batch(&f64s(&[1.0, 0.0, 0.0, 0.0]), &f64s(&[-1.0, 0.0, 0.0, 0.0]), &f64s(&[0.5]), &f64s(&[0.0; 4]), options(&[("shortestPath", false.into())])), "starts[0] and ends[0] are antipodal");
+    expect_error(api::kli_sample(&quat(&P), &quat(&R), &f64s(&[0.0, f64::NAN]), None), "times[1] must be a finite number ≥ 0");
+    let text: JsValue = "0,1,2".into();
+    expect_error(api::kli_sample(&quat(&P), &quat(&R), &text, None), "times must be a Float64Array or an array of numbers");
+    // nlerp, the baseline, is unit and between the ends.
+    let half = api::nlerp_batch(&f64s(&[1.0, 0.0, 0.0, 0.0]), &f64s(&[0.0, 1.0, 0.0, 0.0]), &f64s(&[0.5]), &f64s(&[0.0; 4])).unwrap().to_vec();
+    assert!(close(&half, &[0.5_f64.sqrt(), 0.5_f64.sqrt(), 0.0, 0.0], 1e-15));
+}
