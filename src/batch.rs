@@ -1,7 +1,21 @@
 //! Many interpolations in one call, for animation and data: flat `f64` slices of scalar-first
-//! quaternions (`4·n` numbers) and `n` parameters. The per-pair work (normalising, the arc) is
-//! done once per pair, and the per-sample work of the closed form needs no inverse trigonometry:
-//! with `u = tan(φ/2) = u0·e^(-t)`, `sin φ = 2u/(1+u²)` and `cos φ = (1-u²)/(1+u²)`.
+//! quaternions (`4·n` numbers) and `n` parameters.
+//!
+//! The batch kernels work in the half-angle frame of a pair: with unit `p` and target `t`,
+//! `d = p - t` and `s = p + t` are orthogonal, `|d| = 2 sin(φ0/2)`, `|s| = 2 cos(φ0/2)`, and the
+//! point at angle `φ` from the target is `cos(φ - φ0/2) s/|s| + sin(φ - φ0/2) d/|d|`. Both
+//! differences are exact for nearly equal or opposite ends, which keeps the kernels accurate near
+//! `p ≈ t`. For KLI, with `u0 = |d|/|s| = tan(φ0/2)`, `E = e^(-t)` and `u = u0 E = tan(φ/2)`:
+//!
+//! ```text
+//! q(t) = [(1 - u² + 2 u0 u) s + (2E - 1 + u²) d] / (2 (1 + u²))
+//! ```
+//!
+//! one `exp`, one square root and three divisions a pair, no trigonometry. For SLERP,
+//! with `ψ0 = φ0/2`: `q(σ) = cos((1-2σ) ψ0) s/|s| + sin((1-2σ) ψ0) d/|d|`.
+//!
+//! Only when the target is nearly `-p` (the long way round) does the frame lose orthogonality
+//! (`s·d = |p|² - |t|²` is rounding, `|s|` is tiny); those pairs take [`GreatArc`]'s careful path.
 
 use glam::DQuat;
 
@@ -21,7 +35,14 @@ fn read_unit(values: &[f64], i: usize, first: usize, name: &str) -> Result<DQuat
     if (1e-290..1e290).contains(&length_squared) {
         return Ok(q * (1.0 / length_squared.sqrt()));
     }
-    unit("q", q).map_err(|e| e.renamed(format!("{name}[{}]", first + i)))
+    read_unit_slowly(q, first + i, name)
+}
+
+/// Extreme magnitudes and invalid input: the rare path, kept out of the loop.
+#[cold]
+#[inline(never)]
+fn read_unit_slowly(q: DQuat, index: usize, name: &str) -> Result<DQuat, KliError> {
+    unit("q", q).map_err(|e| e.renamed(format!("{name}[{index}]")))
 }
 
 #[inline]
@@ -88,10 +109,28 @@ pub fn run_batch(kind: BatchKind, starts: &[f64], ends: &[f64], parameters: &[f6
             return Err(KliError::InvalidNumber { name: format!("{}[{}]", kind.parameter_name(), first + i), value: x, requirement });
         }
         let q = match kind {
-            BatchKind::Slerp => slerp::point_at(&arc(starts, ends, i, first, shortest_path)?, x),
-            BatchKind::KliExact => {
-                let arc = arc(starts, ends, i, first, shortest_path)?;
-                point_from_half_angle_tan(&arc, arc.half_angle_tan() * (-x).exp())
+            BatchKind::Slerp | BatchKind::KliExact => {
+                let p = read_unit(starts, i, first, "starts")?;
+                let r = read_unit(ends, i, first, "ends")?;
+                let target = if shortest_path && p.dot(r) < 0.0 { -r } else { r };
+                let (d, s) = (p - target, p + target);
+                let (dd, ss) = (d.length_squared(), s.length_squared());
+                if ss < FRAME_LIMIT {
+                    careful(kind, starts, ends, i, first, shortest_path, x)?
+                } else if dd == 0.0 {
+                    p
+                } else if kind == BatchKind::KliExact {
+                    let u0 = (dd / ss).sqrt();
+                    let e = (-x).exp();
+                    let u = u0 * e;
+                    let u2 = u * u;
+                    let k = 0.5 / (1.0 + u2);
+                    s * ((1.0 - u2 + 2.0 * u0 * u) * k) + d * ((2.0 * e - 1.0 + u2) * k)
+                } else {
+                    let (dn, sn) = (dd.sqrt(), ss.sqrt());
+                    let (sin, cos) = ((1.0 - 2.0 * x) * dn.atan2(sn)).sin_cos();
+                    s * (cos / sn) + d * (sin / dn)
+                }
             }
             BatchKind::Nlerp => {
                 let p = read_unit(starts, i, first, "starts")?;
@@ -104,6 +143,20 @@ pub fn run_batch(kind: BatchKind, starts: &[f64], ends: &[f64], parameters: &[f6
         write(out, i, q);
     }
     Ok(())
+}
+
+/// `|s|²` below which the half-angle frame is not orthogonal to 1e-12 (`s·d/(|s||d|)` is
+/// rounding over `|s|`): the target is within 1e-3 of `-p`.
+const FRAME_LIMIT: f64 = 1e-6;
+
+/// The pair through [`GreatArc`], which re-orthogonalises its frame.
+#[cold]
+fn careful(kind: BatchKind, starts: &[f64], ends: &[f64], i: usize, first: usize, shortest_path: bool, x: f64) -> Result<DQuat, KliError> {
+    let arc = arc(starts, ends, i, first, shortest_path)?;
+    Ok(match kind {
+        BatchKind::Slerp => slerp::point_at(&arc, x),
+        _ => point_from_half_angle_tan(&arc, arc.half_angle_tan() * (-x).exp()),
+    })
 }
 
 /// `out[i] = Slerp(starts[i], ends[i]; s[i])` for every `i < s.len()`.

@@ -1,8 +1,9 @@
-//! The batch calls: Float64Arrays in, results written into the caller's `out`. Pairs are copied
-//! into wasm memory a chunk at a time, so a call of any size needs only a few hundred KB of wasm
-//! memory and no allocation on the JavaScript side.
+//! The batch calls: Float64Arrays in, results written into the caller's `out`. Arrays that live in
+//! the module's own memory ([`Float64Buffer`] views) are used in place, with no copy at all;
+//! others are copied in and out a chunk at a time, so a call of any size needs only a few hundred
+//! KB of wasm memory and no allocation on the JavaScript side.
 
-use js_sys::Float64Array;
+use js_sys::{Float64Array, WebAssembly};
 use wasm_bindgen::prelude::*;
 
 use super::{KliOptionsObject, QuaternionLike, describe, error, invalid, options, quaternion};
@@ -16,12 +17,38 @@ fn float64_array<'a>(name: &str, value: &'a JsValue) -> Result<&'a Float64Array,
     value.dyn_ref::<Float64Array>().ok_or_else(|| invalid(name, format!("must be a Float64Array (got {})", describe(value))))
 }
 
+/// The byte range `[start, end)` of `array` in the module's memory, if it is a view of it.
+fn in_wasm_memory(array: &Float64Array) -> Option<(usize, usize)> {
+    let memory: WebAssembly::Memory = wasm_bindgen::memory().unchecked_into();
+    let start = array.byte_offset() as usize;
+    (JsValue::from(array.buffer()) == memory.buffer()).then_some((start, start + 8 * array.length() as usize))
+}
+
+/// The four arrays in place, when all are views of the module's memory and `out` overlaps no
+/// input (overlapping `&` and `&mut` slices would be undefined behaviour).
+fn in_place(starts: &Float64Array, ends: &Float64Array, parameters: &Float64Array, out: &Float64Array) -> Option<[(usize, usize); 4]> {
+    let ranges = [in_wasm_memory(starts)?, in_wasm_memory(ends)?, in_wasm_memory(parameters)?, in_wasm_memory(out)?];
+    let (o_start, o_end) = ranges[3];
+    let disjoint = ranges[..3].iter().all(|&(a, b)| b <= o_start || o_end <= a || a == b);
+    disjoint.then_some(ranges)
+}
+
 fn run(kind: BatchKind, starts: &JsValue, ends: &JsValue, parameters: &JsValue, out: &JsValue, shortest_path: bool) -> Result<(), KliError> {
     let parameter_name = kind.parameter_name();
     let (starts, ends) = (float64_array("starts", starts)?, float64_array("ends", ends)?);
     let (parameters, out) = (float64_array(parameter_name, parameters)?, float64_array("out", out)?);
     let n = parameters.length() as usize;
     check_lengths(starts.length() as usize, ends.length() as usize, n, out.length() as usize, parameter_name)?;
+    if let Some([s, e, x, o]) = in_place(starts, ends, parameters, out) {
+        let slice = |(a, b): (usize, usize)| -> &[f64] {
+            // SAFETY: a live Float64Array view of our memory: aligned, in bounds, and (checked
+            // above) not overlapping `out`, which no other Rust reference touches during the call.
+            unsafe { std::slice::from_raw_parts(a as *const f64, (b - a) / 8) }
+        };
+        // SAFETY: as above; `out` is disjoint from the three inputs.
+        let out = unsafe { std::slice::from_raw_parts_mut(o.0 as *mut f64, (o.1 - o.0) / 8) };
+        return run_batch(kind, slice(s), slice(e), slice(x), out, 0, shortest_path);
+    }
     let chunk = CHUNK.min(n);
     let (mut p, mut r, mut x, mut q) = (vec![0.0; 4 * chunk], vec![0.0; 4 * chunk], vec![0.0; chunk], vec![0.0; 4 * chunk]);
     for first in (0..n).step_by(CHUNK.max(1)) {
@@ -100,4 +127,45 @@ pub fn kli_sample(
     let mut out = vec![0.0; 4 * times.len()];
     kli_sample_into(p, r, &times, &mut out, shortest_path).map_err(error)?;
     Ok(out)
+}
+
+/// An f64 array in the module's own memory: pass its `view` to the batch calls and they read and
+/// write it in place, with no copy. A view is valid until the module's memory grows (any call
+/// may grow it), so read `view` again before each use rather than keeping it.
+#[wasm_bindgen]
+pub struct Float64Buffer {
+    data: Vec<f64>,
+}
+
+/// The largest buffer: 2^27 numbers, 1 GiB.
+const MAX_BUFFER: usize = 1 << 27;
+
+#[wasm_bindgen]
+impl Float64Buffer {
+    /// `length` zeros.
+    #[wasm_bindgen(constructor)]
+    pub fn new(length: f64) -> Result<Float64Buffer, JsError> {
+        if !(length.is_finite() && length >= 0.0 && length.fract() == 0.0 && length <= MAX_BUFFER as f64) {
+            return Err(error(invalid("length", format!("must be a whole number from 0 to {MAX_BUFFER} (got {length})"))));
+        }
+        let mut data = Vec::new();
+        data.try_reserve_exact(length as usize)
+            .map_err(|_| error(invalid("length", format!("{length} numbers do not fit in the module's memory"))))?;
+        data.resize(length as usize, 0.0);
+        Ok(Float64Buffer { data })
+    }
+
+    /// A Float64Array over the buffer, in the module's memory.
+    #[wasm_bindgen(getter)]
+    pub fn view(&self) -> Float64Array {
+        // SAFETY: the view is handed to JavaScript, which may write through it; Rust never holds
+        // a reference to `data` across a call, and the view dies with a memory growth.
+        unsafe { Float64Array::view(&self.data) }
+    }
+
+    /// The number of f64 values.
+    #[wasm_bindgen(getter)]
+    pub fn length(&self) -> usize {
+        self.data.len()
+    }
 }

@@ -13,7 +13,7 @@ use crate::quaternion::{from_wxyz, to_wxyz};
 
 mod batch;
 mod demo;
-pub use batch::{kli_exact_batch, kli_sample, nlerp_batch, slerp_batch};
+pub use batch::{Float64Buffer, kli_exact_batch, kli_sample, nlerp_batch, slerp_batch};
 pub use demo::Demo;
 use crate::{Integrator, KliError, KliOptions};
 
