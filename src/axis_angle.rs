@@ -9,7 +9,7 @@
 
 use glam::{DQuat, DVec3};
 
-use crate::error::KliError;
+use crate::error::{KliError, non_finite};
 use crate::quaternion::{from_wxyz, unit};
 
 /// `(U, θ)` of the polar form; `q` is normalised first.
@@ -30,12 +30,13 @@ pub fn from_axis_angle(axis: DVec3, angle: f64) -> Result<DQuat, KliError> {
         return Err(KliError::InvalidNumber { name: "angle".into(), value: angle, requirement: "a finite number" });
     }
     if !axis.is_finite() || axis == DVec3::ZERO {
+        let problem = match axis.to_array().iter().position(|c| !c.is_finite()) {
+            Some(i) => format!("coordinate {i} is {}", non_finite(axis[i])),
+            None => "it has zero length".into(),
+        };
         return Err(KliError::InvalidArgument {
             name: "axis".into(),
-            problem: format!(
-                "must be 3 finite numbers [x, y, z], not all zero (got [{}, {}, {}])",
-                axis.x, axis.y, axis.z
-            ),
+            problem: format!("must be 3 finite numbers [x, y, z], not all zero: {problem}"),
         });
     }
     // Scaled first so tiny and huge axes normalise without underflow or overflow.

@@ -26,46 +26,71 @@ pub enum KliError {
     TooManySteps { steps: f64, limit: usize },
 }
 
-impl fmt::Display for KliError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl KliError {
+    /// The message, with numbers written by `number`. The JavaScript boundary passes
+    /// JavaScript's own `String(x)`, so the wasm build carries no float-formatting code.
+    pub fn message_with(&self, number: &dyn Fn(f64) -> String) -> String {
+        let n = number;
         match self {
-            KliError::InvalidQuaternion { name, problem } => write!(
-                f,
-                "{name} must be a quaternion of 4 finite numbers [w, x, y, z], not all zero: {problem}"
-            ),
-            KliError::InvalidNumber { name, value, requirement } => {
-                write!(f, "{name} must be {requirement} (got {value})")
+            KliError::InvalidQuaternion { name, problem } => {
+                format!("{name} must be a quaternion of 4 finite numbers [w, x, y, z], not all zero: {problem}")
             }
-            KliError::InvalidArgument { name, problem } => write!(f, "{name} {problem}"),
-            KliError::Antipodal => write!(
-                f,
-                "p and r are antipodal (p = -r) and shortestPath is false: q' = 0 there, an unstable \
+            KliError::InvalidNumber { name, value, requirement } => format!("{name} must be {requirement} (got {})", n(*value)),
+            KliError::InvalidArgument { name, problem } => format!("{name} {problem}"),
+            KliError::Antipodal => "p and r are antipodal (p = -r) and shortestPath is false: q' = 0 there, an unstable \
                  equilibrium, so the flow never moves and no path is determined (p and r are the same \
                  rotation; use shortestPath: true)"
+                .into(),
+            KliError::NotReached { tolerance, max_time, closest, predicted } => format!(
+                "tolerance {} not reached within maxTime {} (closest distance {}; the closed form \
+                 predicts T* = {}): raise maxTime or the tolerance",
+                n(*tolerance),
+                n(*max_time),
+                n(*closest),
+                n(*predicted)
             ),
-            KliError::NotReached { tolerance, max_time, closest, predicted } => write!(
-                f,
-                "tolerance {tolerance:e} not reached within maxTime {max_time} (closest distance \
-                 {closest:e}; the closed form predicts T* = {predicted}): raise maxTime or the tolerance"
+            KliError::Stalled { time, distance } => format!(
+                "p is so close to -r that a step does not move q (stuck at distance {} from the target \
+                 at t = {}): with shortestPath false the flow starts at a numerical equilibrium; use \
+                 shortestPath: true or a larger step",
+                n(*distance),
+                n(*time)
             ),
-            KliError::Stalled { time, distance } => write!(
-                f,
-                "p is so close to -r that a step does not move q (stuck at distance {distance} from \
-                 the target at t = {time}): with shortestPath false the flow starts at a numerical \
-                 equilibrium; use shortestPath: true or a larger step"
+            KliError::LeftSphere { integrator, time, norm } => format!(
+                "integrator {integrator} left the sphere S³ (|q| = {} at t = {}): near -r the sphere \
+                 repels the rounding errors of a step taken in R⁴; use integrator \"geodesic\", which \
+                 stays on S³, or shortestPath: true",
+                n(*norm),
+                n(*time)
             ),
-            KliError::LeftSphere { integrator, time, norm } => write!(
-                f,
-                "integrator {integrator} left the sphere S³ (|q| = {norm} at t = {time}): near -r the \
-                 sphere repels the rounding errors of a step taken in R⁴; use integrator \"geodesic\", \
-                 which stays on S³, or shortestPath: true"
-            ),
-            KliError::TooManySteps { steps, limit } => write!(
-                f,
-                "step is too small for maxTime: maxTime / step = {steps:.0} steps, more than the \
-                 {limit} a path may hold"
+            KliError::TooManySteps { steps, limit } => format!(
+                "step is too small for maxTime: maxTime / step = {} steps, more than the {limit} a path \
+                 may hold",
+                n(*steps)
             ),
         }
+    }
+}
+
+/// Rust's way of writing a number in a message: exponent form for the very small and large.
+pub fn rust_number(x: f64) -> String {
+    if x != 0.0 && x.is_finite() && (x.abs() < 1e-4 || x.abs() >= 1e16) { format!("{x:e}") } else { format!("{x}") }
+}
+
+impl fmt::Display for KliError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.message_with(&rust_number))
+    }
+}
+
+/// Names a value that is not finite, without float formatting: `NaN`, `Infinity`, `-Infinity`.
+pub(crate) fn non_finite(x: f64) -> &'static str {
+    if x.is_nan() {
+        "NaN"
+    } else if x > 0.0 {
+        "Infinity"
+    } else {
+        "-Infinity"
     }
 }
 

@@ -82,7 +82,7 @@ impl FromStr for Integrator {
         Integrator::ALL.into_iter().find(|i| i.name() == name).ok_or_else(|| {
             KliError::InvalidArgument {
                 name: "integrator".into(),
-                problem: format!("must be \"rk4\", \"euler\" or \"geodesic\" (got {name:?})"),
+                problem: format!("must be \"rk4\", \"euler\" or \"geodesic\" (got \"{name}\")"),
             }
         })
     }

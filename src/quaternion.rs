@@ -4,7 +4,7 @@
 
 use glam::DQuat;
 
-use crate::error::KliError;
+use crate::error::{KliError, non_finite};
 
 /// `[w, x, y, z]` (scalar first, the paper's `a + b i + c j + d k`) to a glam quaternion.
 #[inline]
@@ -27,7 +27,7 @@ pub fn unit(name: &'static str, q: DQuat) -> Result<DQuat, KliError> {
     if let Some(i) = wxyz.iter().position(|c| !c.is_finite()) {
         return Err(KliError::InvalidQuaternion {
             name: name.into(),
-            problem: format!("component {i} is {}", wxyz[i]),
+            problem: format!("component {i} is {}", non_finite(wxyz[i])),
         });
     }
     let largest = wxyz.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
@@ -70,6 +70,6 @@ mod tests {
         let nan = unit("r", from_wxyz([1.0, f64::NAN, 0.0, 0.0])).unwrap_err().to_string();
         assert!(nan.starts_with("r ") && nan.contains("component 1 is NaN"), "{nan}");
         let inf = unit("r", from_wxyz([1.0, 0.0, 0.0, f64::INFINITY])).unwrap_err().to_string();
-        assert!(inf.contains("component 3 is inf"), "{inf}");
+        assert!(inf.contains("component 3 is Infinity"), "{inf}");
     }
 }

@@ -7,9 +7,9 @@ use kli::render::aircraft::aircraft;
 use kli::render::camera::{Camera, Viewport};
 use kli::render::object_view::draw_object;
 use kli::render::pen::Pen;
-use kli::render::plots::{draw_plots, plot_area, time_axis_end};
+use kli::render::plots::{draw_plot_cursors, draw_plots, plot_area, time_axis_end};
 use kli::render::scene::Scene;
-use kli::render::sphere_view::draw_sphere;
+use kli::render::sphere_view::{draw_sphere, draw_sphere_cursor};
 use kli::{KliOptions, from_wxyz, kli};
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
@@ -44,7 +44,8 @@ fn sphere_view_puts_markers_where_the_hopf_map_says() {
     let camera = Camera::orbit(135f64.to_radians(), 25f64.to_radians());
     let viewport = Viewport::fitting(0.0, 0.0, 300.0, 300.0, 1.22);
     let pen = Pen::begin(&ctx, 300.0, 300.0, 1.0, "#ffffff");
-    draw_sphere(&pen, &viewport, &camera, &scene, 0.85);
+    draw_sphere(&pen, &viewport, &camera, &scene);
+    draw_sphere_cursor(&Pen::over(&ctx, 1.0), &viewport, &camera, &scene, 0.85);
     let at = |v: DVec3| viewport.pixel(camera.project(v));
     assert_eq!(pixel(&ctx, (2.0, 2.0)), WHITE, "background");
     // The end h(r) = (0, 1, 0) (MATH.md) is a filled dark disc (#343a40).
@@ -86,7 +87,7 @@ fn time_warp_plot_follows_the_closed_form() {
     let ctx = canvas(width as u32, height as u32);
     let scene = paper_scene();
     let pen = Pen::begin(&ctx, width, height, 1.0, "#ffffff");
-    draw_plots(&pen, width, height, &scene, 0.0);
+    draw_plots(&pen, width, height, &scene);
     let (left, top, w, h) = plot_area(1, width, height);
     let x_max = time_axis_end(&scene);
     // s(t) = 1 − φ(t)/φ0 with tan(φ/2) = tan(π/6) e^−t: at t = 2, computed here.
@@ -106,6 +107,17 @@ fn time_warp_plot_follows_the_closed_form() {
     assert!(!found.is_empty(), "no KLI curve in column {x}");
     let mean = found.iter().sum::<f64>() / found.len() as f64;
     assert!((mean - expected_y).abs() < 2.0, "curve at y = {mean}, expected {expected_y}");
+    // The time cursor at t = 6 on the distance plot: a dark dotted line at the computed x.
+    draw_plot_cursors(&Pen::over(&ctx, 1.0), width, height, &scene, 6.0);
+    let (left, top, w, h) = plot_area(0, width, height);
+    let x = left + 6.0 / x_max * w;
+    // A 1 px antialiased line on a fractional x: look one pixel either side.
+    let darkened = |y: i32| (-1..=1).any(|dx| pixel(&ctx, (x.floor() + f64::from(dx), f64::from(y)))[0] < 200);
+    let rows = (top as i32 + 2..(top + h) as i32 - 2).filter(|&y| darkened(y)).count();
+    assert!(rows as f64 > 0.3 * h, "cursor at x = {x}: {rows} darkened rows of {h}");
+    // Elsewhere in the same rows, away from the curve, the plot stays white.
+    let blank = (top as i32 + 2..(top + h) as i32 - 2).filter(|&y| pixel(&ctx, (x + 25.0, f64::from(y)))[0] < 200).count();
+    assert!(blank < 10, "{blank} darkened rows 25 px to the right");
 }
 
 #[wasm_bindgen_test]
@@ -116,7 +128,7 @@ fn pixel_ratio_scales_the_drawing() {
     let camera = Camera::orbit(135f64.to_radians(), 25f64.to_radians());
     let viewport = Viewport::fitting(0.0, 0.0, 100.0, 100.0, 1.22);
     let pen = Pen::begin(&ctx, 100.0, 100.0, 2.0, "#ffffff");
-    draw_sphere(&pen, &viewport, &camera, &scene, 0.0);
+    draw_sphere(&pen, &viewport, &camera, &scene);
     let end = viewport.pixel(camera.project(DVec3::Y));
     assert_eq!(pixel(&ctx, (2.0 * end.0, 2.0 * end.1)), [0x34, 0x3a, 0x40]);
 }

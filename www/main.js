@@ -15,6 +15,10 @@ const canvases = {
   plots: $("#plots-canvas"),
 };
 const sizes = {};
+// The sphere and the plots change only with the scene, the size or the view: each is drawn once
+// into an offscreen layer, which every frame copies before drawing the current time over it.
+const layers = { sphere: { canvas: document.createElement("canvas"), stale: true }, plots: { canvas: document.createElement("canvas"), stale: true } };
+const refreshLayers = (...names) => names.forEach((name) => (layers[name].stale = true));
 
 let demo = null;
 let state = null; // the last valid inputs
@@ -117,6 +121,7 @@ function apply(candidate) {
   }
   demo?.free();
   demo = next;
+  refreshLayers("sphere", "plots");
   state = candidate;
   t = Math.min(t, demo.finalTime);
   $("#time").max = String(demo.finalTime);
@@ -233,14 +238,40 @@ function frame(now) {
       pause();
     }
   }
+  render();
+  if (playing) requestDraw();
+}
+
+/** Draws the views at the current time. */
+function render() {
+  if (!demo) return;
   const ratio = devicePixelRatio || 1;
-  const draw = (name, fn) => sizes[name] && fn(canvases[name].getContext("2d"), sizes[name].width, sizes[name].height, ratio);
-  draw("object", (ctx, w, h, k) => demo.drawObject(ctx, w, h, k, t));
-  draw("sphere", (ctx, w, h, k) => demo.drawSphere(ctx, w, h, k, t, view[0], view[1]));
-  draw("plots", (ctx, w, h, k) => demo.drawPlots(ctx, w, h, k, t));
+  if (sizes.object) demo.drawObject(canvases.object.getContext("2d"), sizes.object.width, sizes.object.height, ratio, t);
+  drawLayered("sphere", ratio, (ctx, w, h, k) => demo.drawSphere(ctx, w, h, k, view[0], view[1]),
+    (ctx, w, h, k) => demo.drawSphereTime(ctx, w, h, k, t, view[0], view[1]));
+  drawLayered("plots", ratio, (ctx, w, h, k) => demo.drawPlots(ctx, w, h, k), (ctx, w, h, k) => demo.drawPlotsTime(ctx, w, h, k, t));
   $("#time").value = String(t);
   $("#time-readout").textContent = `t = ${t.toFixed(2)} / T = ${demo.finalTime.toFixed(2)}`;
-  if (playing) requestDraw();
+  // For the DevTools timeline and `make bench`: when the first complete frame was drawn.
+  if (sizes.object && performance.getEntriesByName("kli:first-frame").length === 0) performance.mark("kli:first-frame");
+}
+
+/** Copies the still layer of a view (redrawn first if stale) and draws the moving part over it. */
+function drawLayered(name, ratio, still, moving) {
+  const size = sizes[name];
+  if (!size) return;
+  const canvas = canvases[name];
+  const layer = layers[name];
+  if (layer.stale || layer.canvas.width !== canvas.width || layer.canvas.height !== canvas.height) {
+    layer.canvas.width = canvas.width;
+    layer.canvas.height = canvas.height;
+    still(layer.canvas.getContext("2d"), size.width, size.height, ratio);
+    layer.stale = false;
+  }
+  const ctx = canvas.getContext("2d");
+  ctx.setTransform(1, 0, 0, 1, 0, 0);
+  ctx.drawImage(layer.canvas, 0, 0);
+  moving(ctx, size.width, size.height, ratio);
 }
 
 function drawFilmstrip() {
@@ -288,12 +319,22 @@ function observeSizes() {
       canvas.height = Math.max(1, Math.round(height * ratio));
       if (name === "filmstrip") drawFilmstrip();
     }
-    requestDraw();
+    // Draw now, in the same rendering update as the layout that sized the canvases, rather than
+    // a frame later: the first view appears one frame sooner and a resize never shows blank.
+    render();
   });
   Object.values(canvases).forEach((canvas) => observer.observe(canvas));
 }
 
 // ---- Input devices --------------------------------------------------------------------------
+
+/** Turns the sphere view by (azimuth, elevation) radians; elevation stays within ±89°. */
+function turnSphere(azimuth, elevation) {
+  view[0] += azimuth;
+  view[1] = Math.min(Math.max(view[1] + elevation, -1.55), 1.55);
+  refreshLayers("sphere");
+  requestDraw();
+}
 
 function wireControls() {
   form.addEventListener("input", onFormInput);
@@ -322,10 +363,10 @@ function wireControls() {
       " ": () => (playing ? pause() : play()),
       Home: () => { t = 0; requestDraw(); },
       End: () => { pause(); setTime(Infinity); },
-      ArrowLeft: () => (sphereFocused ? (view[0] += turn) : (pause(), setTime(t - stride))),
-      ArrowRight: () => (sphereFocused ? (view[0] -= turn) : (pause(), setTime(t + stride))),
-      ArrowUp: () => sphereFocused && (view[1] = Math.min(view[1] + turn, 1.55)),
-      ArrowDown: () => sphereFocused && (view[1] = Math.max(view[1] - turn, -1.55)),
+      ArrowLeft: () => (sphereFocused ? turnSphere(turn, 0) : (pause(), setTime(t - stride))),
+      ArrowRight: () => (sphereFocused ? turnSphere(-turn, 0) : (pause(), setTime(t + stride))),
+      ArrowUp: () => sphereFocused && turnSphere(0, turn),
+      ArrowDown: () => sphereFocused && turnSphere(0, -turn),
       "+": () => changeSpeed(1),
       "=": () => changeSpeed(1),
       "-": () => changeSpeed(-1),
@@ -344,10 +385,8 @@ function wireControls() {
   });
   canvases.sphere.addEventListener("pointermove", (event) => {
     if (!drag) return;
-    view[0] -= (event.clientX - drag.x) * 0.01;
-    view[1] = Math.min(Math.max(view[1] + (event.clientY - drag.y) * 0.01, -1.55), 1.55);
+    turnSphere(-(event.clientX - drag.x) * 0.01, (event.clientY - drag.y) * 0.01);
     drag = { x: event.clientX, y: event.clientY };
-    requestDraw();
   });
   const endDrag = () => (drag = null);
   canvases.sphere.addEventListener("pointerup", endDrag);
@@ -381,6 +420,7 @@ async function start() {
     $("#load-status").classList.add("error");
     return;
   }
+  performance.mark("kli:wasm-ready");
   if (query.embed) document.body.classList.add("embed");
   view = Array.from(Demo.defaultSphereView());
   wireControls();

@@ -6,7 +6,7 @@
 use js_sys::{Float64Array, WebAssembly};
 use wasm_bindgen::prelude::*;
 
-use super::{KliOptionsObject, QuaternionLike, describe, error, invalid, options, quaternion};
+use super::{KliOptionsObject, QuaternionLike, describe, error, invalid, number, options, quaternion};
 use crate::batch::{BatchKind, check_lengths, kli_sample_into, run_batch};
 use crate::KliError;
 
@@ -146,11 +146,11 @@ impl Float64Buffer {
     #[wasm_bindgen(constructor)]
     pub fn new(length: f64) -> Result<Float64Buffer, JsError> {
         if !(length.is_finite() && length >= 0.0 && length.fract() == 0.0 && length <= MAX_BUFFER as f64) {
-            return Err(error(invalid("length", format!("must be a whole number from 0 to {MAX_BUFFER} (got {length})"))));
+            return Err(error(invalid("length", format!("must be a whole number from 0 to {MAX_BUFFER} (got {})", number(length)))));
         }
         let mut data = Vec::new();
         data.try_reserve_exact(length as usize)
-            .map_err(|_| error(invalid("length", format!("{length} numbers do not fit in the module's memory"))))?;
+            .map_err(|_| error(invalid("length", format!("{} numbers do not fit in the module's memory", number(length)))))?;
         data.resize(length as usize, 0.0);
         Ok(Float64Buffer { data })
     }

@@ -8,10 +8,10 @@ use super::{KliOptionsObject, QuaternionLike, error, options, quaternion, to_arr
 use crate::render::aircraft::{Face, aircraft};
 use crate::render::camera::{Camera, Viewport};
 use crate::render::object_view::{draw_object, object_camera};
-use crate::render::pen::{INK, KLI, MUTED, Pen, SLERP};
-use crate::render::plots::draw_plots;
+use crate::render::pen::{INK, KLI, MUTED, Pen, SLERP, fixed, number};
+use crate::render::plots::{draw_plot_cursors, draw_plots};
 use crate::render::scene::Scene;
-use crate::render::sphere_view::{draw_sphere, sphere_camera};
+use crate::render::sphere_view::{draw_sphere, draw_sphere_cursor, sphere_camera};
 
 const BACKGROUND: &str = "#ffffff";
 
@@ -90,8 +90,8 @@ impl Demo {
         let side_by_side = width >= height;
         let (w, h) = if side_by_side { (width / 2.0, height) } else { (width, height / 2.0) };
         let panels = [
-            (self.scene.kli_at(t), KLI, format!("KLI  t = {t:.2}")),
-            (self.scene.slerp_at(t), SLERP, format!("SLERP  s = t/T = {:.3}", self.scene.slerp_parameter(t))),
+            (self.scene.kli_at(t), KLI, format!("KLI  t = {}", fixed(t, 2))),
+            (self.scene.slerp_at(t), SLERP, format!("SLERP  s = t/T = {}", fixed(self.scene.slerp_parameter(t), 3))),
         ];
         for (i, (q, color, label)) in panels.iter().enumerate() {
             let (left, top) = if side_by_side { (i as f64 * w, 0.0) } else { (0.0, i as f64 * h) };
@@ -112,25 +112,39 @@ impl Demo {
             let left = i as f64 * cell;
             let viewport = Viewport::fitting(left, 0.0, cell, height - 16.0, 1.6);
             draw_object(&pen, &viewport, &camera, &self.mesh, self.scene.kli_at(t), false);
-            let label = if i + 1 == moments.len() { format!("T = {t:.2}") } else { format!("t = {t}") };
+            let label = if i + 1 == moments.len() { format!("T = {}", fixed(t, 2)) } else { format!("t = {}", number(t)) };
             pen.text(&label, (left + 0.5 * cell, height - 9.0), if i + 1 == moments.len() { INK } else { MUTED }, 12.0, "center");
         }
     }
 
-    /// The Hopf curves on S² at t, seen from (azimuth, elevation) in radians (Fig. 1, live).
+    /// The Hopf curves on S², seen from (azimuth, elevation) in radians (Fig. 1), without the
+    /// current time: draw this when the scene or the view changes, then `drawSphereTime` over
+    /// (a copy of) it each frame.
     #[wasm_bindgen(js_name = drawSphere)]
-    #[allow(clippy::too_many_arguments)]
-    pub fn draw_sphere(&self, ctx: &CanvasRenderingContext2d, width: f64, height: f64, pixel_ratio: f64, t: f64, azimuth: f64, elevation: f64) {
+    pub fn draw_sphere(&self, ctx: &CanvasRenderingContext2d, width: f64, height: f64, pixel_ratio: f64, azimuth: f64, elevation: f64) {
         let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
-        let viewport = Viewport::fitting(0.0, 0.0, width, height, 1.22);
-        draw_sphere(&pen, &viewport, &Camera::orbit(azimuth, elevation), &self.scene, finite(t));
+        draw_sphere(&pen, &sphere_viewport(width, height), &Camera::orbit(azimuth, elevation), &self.scene);
     }
 
-    /// The distance, time-warp and |q|-drift plots at t.
+    /// The KLI and SLERP points at t over a drawing of `drawSphere` with the same view.
+    #[wasm_bindgen(js_name = drawSphereTime)]
+    #[allow(clippy::too_many_arguments)]
+    pub fn draw_sphere_time(&self, ctx: &CanvasRenderingContext2d, width: f64, height: f64, pixel_ratio: f64, t: f64, azimuth: f64, elevation: f64) {
+        let pen = Pen::over(ctx, pixel_ratio);
+        draw_sphere_cursor(&pen, &sphere_viewport(width, height), &Camera::orbit(azimuth, elevation), &self.scene, finite(t));
+    }
+
+    /// The distance, time-warp and |q|-drift plots, without the current time (see `drawPlotsTime`).
     #[wasm_bindgen(js_name = drawPlots)]
-    pub fn draw_plots(&self, ctx: &CanvasRenderingContext2d, width: f64, height: f64, pixel_ratio: f64, t: f64) {
+    pub fn draw_plots(&self, ctx: &CanvasRenderingContext2d, width: f64, height: f64, pixel_ratio: f64) {
         let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
-        draw_plots(&pen, width, height, &self.scene, finite(t));
+        draw_plots(&pen, width, height, &self.scene);
+    }
+
+    /// The current time t as a line on each plot, over a drawing of `drawPlots`.
+    #[wasm_bindgen(js_name = drawPlotsTime)]
+    pub fn draw_plots_time(&self, ctx: &CanvasRenderingContext2d, width: f64, height: f64, pixel_ratio: f64, t: f64) {
+        draw_plot_cursors(&Pen::over(ctx, pixel_ratio), width, height, &self.scene, finite(t));
     }
 
     /// The sphere view's default (azimuth, elevation) in radians.
@@ -139,6 +153,10 @@ impl Demo {
         let d = sphere_camera().toward_viewer();
         vec![d.y.atan2(d.x), d.z.asin()]
     }
+}
+
+fn sphere_viewport(width: f64, height: f64) -> Viewport {
+    Viewport::fitting(0.0, 0.0, width, height, 1.22)
 }
 
 /// Drawing never fails: a non-finite time is drawn as t = 0.

@@ -10,6 +10,8 @@ use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
 use crate::quaternion::{from_wxyz, to_wxyz};
+// JavaScript's `String(x)`: keeps Rust's float formatting out of the module.
+pub(crate) use crate::render::pen::number;
 
 mod batch;
 mod demo;
@@ -59,15 +61,16 @@ extern "C" {
 }
 
 fn error(e: KliError) -> JsError {
-    JsError::new(&e.to_string())
+    JsError::new(&e.message_with(&number))
 }
+
 
 /// A short description of a JavaScript value for error messages.
 fn describe(value: &JsValue) -> String {
     if let Some(n) = value.as_f64() {
-        format!("{n}")
+        number(n)
     } else if let Some(s) = value.as_string() {
-        format!("{s:?}, a string")
+        format!("\"{s}\", a string")
     } else if let Some(b) = value.as_bool() {
         format!("{b}")
     } else if value.is_null() {
@@ -130,7 +133,7 @@ fn options(value: Option<KliOptionsObject>) -> Result<KliOptions, KliError> {
     for key in Object::keys(object.unchecked_ref::<Object>()).iter() {
         let key = key.as_string().unwrap_or_default();
         if !OPTION_KEYS.contains(&key.as_str()) {
-            return Err(invalid("options", format!("has an unknown key {key:?}; the keys are {}", OPTION_KEYS.join(", "))));
+            return Err(invalid("options", format!("has an unknown key \"{key}\"; the keys are {}", OPTION_KEYS.join(", "))));
         }
     }
     let field = |key: &str| Reflect::get(&object, &key.into()).unwrap_or(JsValue::UNDEFINED);

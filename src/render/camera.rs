@@ -25,7 +25,7 @@ impl Camera {
     /// radians. Elevation is clamped to ±89.9° so `z` stays a usable up direction.
     pub fn orbit(azimuth: f64, elevation: f64) -> Self {
         let limit = 89.9_f64.to_radians();
-        let elevation = if elevation.is_finite() { elevation.clamp(-limit, limit) } else { 0.0 };
+        let elevation = if elevation.is_finite() { elevation.max(-limit).min(limit) } else { 0.0 };
         let azimuth = if azimuth.is_finite() { azimuth } else { 0.0 };
         let toward_viewer = DVec3::new(elevation.cos() * azimuth.cos(), elevation.cos() * azimuth.sin(), elevation.sin());
         let right = DVec3::Z.cross(toward_viewer).normalize();

@@ -29,7 +29,15 @@ pub fn draw_object(pen: &Pen, viewport: &Viewport, camera: &Camera, mesh: &[Face
             (depth, outline, shade(face.color, brightness))
         })
         .collect();
-    faces.sort_by(|a, b| a.0.total_cmp(&b.0));
+    // Far to near. An insertion sort: a few dozen faces, and it keeps the general-purpose sort
+    // (4 KB) out of the module.
+    for i in 1..faces.len() {
+        let mut j = i;
+        while j > 0 && faces[j - 1].0 > faces[j].0 {
+            faces.swap(j - 1, j);
+            j -= 1;
+        }
+    }
     for (_, outline, color) in &faces {
         pen.fill_polygon(outline, color, Some(color));
     }

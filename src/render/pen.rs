@@ -22,9 +22,24 @@ pub struct Pen<'a> {
     ctx: &'a CanvasRenderingContext2d,
 }
 
+/// `x` with `digits` decimals, by JavaScript's `toFixed` (no float formatting in the module).
+pub fn fixed(x: f64, digits: u8) -> String {
+    js_sys::Number::from(x).to_fixed(digits).map(String::from).unwrap_or_default()
+}
+
+/// `x` in exponent form with `digits` decimals, by JavaScript's `toExponential`.
+pub fn exponential(x: f64, digits: u8) -> String {
+    js_sys::Number::from(x).to_exponential(digits).map(String::from).unwrap_or_default()
+}
+
+/// `String(x)`.
+pub fn number(x: f64) -> String {
+    js_sys::Number::from(x).to_string_with_radix(10).map(String::from).unwrap_or_default()
+}
+
 /// `rgb(…)` of a colour scaled by `light` (1 = as is).
 pub fn shade(color: Rgb, light: f64) -> String {
-    let [r, g, b] = color.map(|c| (c as f64 * light).round().clamp(0.0, 255.0) as u8);
+    let [r, g, b] = color.map(|c| (c as f64 * light).round().max(0.0).min(255.0) as u8);
     format!("rgb({r},{g},{b})")
 }
 
@@ -40,6 +55,14 @@ impl<'a> Pen<'a> {
         ctx.fill_rect(0.0, 0.0, width, height);
         ctx.set_line_join("round");
         ctx.set_line_cap("round");
+        Self { ctx }
+    }
+
+    /// Draws over what the canvas holds (no clearing), in CSS pixels at `pixel_ratio`.
+    pub fn over(ctx: &'a CanvasRenderingContext2d, pixel_ratio: f64) -> Self {
+        let ratio = if pixel_ratio.is_finite() && pixel_ratio > 0.0 { pixel_ratio } else { 1.0 };
+        let _ = ctx.set_transform(ratio, 0.0, 0.0, ratio, 0.0, 0.0);
+        ctx.set_global_alpha(1.0);
         Self { ctx }
     }
 
@@ -117,7 +140,8 @@ impl<'a> Pen<'a> {
 
     /// Text at `(x, y)`; `align` is "left", "center" or "right", the baseline is the middle.
     pub fn text(&self, text: &str, (x, y): (f64, f64), color: &str, size: f64, align: &str) {
-        self.ctx.set_font(&format!("{size}px system-ui, -apple-system, 'Segoe UI', sans-serif"));
+        let tenths = (size * 10.0).round() as u32;
+        self.ctx.set_font(&format!("{}.{}px system-ui, -apple-system, 'Segoe UI', sans-serif", tenths / 10, tenths % 10));
         self.ctx.set_text_align(align);
         self.ctx.set_text_baseline("middle");
         self.ctx.set_fill_style_str(color);

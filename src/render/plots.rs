@@ -1,7 +1,8 @@
 //! The plots beside the views: the distance `||target - q(t)||` on a log scale with the tolerance,
 //! `T` and `T*`; the time warp `s(t)` against SLERP's `t / T`; the drift of `|q|` from 1.
 
-use super::pen::{GRID, INK, KLI, MUTED, Pen, SLERP};
+use super::pen::{GRID, INK, KLI, MUTED, Pen, SLERP, exponential, fixed};
+use super::ticks::{decades, nice_step};
 use super::scene::Scene;
 
 /// A plot frame: data ranges mapped onto a rectangle of the canvas.
@@ -18,7 +19,8 @@ struct Panel {
 impl Panel {
     fn at(&self, x: f64, y: f64) -> (f64, f64) {
         let fx = if self.x_max > 0.0 { x / self.x_max } else { 0.0 };
-        let fy = (y.clamp(self.y_min, self.y_max) - self.y_min) / (self.y_max - self.y_min);
+        // max/min rather than clamp: clamp panics on bad bounds, and nothing here may panic.
+        let fy = (y.max(self.y_min).min(self.y_max) - self.y_min) / (self.y_max - self.y_min);
         (self.left + fx * self.width, self.top + (1.0 - fy) * self.height)
     }
 
@@ -46,30 +48,16 @@ impl Panel {
         let points: Vec<(f64, f64)> = xs.iter().zip(ys).map(|(&x, y)| self.at(x, y)).collect();
         pen.polyline(&points, color, width, dash);
     }
-
-    fn now(&self, pen: &Pen, t: f64) {
-        let (x, _) = self.at(t.min(self.x_max), 0.0);
-        pen.line((x, self.top), (x, self.top + self.height), INK, 1.0, &[2.0, 3.0]);
-    }
 }
 
-/// A tick spacing of 1, 2 or 5 × 10^k giving about five ticks over `[0, span]`.
-fn nice_step(span: f64) -> f64 {
-    if !(span > 0.0) || !span.is_finite() {
-        return 0.0;
-    }
-    let raw = span / 5.0;
-    let magnitude = 10f64.powf(raw.log10().floor());
-    [1.0, 2.0, 5.0, 10.0].iter().map(|m| m * magnitude).find(|&s| s >= raw).unwrap_or(raw)
-}
-
+/// A tick label: at most two decimals, trailing zeros dropped.
 fn trim(x: f64) -> String {
-    let text = format!("{x:.2}");
+    let text = fixed(x, 2);
     text.trim_end_matches('0').trim_end_matches('.').to_string()
 }
 
-fn decades(low: i32, high: i32, every: i32) -> Vec<(f64, String)> {
-    (low..=high).filter(|e| (e - low) % every == 0).map(|e| (e as f64, format!("1e{e}"))).collect()
+fn decade_ticks(low: i32, high: i32, every: i32) -> Vec<(f64, String)> {
+    decades(low, high, every).into_iter().map(|e| (e as f64, format!("1e{e}"))).collect()
 }
 
 fn log10_floor(values: &[f64], floor: f64) -> impl Iterator<Item = f64> + '_ {
@@ -90,8 +78,8 @@ pub fn time_axis_end(scene: &Scene) -> f64 {
     scene.final_time().max(scene.predicted_time()).max(1e-9) * 1.04
 }
 
-/// Draws the three plots into `(width, height)`.
-pub fn draw_plots(pen: &Pen, width: f64, height: f64, scene: &Scene, t: f64) {
+/// Draws the three plots into `(width, height)`; [`draw_plot_cursors`] marks a time on them.
+pub fn draw_plots(pen: &Pen, width: f64, height: f64, scene: &Scene) {
     let cell = |i: usize, x_max: f64, y_min: f64, y_max: f64| {
         let (left, top, width, height) = plot_area(i, width, height);
         Panel { left, top, width, height, x_max, y_min, y_max }
@@ -106,17 +94,16 @@ pub fn draw_plots(pen: &Pen, width: f64, height: f64, scene: &Scene, t: f64) {
     let low = (smallest.log10().floor() as i32 - 1).max(-17);
     let panel = cell(0, x_max, low as f64, 0.5);
     let every = ((1 - low) / 6).max(1);
-    panel.frame(pen, "distance ||r − q(t)|| (log)", &decades(low, 0, every));
+    panel.frame(pen, "distance ||r − q(t)|| (log)", &decade_ticks(low, 0, every));
     panel.series(pen, times, log10_floor(scene.distances(), low as f64), KLI, 2.0, &[]);
     let (x0, ty) = panel.at(0.0, tolerance.log10());
     pen.line((x0, ty), (panel.left + panel.width, ty), MUTED, 1.0, &[4.0, 3.0]);
-    pen.text(&format!("ε = {tolerance:e}"), (panel.left + panel.width, ty - 8.0), MUTED, 10.5, "right");
+    pen.text(&format!("ε = {}", exponential(tolerance, 0)), (panel.left + panel.width, ty - 8.0), MUTED, 10.5, "right");
     let (tx, _) = panel.at(final_time, 0.0);
     pen.line((tx, panel.top), (tx, panel.top + panel.height), KLI, 1.0, &[]);
     let (sx, _) = panel.at(scene.predicted_time(), 0.0);
     pen.line((sx, panel.top), (sx, panel.top + panel.height), INK, 1.0, &[3.0, 3.0]);
-    pen.text(&format!("T = {final_time:.2}  T* = {:.4}", scene.predicted_time()), (panel.left + panel.width, panel.top + 8.0), INK, 10.5, "right");
-    panel.now(pen, t);
+    pen.text(&format!("T = {}  T* = {}", fixed(final_time, 2), fixed(scene.predicted_time(), 4)), (panel.left + panel.width, panel.top + 8.0), INK, 10.5, "right");
 
     // 2. The time warp s(t) of KLI against SLERP's linear clock.
     let panel = cell(1, x_max, 0.0, 1.0);
@@ -126,30 +113,23 @@ pub fn draw_plots(pen: &Pen, width: f64, height: f64, scene: &Scene, t: f64) {
     panel.series(pen, times, scene.warp().iter().copied(), KLI, 2.0, &[]);
     pen.text("KLI", panel.at(x_max * 0.08, 0.93), KLI, 11.0, "left");
     pen.text("SLERP, s = t/T", panel.at(x_max * 0.55, 0.3), SLERP, 11.0, "left");
-    panel.now(pen, t);
 
     // 3. Drift of |q| from 1 for the chosen integrator.
     let largest = scene.norm_drift().iter().copied().fold(0.0_f64, f64::max);
     let high = if largest > 0.0 { (largest.log10().ceil() as i32).clamp(-15, 0) } else { -15 };
     let panel = cell(2, x_max, -17.0, high as f64);
     let integrator = scene.path().options().integrator;
-    panel.frame(pen, &format!("| |q| − 1 |, {integrator} (log)"), &decades(-17, high, ((high + 17) / 5).max(1)));
+    panel.frame(pen, &format!("| |q| − 1 |, {} (log)", integrator.name()), &decade_ticks(-17, high, (high + 17) / 5));
     panel.series(pen, times, log10_floor(scene.norm_drift(), -17.0), KLI, 2.0, &[]);
-    pen.text(&format!("max {largest:.1e}"), (panel.left + panel.width, panel.top + 8.0), INK, 10.5, "right");
-    panel.now(pen, t);
+    pen.text(&format!("max {}", exponential(largest, 1)), (panel.left + panel.width, panel.top + 8.0), INK, 10.5, "right");
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn nice_steps() {
-        assert_eq!(nice_step(11.66), 5.0);
-        assert_eq!(nice_step(1.0), 0.2);
-        assert_eq!(nice_step(40.0), 10.0);
-        assert_eq!(nice_step(0.0), 0.0);
-        assert_eq!(trim(2.5), "2.5");
-        assert_eq!(trim(10.0), "10");
+/// The current time `t` as a dotted vertical line on each plot, over [`draw_plots`]' drawing.
+pub fn draw_plot_cursors(pen: &Pen, width: f64, height: f64, scene: &Scene, t: f64) {
+    let x_max = time_axis_end(scene);
+    for i in 0..3 {
+        let (left, top, w, h) = plot_area(i, width, height);
+        let x = left + t.max(0.0).min(x_max) / x_max * w;
+        pen.line((x, top), (x, top + h), INK, 1.0, &[2.0, 3.0]);
     }
 }

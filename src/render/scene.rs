@@ -66,7 +66,7 @@ impl Scene {
     pub fn kli_at(&self, t: f64) -> DQuat {
         let q = self.path.quaternions();
         let step = self.path.options().step;
-        let position = (t / step).clamp(0.0, (q.len() - 1) as f64);
+        let position = (t / step).max(0.0).min((q.len() - 1) as f64);
         let n = (position.floor() as usize).min(q.len() - 1);
         let next = (n + 1).min(q.len() - 1);
         let f = position - n as f64;
@@ -75,7 +75,7 @@ impl Scene {
 
     /// SLERP's parameter on the same clock: `s = t / T` (constant angular speed), in `[0, 1]`.
     pub fn slerp_parameter(&self, t: f64) -> f64 {
-        if self.final_time() > 0.0 { (t / self.final_time()).clamp(0.0, 1.0) } else { 1.0 }
+        if self.final_time() > 0.0 { (t / self.final_time()).max(0.0).min(1.0) } else { 1.0 }
     }
 
     /// SLERP at [`Scene::slerp_parameter`]`(t)`.

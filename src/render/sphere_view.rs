@@ -5,7 +5,7 @@
 use glam::DVec3;
 
 use super::camera::{Camera, Viewport};
-use super::pen::{AXIS_X, AXIS_Y, AXIS_Z, GRID, INK, KLI, MUTED, Pen, SLERP};
+use super::pen::{AXIS_X, AXIS_Y, AXIS_Z, GRID, INK, KLI, MUTED, Pen, SLERP, fixed};
 use super::scene::Scene;
 use crate::hopf::hopf;
 
@@ -55,16 +55,15 @@ fn grid() -> Vec<Vec<DVec3>> {
     lines
 }
 
-/// Draws the sphere view of `scene` at time `t` into `viewport`.
-pub fn draw_sphere(pen: &Pen, viewport: &Viewport, camera: &Camera, scene: &Scene, t: f64) {
+/// Draws the sphere view of `scene` into `viewport`: everything but the current time, which
+/// [`draw_sphere_cursor`] adds on top.
+pub fn draw_sphere(pen: &Pen, viewport: &Viewport, camera: &Camera, scene: &Scene) {
     let grid = grid();
     let moments = scene.moments();
     let kli_moments: Vec<DVec3> = moments.iter().map(|&m| hopf(scene.kli_at(m))).collect();
     let slerp_moments: Vec<DVec3> = moments.iter().map(|&m| hopf(scene.slerp_at(m))).collect();
     let start = hopf(scene.path().arc().start());
     let end = hopf(scene.path().target());
-    let now_kli = hopf(scene.kli_at(t));
-    let now_slerp = hopf(scene.slerp_at(t));
     let at = |p: DVec3| viewport.pixel(camera.project(p));
     let in_front = |p: DVec3| camera.project(p).depth >= 0.0;
 
@@ -109,9 +108,14 @@ pub fn draw_sphere(pen: &Pen, viewport: &Viewport, camera: &Camera, scene: &Scen
     pen.text("h(p)", offset(at(start), 0.0, -14.0), INK, 12.0, "center");
     pen.disc(at(end), 6.0, Some(INK), Some(("#ffffff", 1.5)));
     pen.text("h(r)", offset(at(end), 0.0, -14.0), INK, 12.0, "center");
-    pen.disc(at(now_slerp), 7.0, None, Some((SLERP, 2.5)));
-    pen.disc(at(now_kli), 7.5, Some(KLI), Some((INK, 2.0)));
-    pen.text(&format!("t = {t:.2}"), (viewport.left + 8.0, viewport.top + 12.0), MUTED, 12.0, "left");
+}
+
+/// The KLI and SLERP points at time `t`, over [`draw_sphere`]'s drawing.
+pub fn draw_sphere_cursor(pen: &Pen, viewport: &Viewport, camera: &Camera, scene: &Scene, t: f64) {
+    let at = |p: DVec3| viewport.pixel(camera.project(p));
+    pen.disc(at(hopf(scene.slerp_at(t))), 7.0, None, Some((SLERP, 2.5)));
+    pen.disc(at(hopf(scene.kli_at(t))), 7.5, Some(KLI), Some((INK, 2.0)));
+    pen.text(&format!("t = {}", fixed(t, 2)), (viewport.left + 8.0, viewport.top + 12.0), MUTED, 12.0, "left");
 }
 
 fn offset((x, y): (f64, f64), dx: f64, dy: f64) -> (f64, f64) {
