@@ -12,7 +12,7 @@ export PATH := $(CURDIR)/node_modules/.bin:$(CARGO_BIN):$(PATH)
 WASM_BINDGEN_VERSION = $(shell awk '/^name = "wasm-bindgen"$$/ {getline; gsub(/version = |"/, ""); print}' Cargo.lock)
 # Features the Rust wasm32 target emits; wasm-opt must accept them.
 WASM_FEATURES := --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
-                 --enable-mutable-globals --enable-reference-types --enable-multivalue
+                 --enable-mutable-globals --enable-reference-types --enable-multivalue --enable-simd
 
 .PHONY: help setup setup-rust setup-node setup-browser pkg demo serve test test-native \
         test-wasm-node test-wasm-browser test-package test-page bench clean
@@ -78,7 +78,7 @@ test-page: www/pkg setup-browser
 	node --test tests/e2e/
 
 bench: www/pkg
-	cargo bench
+	cargo bench -p kli-bench --bench core -- --warm-up-time 1 --measurement-time 3
 	node bench/batch.mjs
 
 clean:
