@@ -77,9 +77,11 @@ test-package: www/pkg
 test-page: www/pkg setup-browser
 	node --test tests/e2e/
 
-bench: www/pkg
+# Benchmarks, not tests: nothing here is asserted by `make test`.
+bench: www/pkg setup-browser
 	cargo bench -p kli-bench --bench core -- --warm-up-time 1 --measurement-time 3
 	node bench/batch.mjs
+	node bench/page.mjs
 
 clean:
 	cargo clean
