@@ -192,6 +192,33 @@ fn inverse_sqrt_near_one(n: f64) -> f64 {
 /// How far `|q|²` may be from 1 for [`inverse_sqrt_near_one`].
 const NEARLY_UNIT: f64 = 1e-4;
 
+/// The half-angle frame of a pair (module docs) as the fast kernels build it: `d = p - t`,
+/// `s = p + t` for `p` and the target `t` normalised by [`inverse_sqrt_near_one`], their squared
+/// lengths, and whether both inputs were near enough to unit for that.
+struct Frame {
+    d: [f64; 4],
+    s: [f64; 4],
+    dd: f64,
+    ss: f64,
+    nearly_unit: bool,
+}
+
+impl Frame {
+    #[inline(always)]
+    fn new(p: &[f64], r: &[f64], shortest_path: bool) -> Self {
+        // Fixed-size views (the chunks hold 4), so no bounds checks stay in the loop.
+        let (p, r): (&[f64; 4], &[f64; 4]) = (p.try_into().unwrap_or(&[0.0; 4]), r.try_into().unwrap_or(&[0.0; 4]));
+        let dot4 = |a: &[f64; 4], b: &[f64; 4]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+        let (np, nr) = (dot4(p, p), dot4(r, r));
+        let (ip, ir) = (inverse_sqrt_near_one(np), inverse_sqrt_near_one(nr));
+        let ir = if shortest_path && dot4(p, r) < 0.0 { -ir } else { ir };
+        let d = [0, 1, 2, 3].map(|c| p[c] * ip - r[c] * ir);
+        let s = [0, 1, 2, 3].map(|c| p[c] * ip + r[c] * ir);
+        let nearly_unit = ((np - 1.0).abs() <= NEARLY_UNIT) & ((nr - 1.0).abs() <= NEARLY_UNIT);
+        Self { dd: dot4(&d, &d), ss: dot4(&s, &s), d, s, nearly_unit }
+    }
+}
+
 /// The KLI closed form for every pair, assuming each is in the common case (unit inputs up to
 /// rounding, `t ≥ 0`, the target not near `-p`); returns whether all were.
 ///
@@ -202,14 +229,7 @@ fn kli_exact_fast(starts: &[f64], ends: &[f64], t: &[f64], out: &mut [f64], shor
     let mut all = true;
     let pairs = starts.chunks_exact(4).zip(ends.chunks_exact(4)).zip(t).zip(out.chunks_exact_mut(4));
     for (((p, r), &t), q) in pairs {
-        let (np, nr) = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2] + p[3] * p[3], r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3]);
-        let (ip, ir) = (inverse_sqrt_near_one(np), inverse_sqrt_near_one(nr));
-        let dot = p[0] * r[0] + p[1] * r[1] + p[2] * r[2] + p[3] * r[3];
-        let ir = if shortest_path && dot < 0.0 { -ir } else { ir };
-        let d = [0, 1, 2, 3].map(|c| p[c] * ip - r[c] * ir);
-        let s = [0, 1, 2, 3].map(|c| p[c] * ip + r[c] * ir);
-        let dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] + d[3] * d[3];
-        let ss = s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + s[3] * s[3];
+        let Frame { d, s, dd, ss, nearly_unit } = Frame::new(p, r, shortest_path);
         let e = exp_nonpositive(-t);
         let dde = dd * e;
         let half = 0.5 / (ss + dde * e);
@@ -217,7 +237,7 @@ fn kli_exact_fast(starts: &[f64], ends: &[f64], t: &[f64], out: &mut [f64], shor
         for c in 0..4 {
             q[c] = a * s[c] + b * d[c];
         }
-        all &= ((np - 1.0).abs() <= NEARLY_UNIT) & ((nr - 1.0).abs() <= NEARLY_UNIT) & (ss >= FRAME_LIMIT) & (t >= 0.0) & (t <= f64::MAX);
+        all &= nearly_unit & (ss >= FRAME_LIMIT) & (t >= 0.0) & (t <= f64::MAX);
     }
     all
 }
@@ -261,14 +281,7 @@ fn slerp_fast(starts: &[f64], ends: &[f64], sigma: &[f64], out: &mut [f64], shor
     let mut all = true;
     let pairs = starts.chunks_exact(4).zip(ends.chunks_exact(4)).zip(sigma).zip(out.chunks_exact_mut(4));
     for (((p, r), &sigma), q) in pairs {
-        let (np, nr) = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2] + p[3] * p[3], r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3]);
-        let (ip, ir) = (inverse_sqrt_near_one(np), inverse_sqrt_near_one(nr));
-        let dot = p[0] * r[0] + p[1] * r[1] + p[2] * r[2] + p[3] * r[3];
-        let ir = if shortest_path && dot < 0.0 { -ir } else { ir };
-        let d = [0, 1, 2, 3].map(|c| p[c] * ip - r[c] * ir);
-        let s = [0, 1, 2, 3].map(|c| p[c] * ip + r[c] * ir);
-        let dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] + d[3] * d[3];
-        let ss = s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + s[3] * s[3];
+        let Frame { d, s, dd, ss, nearly_unit } = Frame::new(p, r, shortest_path);
         let (dn, sn) = (dd.sqrt(), ss.sqrt());
         let half_angle = atan_unit_interval(dn / sn);
         let (sin, cos) = sin_cos_small((1.0 - 2.0 * sigma) * half_angle);
@@ -277,7 +290,7 @@ fn slerp_fast(starts: &[f64], ends: &[f64], sigma: &[f64], out: &mut [f64], shor
         for c in 0..4 {
             q[c] = a * s[c] + b * d[c];
         }
-        all &= ((np - 1.0).abs() <= NEARLY_UNIT) & ((nr - 1.0).abs() <= NEARLY_UNIT) & (dd <= ss) & (sigma >= 0.0) & (sigma <= 1.0);
+        all &= nearly_unit & (dd <= ss) & (sigma >= 0.0) & (sigma <= 1.0);
     }
     all
 }
@@ -288,16 +301,14 @@ fn nlerp_fast(starts: &[f64], ends: &[f64], s: &[f64], out: &mut [f64]) -> bool 
     let mut all = true;
     let pairs = starts.chunks_exact(4).zip(ends.chunks_exact(4)).zip(s).zip(out.chunks_exact_mut(4));
     for (((p, r), &s), q) in pairs {
-        let (np, nr) = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2] + p[3] * p[3], r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3]);
-        let (ip, ir) = (inverse_sqrt_near_one(np), inverse_sqrt_near_one(nr));
-        let dot = p[0] * r[0] + p[1] * r[1] + p[2] * r[2] + p[3] * r[3];
-        let ir = if dot < 0.0 { -ir } else { ir };
-        let m = [0, 1, 2, 3].map(|c| p[c] * ip + (r[c] * ir - p[c] * ip) * s);
+        // In the frame, p = (s + d)/2 and the target t = (s - d)/2: lerp is s/2 + (1/2 - σ) d.
+        let Frame { d, s: sum, nearly_unit, .. } = Frame::new(p, r, true);
+        let m = [0, 1, 2, 3].map(|c| 0.5 * sum[c] + (0.5 - s) * d[c]);
         let scale = 1.0 / (m[0] * m[0] + m[1] * m[1] + m[2] * m[2] + m[3] * m[3]).sqrt();
         for c in 0..4 {
             q[c] = m[c] * scale;
         }
-        all &= ((np - 1.0).abs() <= NEARLY_UNIT) & ((nr - 1.0).abs() <= NEARLY_UNIT) & s.is_finite();
+        all &= nearly_unit & s.is_finite();
     }
     all
 }
