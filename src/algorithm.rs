@@ -83,7 +83,8 @@ pub fn kli(p: DQuat, r: DQuat, options: &KliOptions) -> Result<KliPath, KliError
         }
         closest = closest.min(distance);
         let next = integrator.step(q, target, step);
-        if !((next.length() - 1.0).abs() < LEFT_SPHERE) {
+        // Written so that a NaN norm counts as having left.
+        if !matches!((next.length() - 1.0).abs().partial_cmp(&LEFT_SPHERE), Some(std::cmp::Ordering::Less)) {
             let time = (n + 1) as f64 * step;
             return Err(KliError::LeftSphere { integrator: integrator.name(), time, norm: next.length() });
         }

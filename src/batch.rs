@@ -11,7 +11,7 @@
 //! q(t) = [(1 - u² + 2 u0 u) s + (2E - 1 + u²) d] / (2 (1 + u²))
 //! ```
 //!
-//! which [`kli_exact_fast`] rewrites without square roots: one `exp` and one division a pair.
+//! which the fast kernel rewrites without square roots: one `exp` and one division a pair.
 //! For SLERP,
 //! with `ψ0 = φ0/2`: `q(σ) = cos((1-2σ) ψ0) s/|s| + sin((1-2σ) ψ0) d/|d|`.
 //!
@@ -162,7 +162,7 @@ pub fn run_batch(kind: BatchKind, starts: &[f64], ends: &[f64], parameters: &[f6
 /// `|r| ≤ ln2/2`, a degree-13 Taylor polynomial (remainder < 4e-18), and `2^k` built from bits.
 #[inline(always)]
 pub(crate) fn exp_nonpositive(x: f64) -> f64 {
-    const LN2_HI: f64 = 6.931_471_803_691_238_2e-1;
+    const LN2_HI: f64 = 6.931_471_803_691_238e-1; // fdlibm: ln 2 with the low 32 bits clear
     const LN2_LO: f64 = 1.908_214_929_270_587_7e-10;
     let x = x.max(-708.0);
     let k = (x * std::f64::consts::LOG2_E).round_ties_even();
@@ -237,7 +237,7 @@ fn kli_exact_fast(starts: &[f64], ends: &[f64], t: &[f64], out: &mut [f64], shor
         for c in 0..4 {
             q[c] = a * s[c] + b * d[c];
         }
-        all &= nearly_unit & (ss >= FRAME_LIMIT) & (t >= 0.0) & (t <= f64::MAX);
+        all &= nearly_unit & (ss >= FRAME_LIMIT) & (0.0..=f64::MAX).contains(&t);
     }
     all
 }
@@ -290,7 +290,7 @@ fn slerp_fast(starts: &[f64], ends: &[f64], sigma: &[f64], out: &mut [f64], shor
         for c in 0..4 {
             q[c] = a * s[c] + b * d[c];
         }
-        all &= nearly_unit & (dd <= ss) & (sigma >= 0.0) & (sigma <= 1.0);
+        all &= nearly_unit & (dd <= ss) & (0.0..=1.0).contains(&sigma);
     }
     all
 }

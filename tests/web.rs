@@ -111,8 +111,8 @@ fn integrated_path_matches_the_closed_form() {
 fn closed_form_values() {
     // tan(φ(t)/2) = tan(π/6) e^-t on the paper's pair, computed here with plain trigonometry.
     let phi0 = std::f64::consts::FRAC_PI_3;
-    for t in [0.0, 0.2, 1.8, 7.0] {
-        let phi = 2.0 * ((phi0 / 2.0).tan() * (-t as f64).exp()).atan();
+    for t in [0.0_f64, 0.2, 1.8, 7.0] {
+        let phi = 2.0 * ((phi0 / 2.0).tan() * (-t).exp()).atan();
         let expected: Vec<f64> = (0..4).map(|i| ((phi).sin() * P[i] + (phi0 - phi).sin() * R[i]) / phi0.sin()).collect();
         let got = api::kli_exact(&quat(&P), &quat(&R), t, None).unwrap().to_vec();
         assert!(close(&got, &expected, 1e-15), "t = {t}");

@@ -408,7 +408,12 @@ function startingForm() {
     if (query.p?.length > 4) showError("p", "p: the URL gives more than 4 numbers.", quaternionInputs("p"));
     if (query.r?.length > 4) showError("r", "r: the URL gives more than 4 numbers.", quaternionInputs("r"));
   }
-  const matches = Object.entries(PRESETS).find(([, preset]) => JSON.stringify(preset) === JSON.stringify(readForm() ?? {}));
+  const fromUrl = readForm();
+  if (fromUrl) {
+    fillAxisAngle("p", fromUrl.p);
+    fillAxisAngle("r", fromUrl.r);
+  }
+  const matches = Object.entries(PRESETS).find(([, preset]) => JSON.stringify(preset) === JSON.stringify(fromUrl ?? {}));
   field("preset").value = matches ? matches[0] : "custom";
 }
 

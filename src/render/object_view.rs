@@ -12,10 +12,17 @@ pub fn object_camera() -> Camera {
     Camera::orbit(35f64.to_radians(), 22f64.to_radians())
 }
 
+/// A face ready to paint: its mean depth, its outline on screen and its shaded colour.
+struct Painted {
+    depth: f64,
+    outline: Vec<(f64, f64)>,
+    color: String,
+}
+
 /// Draws `mesh` rotated by `q` (unit) into `viewport`, and its body axes when `axes` is true.
 pub fn draw_object(pen: &Pen, viewport: &Viewport, camera: &Camera, mesh: &[Face], q: DQuat, axes: bool) {
     let light = (camera.toward_viewer() + DVec3::new(0.0, 0.0, 0.9)).normalize();
-    let mut faces: Vec<(f64, Vec<(f64, f64)>, String)> = mesh
+    let mut faces: Vec<Painted> = mesh
         .iter()
         .map(|face| {
             let turned: Vec<DVec3> = face.vertices.iter().map(|&v| q * v).collect();
@@ -26,19 +33,19 @@ pub fn draw_object(pen: &Pen, viewport: &Viewport, camera: &Camera, mesh: &[Face
             let brightness = 0.45 + 0.55 * n.dot(light).max(0.0);
             let depth = turned.iter().map(|&v| camera.project(v).depth).sum::<f64>() / turned.len() as f64;
             let outline = turned.iter().map(|&v| viewport.pixel(camera.project(v))).collect();
-            (depth, outline, shade(face.color, brightness))
+            Painted { depth, outline, color: shade(face.color, brightness) }
         })
         .collect();
     // Far to near. An insertion sort: a few dozen faces, and it keeps the general-purpose sort
     // (4 KB) out of the module.
     for i in 1..faces.len() {
         let mut j = i;
-        while j > 0 && faces[j - 1].0 > faces[j].0 {
+        while j > 0 && faces[j - 1].depth > faces[j].depth {
             faces.swap(j - 1, j);
             j -= 1;
         }
     }
-    for (_, outline, color) in &faces {
+    for Painted { outline, color, .. } in &faces {
         pen.fill_polygon(outline, color, Some(color));
     }
     if axes {

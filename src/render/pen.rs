@@ -39,6 +39,7 @@ pub fn number(x: f64) -> String {
 
 /// `rgb(…)` of a colour scaled by `light` (1 = as is).
 pub fn shade(color: Rgb, light: f64) -> String {
+    #[allow(clippy::manual_clamp)] // f64::clamp can panic; nothing drawn may
     let [r, g, b] = color.map(|c| (c as f64 * light).round().max(0.0).min(255.0) as u8);
     format!("rgb({r},{g},{b})")
 }

@@ -73,9 +73,10 @@ pub fn plot_area(index: usize, width: f64, height: f64) -> (f64, f64, f64, f64) 
     (col * cell_w + 46.0, row * cell_h + 30.0, (cell_w - 70.0).max(10.0), (cell_h - 58.0).max(10.0))
 }
 
-/// The time axis of every plot ends a little past both `T` and `T*`.
+/// The time axis of every plot ends a little past both `T` and `T*` (and spans at least 1, so
+/// a run that ends at once still gets a readable axis).
 pub fn time_axis_end(scene: &Scene) -> f64 {
-    scene.final_time().max(scene.predicted_time()).max(1e-9) * 1.04
+    scene.final_time().max(scene.predicted_time()).max(1.0) * 1.04
 }
 
 /// Draws the three plots into `(width, height)`; [`draw_plot_cursors`] marks a time on them.

@@ -74,6 +74,7 @@ impl Scene {
     }
 
     /// SLERP's parameter on the same clock: `s = t / T` (constant angular speed), in `[0, 1]`.
+    #[allow(clippy::manual_clamp)] // f64::clamp panics on bad bounds; nothing drawn may panic
     pub fn slerp_parameter(&self, t: f64) -> f64 {
         if self.final_time() > 0.0 { (t / self.final_time()).max(0.0).min(1.0) } else { 1.0 }
     }

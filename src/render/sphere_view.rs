@@ -22,7 +22,10 @@ enum Side {
 }
 
 /// Draws the runs of `points` that lie on `side`.
-fn polyline_on(pen: &Pen, viewport: &Viewport, camera: &Camera, points: &[DVec3], side: Side, color: &str, width: f64, dash: &[f64]) {
+/// `(colour, width, dash)` of a line.
+type Stroke<'a> = (&'a str, f64, &'a [f64]);
+
+fn polyline_on(pen: &Pen, viewport: &Viewport, camera: &Camera, points: &[DVec3], side: Side, (color, width, dash): Stroke) {
     let mut run: Vec<(f64, f64)> = Vec::new();
     for &p in points {
         let projected = camera.project(p);
@@ -70,10 +73,10 @@ pub fn draw_sphere(pen: &Pen, viewport: &Viewport, camera: &Camera, scene: &Scen
     // Behind the sphere, faint.
     pen.alpha(0.35);
     for line in &grid {
-        polyline_on(pen, viewport, camera, line, Side::Back, GRID, 1.0, &[]);
+        polyline_on(pen, viewport, camera, line, Side::Back, (GRID, 1.0, &[]));
     }
-    polyline_on(pen, viewport, camera, scene.slerp_curve(), Side::Back, SLERP, 1.5, &[5.0, 4.0]);
-    polyline_on(pen, viewport, camera, scene.kli_curve(), Side::Back, KLI, 3.0, &[]);
+    polyline_on(pen, viewport, camera, scene.slerp_curve(), Side::Back, (SLERP, 1.5, &[5.0, 4.0]));
+    polyline_on(pen, viewport, camera, scene.kli_curve(), Side::Back, (KLI, 3.0, &[]));
     pen.alpha(1.0);
 
     // The sphere itself, translucent enough to show what lies behind.
@@ -85,7 +88,7 @@ pub fn draw_sphere(pen: &Pen, viewport: &Viewport, camera: &Camera, scene: &Scen
 
     // In front.
     for line in &grid {
-        polyline_on(pen, viewport, camera, line, Side::Front, "#c3ccd5", 1.0, &[]);
+        polyline_on(pen, viewport, camera, line, Side::Front, ("#c3ccd5", 1.0, &[]));
     }
     for (axis, color, label) in [(DVec3::X, AXIS_X, "x"), (DVec3::Y, AXIS_Y, "y"), (DVec3::Z, AXIS_Z, "z")] {
         let alpha = if in_front(axis) { 1.0 } else { 0.35 };
@@ -94,8 +97,8 @@ pub fn draw_sphere(pen: &Pen, viewport: &Viewport, camera: &Camera, scene: &Scen
         pen.text(label, at(axis * 1.2), color, 13.0, "center");
     }
     pen.alpha(1.0);
-    polyline_on(pen, viewport, camera, scene.kli_curve(), Side::Front, KLI, 3.5, &[]);
-    polyline_on(pen, viewport, camera, scene.slerp_curve(), Side::Front, SLERP, 1.5, &[5.0, 4.0]);
+    polyline_on(pen, viewport, camera, scene.kli_curve(), Side::Front, (KLI, 3.5, &[]));
+    polyline_on(pen, viewport, camera, scene.slerp_curve(), Side::Front, (SLERP, 1.5, &[5.0, 4.0]));
 
     for (&k, &s) in kli_moments.iter().zip(&slerp_moments) {
         pen.alpha(if in_front(s) { 1.0 } else { 0.4 });

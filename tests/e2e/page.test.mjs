@@ -149,6 +149,8 @@ test("a URL with parameters reproduces its state", async () => {
   assert.deepEqual(await Promise.all(["p-w", "p-x", "r-w", "r-x", "eps", "step"].map((n) => page.inputValue(`[name=${n}]`))), ["1", "0", "0", "1", "1e-4", "0.02"]);
   assert.equal(await page.inputValue("[name=integrator]"), "geodesic");
   assert.equal(await page.isChecked("[name=shortest]"), false);
+  // The axis–angle fields follow the URL's quaternions: r = i is a half turn about x.
+  assert.deepEqual(await Promise.all(["r-ax", "r-ay", "r-az", "r-angle"].map((n) => page.inputValue(`[name=${n}]`))), ["1", "0", "0", "180"]);
   assert.equal(await currentTime(page), 0.5);
   // p·r = 0, φ0 = π/2: T* = ln(tan(π/4)/tan(arcsin(ε/2))), T the first multiple of δ past it.
   const star = Math.log(1 / Math.tan(Math.asin(5e-5)));
