@@ -5,7 +5,7 @@
 export const PRESETS = {
   paper: { p: [0, 0, 0, 1], r: [0.5, 0.5, 0.5, 0.5], eps: 1e-5, step: 0.01, integrator: "rk4", shortest: true },
   antipodal: { p: [0, 0, 0, 1], r: [0, 0, 0, -1], eps: 1e-5, step: 0.01, integrator: "rk4", shortest: true },
-  "long-way": { p: [1, 0, 0, 0], r: [-0.995, 0.0998, 0, 0], eps: 1e-5, step: 0.01, integrator: "rk4", shortest: false },
+  "long-way": { p: [1, 0, 0, 0], r: [-0.995, 0, 0, 0.0998], eps: 1e-5, step: 0.01, integrator: "rk4", shortest: false },
   "near-identical": { p: [0, 0, 0, 1], r: [0.001, 0, 0, 1], eps: 1e-5, step: 0.01, integrator: "rk4", shortest: true },
 };
 
