@@ -317,7 +317,8 @@ function observeSizes() {
       sizes[name] = { width, height };
       canvas.width = Math.max(1, Math.round(width * ratio));
       canvas.height = Math.max(1, Math.round(height * ratio));
-      if (name === "filmstrip") drawFilmstrip();
+      // The filmstrip is still: it can wait one task, after the first frame of the live views.
+      if (name === "filmstrip") setTimeout(drawFilmstrip);
     }
     // Draw now, in the same rendering update as the layout that sized the canvases, rather than
     // a frame later: the first view appears one frame sooner and a resize never shows blank.
@@ -444,8 +445,11 @@ async function start() {
   if (Number.isFinite(query.t)) setTime(query.t);
   else if (!reducedMotion()) play();
   describeFrame();
+  // Offline support is registered once the page has settled, not on the way to the first frame.
   if ("serviceWorker" in navigator && location.protocol !== "file:") {
-    navigator.serviceWorker.register("sw.js").catch(() => {});
+    const register = () => setTimeout(() => navigator.serviceWorker.register("sw.js").catch(() => {}));
+    if (document.readyState === "complete") register();
+    else addEventListener("load", register, { once: true });
   }
 }
 
