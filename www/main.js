@@ -136,8 +136,7 @@ function apply(candidate) {
 
 function describeRun() {
   const notes = [];
-  const target = demo.target;
-  const flipped = state.r.some((c, i) => Math.sign(c) !== 0 && Math.sign(c) === -Math.sign(target[i]));
+  const flipped = state.shortest && state.p.reduce((sum, c, i) => sum + c * state.r[i], 0) < 0;
   if (demo.finalTime === 0) notes.push("p is already within ε of the target: nothing to interpolate (r = −p is the same rotation as p).");
   else if (flipped) notes.push("p·r < 0, so the flow goes to −r: the same rotation, by the shorter arc.");
   if (!state.shortest && demo.finalTime > 0) notes.push("Shortest path is off: the flow goes to r itself, possibly the long way round.");
