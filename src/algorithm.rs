@@ -68,7 +68,8 @@ pub fn kli(p: DQuat, r: DQuat, options: &KliOptions) -> Result<KliPath, KliError
     // n δ ≤ max_time, forgiving the rounding of max_time / step.
     let steps_allowed = (max_time / step * (1.0 + 4.0 * f64::EPSILON)).floor();
     let last = steps_allowed.min((MAX_SAMPLES - 1) as f64) as usize;
-    let expected = (closed_form::reach_time(&arc, tolerance) / step).ceil() as usize + 2;
+    let predicted = closed_form::reach_time(&arc, tolerance);
+    let expected = (predicted / step).ceil() as usize + 2;
     let capacity = expected.min(last + 1);
     let (mut times, mut quaternions) = (Vec::with_capacity(capacity), Vec::with_capacity(capacity));
 
@@ -101,12 +102,7 @@ pub fn kli(p: DQuat, r: DQuat, options: &KliOptions) -> Result<KliPath, KliError
     if quaternions.len() == last + 1 && steps_allowed > last as f64 {
         Err(KliError::TooManySteps { steps: steps_allowed, limit: MAX_SAMPLES - 1 })
     } else {
-        Err(KliError::NotReached {
-            tolerance,
-            max_time,
-            closest,
-            predicted: closed_form::reach_time(&arc, tolerance),
-        })
+        Err(KliError::NotReached { tolerance, max_time, closest, predicted })
     }
 }
 

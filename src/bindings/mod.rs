@@ -88,31 +88,33 @@ fn invalid(name: &str, problem: String) -> KliError {
     KliError::InvalidArgument { name: name.into(), problem }
 }
 
-/// Reads 4 numbers from an Array or typed array and normalises them.
-pub(crate) fn quaternion(name: &'static str, value: &JsValue) -> Result<DQuat, KliError> {
-    let expected = || format!("must be an array of 4 numbers [w, x, y, z] (got {})", describe(value));
-    let mut wxyz = [0.0; 4];
+/// Reads exactly `N` numbers from an Array or typed array; `shape` names them in messages,
+/// e.g. "[w, x, y, z]".
+fn numbers<const N: usize>(name: &str, value: &JsValue, shape: &str) -> Result<[f64; N], KliError> {
+    let mut out = [0.0; N];
     if let Some(array) = value.dyn_ref::<Float64Array>() {
-        if array.length() != 4 {
-            return Err(invalid(name, format!("must hold 4 numbers [w, x, y, z] (got {})", array.length())));
+        if array.length() as usize != N {
+            return Err(invalid(name, format!("must hold {N} numbers {shape} (got {})", array.length())));
         }
-        array.copy_to(&mut wxyz);
-    } else {
-        if !value.is_object() {
-            return Err(invalid(name, expected()));
-        }
-        let length = Reflect::get(value, &"length".into()).ok().and_then(|l| l.as_f64());
-        if length != Some(4.0) {
-            return Err(invalid(name, expected()));
-        }
-        for (i, slot) in wxyz.iter_mut().enumerate() {
-            let element = Reflect::get_u32(value, i as u32).unwrap_or(JsValue::UNDEFINED);
-            *slot = element.as_f64().ok_or_else(|| {
-                invalid(name, format!("must hold 4 numbers [w, x, y, z]: element {i} is {}", describe(&element)))
-            })?;
-        }
+        array.copy_to(&mut out);
+        return Ok(out);
     }
-    crate::quaternion::unit(name, from_wxyz(wxyz))
+    let length = if value.is_object() { Reflect::get(value, &"length".into()).ok().and_then(|l| l.as_f64()) } else { None };
+    if length != Some(N as f64) {
+        return Err(invalid(name, format!("must be an array of {N} numbers {shape} (got {})", describe(value))));
+    }
+    for (i, slot) in out.iter_mut().enumerate() {
+        let element = Reflect::get_u32(value, i as u32).unwrap_or(JsValue::UNDEFINED);
+        *slot = element
+            .as_f64()
+            .ok_or_else(|| invalid(name, format!("must hold {N} numbers {shape}: element {i} is {}", describe(&element))))?;
+    }
+    Ok(out)
+}
+
+/// Reads a quaternion `[w, x, y, z]` and normalises it.
+pub(crate) fn quaternion(name: &'static str, value: &JsValue) -> Result<DQuat, KliError> {
+    crate::quaternion::unit(name, from_wxyz(numbers(name, value, "[w, x, y, z]")?))
 }
 
 fn to_array(q: DQuat) -> Vec<f64> {
@@ -282,19 +284,7 @@ pub fn axis_angle(q: &QuaternionLike) -> Result<Vec<f64>, JsError> {
 /// The unit quaternion [w, x, y, z] of a rotation by `angle` radians about `axis` ([x, y, z]).
 #[wasm_bindgen(js_name = fromAxisAngle)]
 pub fn from_axis_angle(axis: &Vector3Like, angle: f64) -> Result<Vec<f64>, JsError> {
-    let axis = vector3("axis", axis).map_err(error)?;
+    let axis = DVec3::from_array(numbers("axis", axis, "[x, y, z]").map_err(error)?);
     crate::from_axis_angle(axis, angle).map(to_array).map_err(error)
 }
 
-fn vector3(name: &str, value: &JsValue) -> Result<DVec3, KliError> {
-    let expected = || invalid(name, format!("must be an array of 3 numbers [x, y, z] (got {})", describe(value)));
-    if !value.is_object() || Reflect::get(value, &"length".into()).ok().and_then(|l| l.as_f64()) != Some(3.0) {
-        return Err(expected());
-    }
-    let mut xyz = [0.0; 3];
-    for (i, slot) in xyz.iter_mut().enumerate() {
-        let element = Reflect::get_u32(value, i as u32).unwrap_or(JsValue::UNDEFINED);
-        *slot = element.as_f64().ok_or_else(expected)?;
-    }
-    Ok(DVec3::from_array(xyz))
-}
