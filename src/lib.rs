@@ -40,6 +40,7 @@ pub mod error;
 pub mod great_arc;
 pub mod hopf;
 pub mod integrator;
+mod lanes;
 pub mod algorithm;
 pub mod model;
 pub mod quaternion;
