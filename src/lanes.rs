@@ -1,6 +1,6 @@
 //! Two `f64` lanes, so the batch kernels handle two pairs per step: wasm SIMD (`f64x2`) on
-//! wasm32 built with `simd128`, a plain `[f64; 2]` everywhere else (which native compilers
-//! vectorise on their own). One kernel source serves both.
+//! wasm32 built with `simd128`, SSE2 (`__m128d`, part of every x86-64) natively there, and a
+//! plain `[f64; 2]` elsewhere. One kernel source serves all three.
 
 use std::ops::{Add, BitAnd, Div, Mul, Neg, Sub};
 
@@ -93,7 +93,121 @@ mod imp {
     }
 }
 
-#[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+#[cfg(target_arch = "x86_64")]
+mod imp {
+    use core::arch::x86_64::*;
+
+    #[derive(Clone, Copy)]
+    pub struct Lanes(pub __m128d);
+    #[derive(Clone, Copy)]
+    pub struct Mask(pub __m128d);
+
+    impl Lanes {
+        #[inline(always)]
+        pub fn new(a: f64, b: f64) -> Self {
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            unsafe { Self(_mm_set_pd(b, a)) }
+        }
+        #[inline(always)]
+        pub fn to_array(self) -> [f64; 2] {
+            let mut out = [0.0; 2];
+            // SAFETY: `out` holds two f64; storeu has no alignment requirement.
+            unsafe { _mm_storeu_pd(out.as_mut_ptr(), self.0) };
+            out
+        }
+        #[inline(always)]
+        pub fn add(self, o: Self) -> Self {
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            unsafe { Self(_mm_add_pd(self.0, o.0)) }
+        }
+        #[inline(always)]
+        pub fn sub(self, o: Self) -> Self {
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            unsafe { Self(_mm_sub_pd(self.0, o.0)) }
+        }
+        #[inline(always)]
+        pub fn mul(self, o: Self) -> Self {
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            unsafe { Self(_mm_mul_pd(self.0, o.0)) }
+        }
+        #[inline(always)]
+        pub fn div(self, o: Self) -> Self {
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            unsafe { Self(_mm_div_pd(self.0, o.0)) }
+        }
+        #[inline(always)]
+        pub fn neg(self) -> Self {
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            unsafe { Self(_mm_xor_pd(self.0, _mm_set1_pd(-0.0))) }
+        }
+        #[inline(always)]
+        pub fn abs(self) -> Self {
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            unsafe { Self(_mm_andnot_pd(_mm_set1_pd(-0.0), self.0)) }
+        }
+        #[inline(always)]
+        pub fn sqrt(self) -> Self {
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            unsafe { Self(_mm_sqrt_pd(self.0)) }
+        }
+        #[inline(always)]
+        pub fn max(self, o: Self) -> Self {
+            // As wasm's pmax: `o` when `self < o`, else `self`.
+            Self::select(self.lt(o), o, self)
+        }
+        /// For `|x| < 2^51`, which is all the kernels need: adding and removing 1.5·2^52 rounds
+        /// to an integer, ties to even (SSE4.1's round is not part of the x86-64 baseline).
+        #[inline(always)]
+        pub fn round_ties_even(self) -> Self {
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            let shift = unsafe { _mm_set1_pd(6_755_399_441_055_744.0) };
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            unsafe { Self(_mm_sub_pd(_mm_add_pd(self.0, shift), shift)) }
+        }
+        #[inline(always)]
+        pub fn le(self, o: Self) -> Mask {
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            unsafe { Mask(_mm_cmple_pd(self.0, o.0)) }
+        }
+        #[inline(always)]
+        pub fn lt(self, o: Self) -> Mask {
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            unsafe { Mask(_mm_cmplt_pd(self.0, o.0)) }
+        }
+        #[inline(always)]
+        pub fn select(mask: Mask, yes: Self, no: Self) -> Self {
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            unsafe { Self(_mm_or_pd(_mm_and_pd(mask.0, yes.0), _mm_andnot_pd(mask.0, no.0))) }
+        }
+        #[inline(always)]
+        pub fn bits_sub_shl52(self, o: u64) -> Self {
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            let bits = unsafe { _mm_castpd_si128(self.0) };
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            unsafe { Self(_mm_castsi128_pd(_mm_slli_epi64::<52>(_mm_sub_epi64(bits, _mm_set1_epi64x(o as i64))))) }
+        }
+    }
+
+    impl Mask {
+        #[inline(always)]
+        pub fn and(self, o: Self) -> Self {
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            unsafe { Self(_mm_and_pd(self.0, o.0)) }
+        }
+        #[inline(always)]
+        pub fn all(self) -> bool {
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            unsafe { _mm_movemask_pd(self.0) == 0b11 }
+        }
+        #[inline(always)]
+        pub fn splat(value: bool) -> Self {
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            unsafe { Self(_mm_castsi128_pd(_mm_set1_epi64x(if value { -1 } else { 0 }))) }
+        }
+    }
+}
+
+#[cfg(not(any(all(target_arch = "wasm32", target_feature = "simd128"), target_arch = "x86_64")))]
 mod imp {
     #[derive(Clone, Copy)]
     pub struct Lanes(pub [f64; 2]);
