@@ -110,7 +110,7 @@ pub fn draw_plots(pen: &Pen, width: f64, height: f64, scene: &Scene) {
     let panel = cell(1, x_max, 0.0, 1.0);
     let ticks: Vec<(f64, String)> = [0.0, 0.25, 0.5, 0.75, 1.0].iter().map(|&y| (y, trim(y))).collect();
     panel.frame(pen, "SLERP parameter s(t)", &ticks);
-    panel.series(pen, times, times.iter().map(|&x| if final_time > 0.0 { x / final_time } else { 1.0 }), SLERP, 1.5, &[5.0, 4.0]);
+    panel.series(pen, times, times.iter().map(|&x| scene.slerp_parameter(x)), SLERP, 1.5, &[5.0, 4.0]);
     panel.series(pen, times, scene.warp().iter().copied(), KLI, 2.0, &[]);
     pen.text("KLI", panel.at(x_max * 0.08, 0.93), KLI, 11.0, "left");
     pen.text("SLERP, s = t/T", panel.at(x_max * 0.55, 0.3), SLERP, 11.0, "left");

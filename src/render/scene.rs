@@ -30,21 +30,17 @@ impl Scene {
         let target = path.target();
         let predicted_time = closed_form::reach_time(&arc, path.options().tolerance);
         let quaternions = path.quaternions();
-        let final_time = path.final_time();
-        let slerp_curve = path
-            .times()
-            .iter()
-            .map(|&t| hopf(slerp::point_at(&arc, if final_time > 0.0 { t / final_time } else { 1.0 })))
-            .collect();
-        Self {
+        let mut scene = Self {
             predicted_time,
             kli_curve: quaternions.iter().map(|&q| hopf(q.normalize())).collect(),
-            slerp_curve,
+            slerp_curve: Vec::new(),
             distances: quaternions.iter().map(|&q| (target - q).length()).collect(),
             norm_drift: quaternions.iter().map(|&q| (q.length() - 1.0).abs()).collect(),
             warp: path.times().iter().map(|&t| closed_form::time_warp(&arc, t)).collect(),
             path,
-        }
+        };
+        scene.slerp_curve = scene.path.times().iter().map(|&t| hopf(scene.slerp_at(t))).collect();
+        scene
     }
 
     pub fn path(&self) -> &KliPath {
