@@ -18,8 +18,11 @@ fn main() {
     let (p, r) = (from_wxyz([0.0, 0.0, 0.0, 1.0]), from_wxyz([0.5; 4]));
     println!("paper's example, ε = 1e-5, δ = 0.01:");
     for integrator in Integrator::ALL {
-        let (t, error, drift) = deviation(p, r, &KliOptions { integrator, ..Default::default() }).unwrap();
-        println!("  {integrator:9} T = {t:<6} max|q - exact| = {error:.1e}  max||q| - 1| = {drift:.1e}");
+        let (t, error, drift) =
+            deviation(p, r, &KliOptions { integrator, ..Default::default() }).unwrap();
+        println!(
+            "  {integrator:9} T = {t:<6} max|q - exact| = {error:.1e}  max||q| - 1| = {drift:.1e}"
+        );
     }
 
     // xorshift: a fixed, dependency-free sequence of pairs.
@@ -48,7 +51,9 @@ fn main() {
                 }
             }
             let way = if shortest_path { "short way" } else { "long way " };
-            println!("  {integrator:9} {way} max|q - exact| = {error:.1e}  max||q| - 1| = {drift:.1e}  refused {refused}");
+            println!(
+                "  {integrator:9} {way} max|q - exact| = {error:.1e}  max||q| - 1| = {drift:.1e}  refused {refused}"
+            );
         }
     }
 }

@@ -35,7 +35,13 @@ pub struct KliOptions {
 
 impl Default for KliOptions {
     fn default() -> Self {
-        Self { tolerance: 1e-5, step: 0.01, max_time: 100.0, integrator: Integrator::Rk4, shortest_path: true }
+        Self {
+            tolerance: 1e-5,
+            step: 0.01,
+            max_time: 100.0,
+            integrator: Integrator::Rk4,
+            shortest_path: true,
+        }
     }
 }
 
@@ -85,9 +91,16 @@ pub fn kli(p: DQuat, r: DQuat, options: &KliOptions) -> Result<KliPath, KliError
         closest = closest.min(distance);
         let next = integrator.step(q, target, step);
         // Written so that a NaN norm counts as having left.
-        if !matches!((next.length() - 1.0).abs().partial_cmp(&LEFT_SPHERE), Some(std::cmp::Ordering::Less)) {
+        if !matches!(
+            (next.length() - 1.0).abs().partial_cmp(&LEFT_SPHERE),
+            Some(std::cmp::Ordering::Less)
+        ) {
             let time = (n + 1) as f64 * step;
-            return Err(KliError::LeftSphere { integrator: integrator.name(), time, norm: next.length() });
+            return Err(KliError::LeftSphere {
+                integrator: integrator.name(),
+                time,
+                norm: next.length(),
+            });
         }
         if next == q {
             // Stuck: at the antipode (a numerical equilibrium), or at the target closer than
@@ -181,7 +194,8 @@ mod tests {
             assert_eq!(path.steps(), 1166, "{integrator}");
         }
         // Euler's first-order timing error moves T by a few steps (its own error, not the model's).
-        let euler = kli(p, r, &KliOptions { integrator: Integrator::Euler, ..Default::default() }).unwrap();
+        let euler =
+            kli(p, r, &KliOptions { integrator: Integrator::Euler, ..Default::default() }).unwrap();
         assert!((euler.final_time() - 11.6568).abs() < 0.1, "{}", euler.final_time());
     }
 

@@ -27,7 +27,11 @@ pub fn axis_angle(q: DQuat) -> Result<(DVec3, f64), KliError> {
 /// The unit quaternion `cos(θ/2) + U sin(θ/2)` of a rotation by `angle` about `axis` (normalised).
 pub fn from_axis_angle(axis: DVec3, angle: f64) -> Result<DQuat, KliError> {
     if !angle.is_finite() {
-        return Err(KliError::InvalidNumber { name: "angle".into(), value: angle, requirement: "a finite number" });
+        return Err(KliError::InvalidNumber {
+            name: "angle".into(),
+            value: angle,
+            requirement: "a finite number",
+        });
     }
     if !axis.is_finite() || axis == DVec3::ZERO {
         let problem = match axis.to_array().iter().position(|c| !c.is_finite()) {
@@ -76,7 +80,11 @@ mod tests {
         let (axis, angle) = axis_angle(q).unwrap();
         assert!((axis - DVec3::new(1.0, -2.0, 2.0) / 3.0).length() < 1e-15);
         assert!((angle - 1.1).abs() < 1e-15);
-        assert!((from_axis_angle(DVec3::Y, FRAC_PI_2).unwrap() - DQuat::from_rotation_y(FRAC_PI_2)).length() < 1e-16);
+        assert!(
+            (from_axis_angle(DVec3::Y, FRAC_PI_2).unwrap() - DQuat::from_rotation_y(FRAC_PI_2))
+                .length()
+                < 1e-16
+        );
     }
 
     #[test]

@@ -22,8 +22,8 @@ use glam::DQuat;
 
 use crate::closed_form::point_from_half_angle_tan;
 use crate::error::KliError;
-use crate::lanes::{Lanes, Mask};
 use crate::great_arc::GreatArc;
+use crate::lanes::{Lanes, Mask};
 use crate::quaternion::{from_wxyz, unit};
 use crate::slerp;
 
@@ -53,7 +53,13 @@ fn write(out: &mut [f64], i: usize, q: DQuat) {
 }
 
 /// Checks that `starts`, `ends` and `out` hold `4·n` numbers for the `n` parameters.
-pub fn check_lengths(starts: usize, ends: usize, parameters: usize, out: usize, parameter_name: &str) -> Result<(), KliError> {
+pub fn check_lengths(
+    starts: usize,
+    ends: usize,
+    parameters: usize,
+    out: usize,
+    parameter_name: &str,
+) -> Result<(), KliError> {
     let expected = 4 * parameters;
     for (name, length) in [("starts", starts), ("ends", ends), ("out", out)] {
         if length != expected {
@@ -69,13 +75,22 @@ pub fn check_lengths(starts: usize, ends: usize, parameters: usize, out: usize, 
 }
 
 /// The arc of pair `i`; errors name the pair by `first + i`, its index in the caller's arrays.
-fn arc(starts: &[f64], ends: &[f64], i: usize, first: usize, shortest_path: bool) -> Result<GreatArc, KliError> {
+fn arc(
+    starts: &[f64],
+    ends: &[f64],
+    i: usize,
+    first: usize,
+    shortest_path: bool,
+) -> Result<GreatArc, KliError> {
     let p = read_unit(starts, i, first, "starts")?;
     let r = read_unit(ends, i, first, "ends")?;
     GreatArc::new(p, r, shortest_path).map_err(|e| match e {
         KliError::Antipodal => KliError::InvalidArgument {
             name: format!("starts[{}]", first + i),
-            problem: format!("and ends[{}] are antipodal and shortestPath is false: no path is determined", first + i),
+            problem: format!(
+                "and ends[{}] are antipodal and shortestPath is false: no path is determined",
+                first + i
+            ),
         },
         other => other,
     })
@@ -102,7 +117,15 @@ impl BatchKind {
 
 /// Runs `kind` over pairs `first .. first + parameters.len()` of the caller's arrays, given here
 /// as the matching slices. On an error the pairs before the bad one are already written.
-pub fn run_batch(kind: BatchKind, starts: &[f64], ends: &[f64], parameters: &[f64], out: &mut [f64], first: usize, shortest_path: bool) -> Result<(), KliError> {
+pub fn run_batch(
+    kind: BatchKind,
+    starts: &[f64],
+    ends: &[f64],
+    parameters: &[f64],
+    out: &mut [f64],
+    first: usize,
+    shortest_path: bool,
+) -> Result<(), KliError> {
     check_lengths(starts.len(), ends.len(), parameters.len(), out.len(), kind.parameter_name())?;
     // The common case first, branch-free so the compiler can pipeline and vectorise it; if any
     // pair falls outside it (bad input, extreme magnitudes, a target near -p), the general loop
@@ -118,8 +141,16 @@ pub fn run_batch(kind: BatchKind, starts: &[f64], ends: &[f64], parameters: &[f6
     for (i, &x) in parameters.iter().enumerate() {
         let valid = x.is_finite() && (kind != BatchKind::KliExact || x >= 0.0);
         if !valid {
-            let requirement = if kind == BatchKind::KliExact { "a finite number ≥ 0" } else { "a finite number" };
-            return Err(KliError::InvalidNumber { name: format!("{}[{}]", kind.parameter_name(), first + i), value: x, requirement });
+            let requirement = if kind == BatchKind::KliExact {
+                "a finite number ≥ 0"
+            } else {
+                "a finite number"
+            };
+            return Err(KliError::InvalidNumber {
+                name: format!("{}[{}]", kind.parameter_name(), first + i),
+                value: x,
+                requirement,
+            });
         }
         let q = match kind {
             BatchKind::Slerp | BatchKind::KliExact => {
@@ -164,7 +195,8 @@ pub fn run_batch(kind: BatchKind, starts: &[f64], ends: &[f64], parameters: &[f6
 #[inline(always)]
 fn inverse_sqrt_near_one(n: Lanes) -> Lanes {
     let e = n - Lanes::splat(1.0);
-    Lanes::splat(1.0) + e * (Lanes::splat(-0.5) + e * (Lanes::splat(0.375) - Lanes::splat(0.3125) * e))
+    Lanes::splat(1.0)
+        + e * (Lanes::splat(-0.5) + e * (Lanes::splat(0.375) - Lanes::splat(0.3125) * e))
 }
 
 /// How far `|q|²` may be from 1 for [`inverse_sqrt_near_one`].
@@ -194,11 +226,16 @@ impl Frame {
     fn new(p: &Quat2, r: &Quat2, shortest_path: bool) -> Self {
         let (np, nr) = (dot4(p, p), dot4(r, r));
         let (ip, ir) = (inverse_sqrt_near_one(np), inverse_sqrt_near_one(nr));
-        let ir = if shortest_path { Lanes::select(dot4(p, r).lt(Lanes::splat(0.0)), -ir, ir) } else { ir };
+        let ir = if shortest_path {
+            Lanes::select(dot4(p, r).lt(Lanes::splat(0.0)), -ir, ir)
+        } else {
+            ir
+        };
         let d = [0, 1, 2, 3].map(|c| p[c] * ip - r[c] * ir);
         let s = [0, 1, 2, 3].map(|c| p[c] * ip + r[c] * ir);
         let limit = Lanes::splat(NEARLY_UNIT);
-        let nearly_unit = (np - Lanes::splat(1.0)).abs().le(limit) & (nr - Lanes::splat(1.0)).abs().le(limit);
+        let nearly_unit =
+            (np - Lanes::splat(1.0)).abs().le(limit) & (nr - Lanes::splat(1.0)).abs().le(limit);
         Self { dd: dot4(&d, &d), ss: dot4(&s, &s), d, s, nearly_unit }
     }
 }
@@ -226,8 +263,10 @@ fn two_pairs_at_a_time(
             }
         }
     };
-    let (starts2, ends2, parameters2) = (starts.chunks_exact(8), ends.chunks_exact(8), parameters.chunks_exact(2));
-    let (start_rest, end_rest, parameter_rest) = (starts2.remainder(), ends2.remainder(), parameters2.remainder());
+    let (starts2, ends2, parameters2) =
+        (starts.chunks_exact(8), ends.chunks_exact(8), parameters.chunks_exact(2));
+    let (start_rest, end_rest, parameter_rest) =
+        (starts2.remainder(), ends2.remainder(), parameters2.remainder());
     let mut out2 = out.chunks_exact_mut(8);
     for (((p, r), x), q) in starts2.zip(ends2).zip(parameters2).zip(&mut out2) {
         run(&p[..4], &p[4..], &r[..4], &r[4..], Lanes::new(x[0], x[1]), q);
@@ -244,7 +283,13 @@ fn two_pairs_at_a_time(
 /// In the half-angle frame (module docs) with `dd = |d|²`, `ss = |s|²`, `E = e^(-t)` and
 /// `u = tan(φ/2) = (|d|/|s|) E`, multiplying through by `ss` removes every square root:
 /// `q = [(ss - dd E² + 2 dd E) s + (2E ss - ss + dd E²) d] / (2 (ss + dd E²))`.
-fn kli_exact_fast(starts: &[f64], ends: &[f64], t: &[f64], out: &mut [f64], shortest_path: bool) -> bool {
+fn kli_exact_fast(
+    starts: &[f64],
+    ends: &[f64],
+    t: &[f64],
+    out: &mut [f64],
+    shortest_path: bool,
+) -> bool {
     two_pairs_at_a_time(starts, ends, t, out, |p, r, t| {
         let Frame { d, s, dd, ss, nearly_unit } = Frame::new(p, r, shortest_path);
         let e = (-t).exp_nonpositive();
@@ -254,7 +299,13 @@ fn kli_exact_fast(starts: &[f64], ends: &[f64], t: &[f64], out: &mut [f64], shor
         let b = (Lanes::splat(2.0) * e * ss - ss + dde * e) * half;
         let q = [0, 1, 2, 3].map(|c| a * s[c] + b * d[c]);
         let zero = Lanes::splat(0.0);
-        (q, nearly_unit & Lanes::splat(FRAME_LIMIT).le(ss) & zero.le(t) & t.le(Lanes::splat(f64::MAX)))
+        (
+            q,
+            nearly_unit
+                & Lanes::splat(FRAME_LIMIT).le(ss)
+                & zero.le(t)
+                & t.le(Lanes::splat(f64::MAX)),
+        )
     })
 }
 
@@ -264,8 +315,18 @@ fn kli_exact_fast(starts: &[f64], ends: &[f64], t: &[f64], out: &mut [f64], shor
 #[inline(always)]
 fn atan_unit_interval(u: Lanes) -> Lanes {
     const C: [f64; 12] = [
-        1.0, -1.0 / 3.0, 1.0 / 5.0, -1.0 / 7.0, 1.0 / 9.0, -1.0 / 11.0, 1.0 / 13.0, -1.0 / 15.0, 1.0 / 17.0,
-        -1.0 / 19.0, 1.0 / 21.0, -1.0 / 23.0,
+        1.0,
+        -1.0 / 3.0,
+        1.0 / 5.0,
+        -1.0 / 7.0,
+        1.0 / 9.0,
+        -1.0 / 11.0,
+        1.0 / 13.0,
+        -1.0 / 15.0,
+        1.0 / 17.0,
+        -1.0 / 19.0,
+        1.0 / 21.0,
+        -1.0 / 23.0,
     ];
     // Both halvings at once, with one division: for a = √(1 + u²), the second step of
     // v = u / (1 + a) is w = u / (1 + a + √((1 + a)² + u²)).
@@ -278,7 +339,9 @@ fn atan_unit_interval(u: Lanes) -> Lanes {
     let z = w * w;
     let (z2, pairs) = (z * z, [0, 1, 2, 3, 4, 5].map(|k| c[2 * k] + c[2 * k + 1] * z));
     let z4 = z2 * z2;
-    let series = (pairs[0] + pairs[1] * z2) + (pairs[2] + pairs[3] * z2) * z4 + (pairs[4] + pairs[5] * z2) * (z4 * z4);
+    let series = (pairs[0] + pairs[1] * z2)
+        + (pairs[2] + pairs[3] * z2) * z4
+        + (pairs[4] + pairs[5] * z2) * (z4 * z4);
     Lanes::splat(4.0) * w * series
 }
 
@@ -287,12 +350,26 @@ fn atan_unit_interval(u: Lanes) -> Lanes {
 #[inline(always)]
 fn sin_cos_small(x: Lanes) -> (Lanes, Lanes) {
     const SIN: [f64; 9] = [
-        1.0, -1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362_880.0, -1.0 / 39_916_800.0, 1.0 / 6_227_020_800.0,
-        -1.0 / 1_307_674_368_000.0, 1.0 / 355_687_428_096_000.0,
+        1.0,
+        -1.0 / 6.0,
+        1.0 / 120.0,
+        -1.0 / 5040.0,
+        1.0 / 362_880.0,
+        -1.0 / 39_916_800.0,
+        1.0 / 6_227_020_800.0,
+        -1.0 / 1_307_674_368_000.0,
+        1.0 / 355_687_428_096_000.0,
     ];
     const COS: [f64; 9] = [
-        1.0, -0.5, 1.0 / 24.0, -1.0 / 720.0, 1.0 / 40_320.0, -1.0 / 3_628_800.0, 1.0 / 479_001_600.0,
-        -1.0 / 87_178_291_200.0, 1.0 / 20_922_789_888_000.0,
+        1.0,
+        -0.5,
+        1.0 / 24.0,
+        -1.0 / 720.0,
+        1.0 / 40_320.0,
+        -1.0 / 3_628_800.0,
+        1.0 / 479_001_600.0,
+        -1.0 / 87_178_291_200.0,
+        1.0 / 20_922_789_888_000.0,
     ];
     let y = x * x;
     let (y2, y4) = (y * y, y * y * (y * y));
@@ -307,7 +384,13 @@ fn sin_cos_small(x: Lanes) -> (Lanes, Lanes) {
 /// SLERP for every pair in the common case (unit inputs up to rounding, `σ ∈ [0, 1]`, the
 /// target within 90° of `p` in R⁴); returns whether all were. In the half-angle frame,
 /// `q = cos((1-2σ) ψ0) s/|s| + sin((1-2σ) ψ0) d/|d|` with `ψ0 = atan(|d|/|s|) ≤ π/4`.
-fn slerp_fast(starts: &[f64], ends: &[f64], sigma: &[f64], out: &mut [f64], shortest_path: bool) -> bool {
+fn slerp_fast(
+    starts: &[f64],
+    ends: &[f64],
+    sigma: &[f64],
+    out: &mut [f64],
+    shortest_path: bool,
+) -> bool {
     two_pairs_at_a_time(starts, ends, sigma, out, |p, r, sigma| {
         let Frame { d, s, dd, ss, nearly_unit } = Frame::new(p, r, shortest_path);
         // One division for 1/|s|, 1/|d| and |d|/|s|. When p = t exactly, |d| is floored so the
@@ -315,7 +398,8 @@ fn slerp_fast(starts: &[f64], ends: &[f64], sigma: &[f64], out: &mut [f64], shor
         let (dn, sn) = (dd.sqrt().max(Lanes::splat(f64::MIN_POSITIVE)), ss.sqrt());
         let inverse = Lanes::splat(1.0) / (dn * sn);
         let half_angle = atan_unit_interval(dd * inverse);
-        let (sin, cos) = sin_cos_small((Lanes::splat(1.0) - Lanes::splat(2.0) * sigma) * half_angle);
+        let (sin, cos) =
+            sin_cos_small((Lanes::splat(1.0) - Lanes::splat(2.0) * sigma) * half_angle);
         let (a, b) = (cos * dn * inverse, sin * sn * inverse);
         let q = [0, 1, 2, 3].map(|c| a * s[c] + b * d[c]);
         (q, nearly_unit & dd.le(ss) & Lanes::splat(0.0).le(sigma) & sigma.le(Lanes::splat(1.0)))
@@ -342,7 +426,15 @@ const FRAME_LIMIT: f64 = 1e-6;
 
 /// The pair through [`GreatArc`], which re-orthogonalises its frame.
 #[cold]
-fn careful(kind: BatchKind, starts: &[f64], ends: &[f64], i: usize, first: usize, shortest_path: bool, x: f64) -> Result<DQuat, KliError> {
+fn careful(
+    kind: BatchKind,
+    starts: &[f64],
+    ends: &[f64],
+    i: usize,
+    first: usize,
+    shortest_path: bool,
+    x: f64,
+) -> Result<DQuat, KliError> {
     let arc = arc(starts, ends, i, first, shortest_path)?;
     Ok(match kind {
         BatchKind::Slerp => slerp::point_at(&arc, x),
@@ -351,17 +443,34 @@ fn careful(kind: BatchKind, starts: &[f64], ends: &[f64], i: usize, first: usize
 }
 
 /// `out[i] = Slerp(starts[i], ends[i]; s[i])` for every `i < s.len()`.
-pub fn slerp_batch(starts: &[f64], ends: &[f64], s: &[f64], out: &mut [f64], shortest_path: bool) -> Result<(), KliError> {
+pub fn slerp_batch(
+    starts: &[f64],
+    ends: &[f64],
+    s: &[f64],
+    out: &mut [f64],
+    shortest_path: bool,
+) -> Result<(), KliError> {
     run_batch(BatchKind::Slerp, starts, ends, s, out, 0, shortest_path)
 }
 
 /// `out[i] = q(t[i])`, the exact KLI solution from `starts[i]` towards `ends[i]`.
-pub fn kli_exact_batch(starts: &[f64], ends: &[f64], t: &[f64], out: &mut [f64], shortest_path: bool) -> Result<(), KliError> {
+pub fn kli_exact_batch(
+    starts: &[f64],
+    ends: &[f64],
+    t: &[f64],
+    out: &mut [f64],
+    shortest_path: bool,
+) -> Result<(), KliError> {
     run_batch(BatchKind::KliExact, starts, ends, t, out, 0, shortest_path)
 }
 
 /// Normalised linear interpolation (see [`BatchKind::Nlerp`]).
-pub fn nlerp_batch(starts: &[f64], ends: &[f64], s: &[f64], out: &mut [f64]) -> Result<(), KliError> {
+pub fn nlerp_batch(
+    starts: &[f64],
+    ends: &[f64],
+    s: &[f64],
+    out: &mut [f64],
+) -> Result<(), KliError> {
     run_batch(BatchKind::Nlerp, starts, ends, s, out, 0, true)
 }
 
@@ -372,7 +481,9 @@ fn even_steps(times: &[f64]) -> Option<f64> {
         return None;
     }
     let step = (last - first) / (times.len() - 1) as f64;
-    let even = times.iter().enumerate().all(|(k, &t)| (t - (first + k as f64 * step)).abs() <= 8.0 * f64::EPSILON * (1.0 + t.abs()));
+    let even = times.iter().enumerate().all(|(k, &t)| {
+        (t - (first + k as f64 * step)).abs() <= 8.0 * f64::EPSILON * (1.0 + t.abs())
+    });
     even.then_some(step)
 }
 
@@ -382,15 +493,29 @@ const REANCHOR: usize = 32;
 
 /// One KLI path from `p` towards `r`, at each of `times` (each finite and `≥ 0`), into `out`
 /// (`4·times.len()` numbers). Evenly spaced times advance `e^(-t)` by a fixed factor.
-pub fn kli_sample_into(p: DQuat, r: DQuat, times: &[f64], out: &mut [f64], shortest_path: bool) -> Result<(), KliError> {
+pub fn kli_sample_into(
+    p: DQuat,
+    r: DQuat,
+    times: &[f64],
+    out: &mut [f64],
+    shortest_path: bool,
+) -> Result<(), KliError> {
     if out.len() != 4 * times.len() {
         return Err(KliError::InvalidArgument {
             name: "out".into(),
-            problem: format!("must hold 4 numbers per time: {} (got {})", 4 * times.len(), out.len()),
+            problem: format!(
+                "must hold 4 numbers per time: {} (got {})",
+                4 * times.len(),
+                out.len()
+            ),
         });
     }
     if let Some(k) = times.iter().position(|t| !(t.is_finite() && *t >= 0.0)) {
-        return Err(KliError::InvalidNumber { name: format!("times[{k}]"), value: times[k], requirement: "a finite number ≥ 0" });
+        return Err(KliError::InvalidNumber {
+            name: format!("times[{k}]"),
+            value: times[k],
+            requirement: "a finite number ≥ 0",
+        });
     }
     let arc = GreatArc::new(unit("p", p)?, unit("r", r)?, shortest_path)?;
     let u0 = arc.half_angle_tan();
@@ -477,17 +602,38 @@ mod tests {
         let good = flat(&[[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0]]);
         let bad = flat(&[[1.0, 0.0, 0.0, 0.0], [0.0, f64::NAN, 0.0, 0.0]]);
         let message = |r: Result<(), KliError>| r.unwrap_err().to_string();
-        assert!(message(slerp_batch(&good, &bad, &[0.5, 0.5], &mut out, true)).starts_with("ends[1] must be a quaternion"));
-        assert!(message(slerp_batch(&good, &good, &[0.5, f64::NAN], &mut out, true)).starts_with("s[1] must be a finite number"));
-        assert!(message(kli_exact_batch(&good, &good, &[0.5, -1.0], &mut out, true)).starts_with("t[1] must be a finite number ≥ 0"));
-        assert!(message(kli_exact_batch(&good, &good, &[0.5], &mut out, true)).starts_with("starts must hold 4 numbers per t value: 4 for 1 values (got 8)"));
+        assert!(
+            message(slerp_batch(&good, &bad, &[0.5, 0.5], &mut out, true))
+                .starts_with("ends[1] must be a quaternion")
+        );
+        assert!(
+            message(slerp_batch(&good, &good, &[0.5, f64::NAN], &mut out, true))
+                .starts_with("s[1] must be a finite number")
+        );
+        assert!(
+            message(kli_exact_batch(&good, &good, &[0.5, -1.0], &mut out, true))
+                .starts_with("t[1] must be a finite number ≥ 0")
+        );
+        assert!(
+            message(kli_exact_batch(&good, &good, &[0.5], &mut out, true))
+                .starts_with("starts must hold 4 numbers per t value: 4 for 1 values (got 8)")
+        );
         let antipodal = flat(&[[-1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0]]);
-        assert!(message(slerp_batch(&good, &antipodal, &[0.5, 0.5], &mut out, false)).starts_with("starts[0] and ends[0] are antipodal"));
-        assert!(message(run_batch(BatchKind::Slerp, &good, &bad, &[0.5, 0.5], &mut out, 1000, true)).starts_with("ends[1001] must be"));
+        assert!(
+            message(slerp_batch(&good, &antipodal, &[0.5, 0.5], &mut out, false))
+                .starts_with("starts[0] and ends[0] are antipodal")
+        );
+        assert!(
+            message(run_batch(BatchKind::Slerp, &good, &bad, &[0.5, 0.5], &mut out, 1000, true))
+                .starts_with("ends[1001] must be")
+        );
         let huge = flat(&[[1e300, 0.0, 0.0, 0.0], [0.0, 1e-300, 0.0, 0.0]]);
         slerp_batch(&huge, &huge, &[0.5, 0.5], &mut out, true).unwrap();
         assert_eq!(out, flat(&[[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0]]));
-        assert!(message(kli_sample_into(good_q(), good_q(), &[0.0, -2.0], &mut out, true)).starts_with("times[1] must be"));
+        assert!(
+            message(kli_sample_into(good_q(), good_q(), &[0.0, -2.0], &mut out, true))
+                .starts_with("times[1] must be")
+        );
     }
 
     #[test]
@@ -495,9 +641,15 @@ mod tests {
         // Unit inputs up to single-precision rounding take the fast path; its results agree
         // with the general loop's to 1e-15.
         let starts = flat(&[[0.3, -0.1, 0.7, 0.2], [1.0, 0.0, 0.0, 0.0], [0.5; 4]]);
-        let ends = flat(&[[0.5, 0.4, -0.2, 0.6], [-0.6, 0.8, 0.0, 0.0], [0.5, 0.5, 0.5, 0.5 + 1e-12]]);
+        let ends =
+            flat(&[[0.5, 0.4, -0.2, 0.6], [-0.6, 0.8, 0.0, 0.0], [0.5, 0.5, 0.5, 0.5 + 1e-12]]);
         let unit = |v: &[f64]| -> Vec<f64> {
-            v.chunks(4).flat_map(|q| { let n = q.iter().map(|c| c * c).sum::<f64>().sqrt(); q.iter().map(move |c| ((c / n) as f32) as f64) }).collect()
+            v.chunks(4)
+                .flat_map(|q| {
+                    let n = q.iter().map(|c| c * c).sum::<f64>().sqrt();
+                    q.iter().map(move |c| ((c / n) as f32) as f64)
+                })
+                .collect()
         };
         let (starts, ends) = (unit(&starts), unit(&ends));
         let t = [0.0, 0.7, 30.0];
@@ -508,7 +660,8 @@ mod tests {
             for i in 0..3 {
                 let p = unit_q(&starts[4 * i..4 * i + 4]);
                 let r = unit_q(&ends[4 * i..4 * i + 4]);
-                general[4 * i..4 * i + 4].copy_from_slice(&to_wxyz(kli_exact(p, r, t[i], shortest).unwrap()));
+                general[4 * i..4 * i + 4]
+                    .copy_from_slice(&to_wxyz(kli_exact(p, r, t[i], shortest).unwrap()));
             }
             for (a, b) in fast.iter().zip(&general) {
                 assert!((a - b).abs() < 1e-15, "{fast:?} vs {general:?}");
@@ -516,11 +669,30 @@ mod tests {
         }
         // Not nearly unit, or the long way near -p: the fast path declines.
         let mut out = vec![0.0; 4];
-        assert!(!kli_exact_fast(&[2.0, 0.0, 0.0, 0.0], &[0.0, 1.0, 0.0, 0.0], &[1.0], &mut out, true));
-        assert!(!kli_exact_fast(&[1.0, 0.0, 0.0, 0.0], &[-1.0, 1e-9, 0.0, 0.0], &[1.0], &mut out, false));
-        assert!(!kli_exact_fast(&[1.0, 0.0, 0.0, 0.0], &[0.0, 1.0, 0.0, 0.0], &[f64::NAN], &mut out, true));
+        assert!(!kli_exact_fast(
+            &[2.0, 0.0, 0.0, 0.0],
+            &[0.0, 1.0, 0.0, 0.0],
+            &[1.0],
+            &mut out,
+            true
+        ));
+        assert!(!kli_exact_fast(
+            &[1.0, 0.0, 0.0, 0.0],
+            &[-1.0, 1e-9, 0.0, 0.0],
+            &[1.0],
+            &mut out,
+            false
+        ));
+        assert!(!kli_exact_fast(
+            &[1.0, 0.0, 0.0, 0.0],
+            &[0.0, 1.0, 0.0, 0.0],
+            &[f64::NAN],
+            &mut out,
+            true
+        ));
         // …and the call still answers, through the general loop.
-        kli_exact_batch(&[2.0, 0.0, 0.0, 0.0], &[0.0, 1.0, 0.0, 0.0], &[1.0], &mut out, true).unwrap();
+        kli_exact_batch(&[2.0, 0.0, 0.0, 0.0], &[0.0, 1.0, 0.0, 0.0], &[1.0], &mut out, true)
+            .unwrap();
         assert!((out.iter().map(|c| c * c).sum::<f64>() - 1.0).abs() < 1e-15);
     }
 
@@ -536,7 +708,9 @@ mod tests {
             worst = worst.max((atan_unit_interval(Lanes::splat(u)).to_array()[0] - u.atan()).abs());
             let x = (u - 0.5) * std::f64::consts::FRAC_PI_2;
             let (sin, cos) = sin_cos_small(Lanes::splat(x));
-            worst = worst.max((sin.to_array()[0] - x.sin()).abs()).max((cos.to_array()[1] - x.cos()).abs());
+            worst = worst
+                .max((sin.to_array()[0] - x.sin()).abs())
+                .max((cos.to_array()[1] - x.cos()).abs());
         }
         assert!(worst < 4e-16, "worst absolute error {worst:e}");
     }
@@ -544,22 +718,46 @@ mod tests {
     #[test]
     fn slerp_fast_path_matches_the_single_call() {
         let starts = flat(&[[0.3, -0.1, 0.7, 0.2], [1.0, 0.0, 0.0, 0.0], [0.5; 4], [0.5; 4]]);
-        let ends = flat(&[[0.5, 0.4, -0.2, 0.6], [-0.6, 0.8, 0.0, 0.0], [0.5, 0.5, 0.5, 0.5 + 1e-12], [0.5; 4]]);
-        let normalised: Vec<f64> = starts.chunks(4).chain(ends.chunks(4)).flat_map(|q| to_wxyz(unit_q(q))).collect();
+        let ends = flat(&[
+            [0.5, 0.4, -0.2, 0.6],
+            [-0.6, 0.8, 0.0, 0.0],
+            [0.5, 0.5, 0.5, 0.5 + 1e-12],
+            [0.5; 4],
+        ]);
+        let normalised: Vec<f64> =
+            starts.chunks(4).chain(ends.chunks(4)).flat_map(|q| to_wxyz(unit_q(q))).collect();
         let (starts, ends) = normalised.split_at(16);
         let sigma = [0.0, 0.35, 0.8, 1.0];
         let mut fast = vec![0.0; 16];
         assert!(slerp_fast(starts, ends, &sigma, &mut fast, true));
         for i in 0..4 {
-            let single = to_wxyz(crate::slerp(unit_q(&starts[4 * i..4 * i + 4]), unit_q(&ends[4 * i..4 * i + 4]), sigma[i], true).unwrap());
+            let single = to_wxyz(
+                crate::slerp(
+                    unit_q(&starts[4 * i..4 * i + 4]),
+                    unit_q(&ends[4 * i..4 * i + 4]),
+                    sigma[i],
+                    true,
+                )
+                .unwrap(),
+            );
             for c in 0..4 {
-                assert!((fast[4 * i + c] - single[c]).abs() < 1e-15, "pair {i}: {:?} vs {single:?}", &fast[4 * i..4 * i + 4]);
+                assert!(
+                    (fast[4 * i + c] - single[c]).abs() < 1e-15,
+                    "pair {i}: {:?} vs {single:?}",
+                    &fast[4 * i..4 * i + 4]
+                );
             }
         }
         // Extrapolation and the long way round leave it to the general loop.
         let mut out = vec![0.0; 4];
         assert!(!slerp_fast(&[1.0, 0.0, 0.0, 0.0], &[0.0, 1.0, 0.0, 0.0], &[1.5], &mut out, true));
-        assert!(!slerp_fast(&[1.0, 0.0, 0.0, 0.0], &[-0.6, 0.8, 0.0, 0.0], &[0.5], &mut out, false));
+        assert!(!slerp_fast(
+            &[1.0, 0.0, 0.0, 0.0],
+            &[-0.6, 0.8, 0.0, 0.0],
+            &[0.5],
+            &mut out,
+            false
+        ));
     }
 
     fn good_q() -> DQuat {

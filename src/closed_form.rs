@@ -65,13 +65,23 @@ pub fn kli_exact(p: DQuat, r: DQuat, t: f64, shortest_path: bool) -> Result<DQua
 }
 
 /// The SLERP parameter `s(t)` at KLI time `t`: `kli_exact(p, r, t) = slerp(p, r, s(t))`.
-pub fn kli_to_slerp_parameter(p: DQuat, r: DQuat, t: f64, shortest_path: bool) -> Result<f64, KliError> {
+pub fn kli_to_slerp_parameter(
+    p: DQuat,
+    r: DQuat,
+    t: f64,
+    shortest_path: bool,
+) -> Result<f64, KliError> {
     let t = require_non_negative("t", t)?;
     Ok(time_warp(&arc(p, r, shortest_path)?, t))
 }
 
 /// The predicted reach time `T*` for `tolerance` (see [`reach_time`]).
-pub fn kli_reach_time(p: DQuat, r: DQuat, tolerance: f64, shortest_path: bool) -> Result<f64, KliError> {
+pub fn kli_reach_time(
+    p: DQuat,
+    r: DQuat,
+    tolerance: f64,
+    shortest_path: bool,
+) -> Result<f64, KliError> {
     let tolerance = require_positive("tolerance", tolerance)?;
     Ok(reach_time(&arc(p, r, shortest_path)?, tolerance))
 }
@@ -107,7 +117,9 @@ mod tests {
         let h = 1e-5;
         for t in [0.1, 0.5, 1.0, 3.0, 8.0] {
             let q = kli_exact(p, r, t, true).unwrap();
-            let dq = (kli_exact(p, r, t + h, true).unwrap() - kli_exact(p, r, t - h, true).unwrap()) * (0.5 / h);
+            let dq = (kli_exact(p, r, t + h, true).unwrap()
+                - kli_exact(p, r, t - h, true).unwrap())
+                * (0.5 / h);
             assert!((dq - crate::model::velocity(q, r)).length() < 1e-9, "t = {t}");
         }
     }
@@ -129,7 +141,10 @@ mod tests {
         let (p, _) = paper();
         assert_eq!(kli_exact(p, p, 3.0, true).unwrap(), p);
         assert_eq!(kli_reach_time(p, p, 1e-5, true).unwrap(), 0.0);
-        assert!((kli_to_slerp_parameter(p, p, 1.0, true).unwrap() - (1.0 - (-1.0_f64).exp())).abs() < 1e-15);
+        assert!(
+            (kli_to_slerp_parameter(p, p, 1.0, true).unwrap() - (1.0 - (-1.0_f64).exp())).abs()
+                < 1e-15
+        );
     }
 
     #[test]
@@ -139,7 +154,12 @@ mod tests {
             assert!(kli_exact(p, r, t, true).unwrap_err().to_string().starts_with("t must be"));
         }
         for eps in [0.0, -1.0, f64::NAN] {
-            assert!(kli_reach_time(p, r, eps, true).unwrap_err().to_string().starts_with("tolerance must be"));
+            assert!(
+                kli_reach_time(p, r, eps, true)
+                    .unwrap_err()
+                    .to_string()
+                    .starts_with("tolerance must be")
+            );
         }
     }
 }

@@ -74,7 +74,11 @@ impl KliError {
 
 /// Rust's way of writing a number in a message: exponent form for the very small and large.
 pub fn rust_number(x: f64) -> String {
-    if x != 0.0 && x.is_finite() && (x.abs() < 1e-4 || x.abs() >= 1e16) { format!("{x:e}") } else { format!("{x}") }
+    if x != 0.0 && x.is_finite() && (x.abs() < 1e-4 || x.abs() >= 1e16) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
+    }
 }
 
 impl fmt::Display for KliError {
@@ -100,11 +104,15 @@ impl KliError {
     /// The same error about another argument, e.g. `starts[3]` instead of `p` in a batch call.
     pub fn renamed(self, new_name: impl Into<String>) -> Self {
         match self {
-            KliError::InvalidQuaternion { problem, .. } => KliError::InvalidQuaternion { name: new_name.into(), problem },
+            KliError::InvalidQuaternion { problem, .. } => {
+                KliError::InvalidQuaternion { name: new_name.into(), problem }
+            }
             KliError::InvalidNumber { value, requirement, .. } => {
                 KliError::InvalidNumber { name: new_name.into(), value, requirement }
             }
-            KliError::InvalidArgument { problem, .. } => KliError::InvalidArgument { name: new_name.into(), problem },
+            KliError::InvalidArgument { problem, .. } => {
+                KliError::InvalidArgument { name: new_name.into(), problem }
+            }
             other => other,
         }
     }
@@ -115,7 +123,11 @@ pub(crate) fn require_positive(name: &'static str, value: f64) -> Result<f64, Kl
     if value.is_finite() && value > 0.0 {
         Ok(value)
     } else {
-        Err(KliError::InvalidNumber { name: name.into(), value, requirement: "a finite number > 0" })
+        Err(KliError::InvalidNumber {
+            name: name.into(),
+            value,
+            requirement: "a finite number > 0",
+        })
     }
 }
 
@@ -124,6 +136,10 @@ pub(crate) fn require_non_negative(name: &'static str, value: f64) -> Result<f64
     if value.is_finite() && value >= 0.0 {
         Ok(value)
     } else {
-        Err(KliError::InvalidNumber { name: name.into(), value, requirement: "a finite number ≥ 0" })
+        Err(KliError::InvalidNumber {
+            name: name.into(),
+            value,
+            requirement: "a finite number ≥ 0",
+        })
     }
 }

@@ -111,7 +111,9 @@ mod tests {
     #[test]
     fn orders_of_accuracy() {
         // Halving h divides the error by 2^order.
-        for (integrator, order) in [(Integrator::Euler, 1.0), (Integrator::Rk4, 4.0), (Integrator::Geodesic, 4.0)] {
+        for (integrator, order) in
+            [(Integrator::Euler, 1.0), (Integrator::Rk4, 4.0), (Integrator::Geodesic, 4.0)]
+        {
             let ratio = error_at_one(integrator, 0.02) / error_at_one(integrator, 0.01);
             let measured = ratio.log2();
             assert!((measured - order).abs() < 0.2, "{integrator}: order {measured}");

@@ -184,7 +184,12 @@ mod imp {
             // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
             let bits = unsafe { _mm_castpd_si128(self.0) };
             // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
-            unsafe { Self(_mm_castsi128_pd(_mm_slli_epi64::<52>(_mm_sub_epi64(bits, _mm_set1_epi64x(o as i64))))) }
+            unsafe {
+                Self(_mm_castsi128_pd(_mm_slli_epi64::<52>(_mm_sub_epi64(
+                    bits,
+                    _mm_set1_epi64x(o as i64),
+                ))))
+            }
         }
     }
 
@@ -319,8 +324,20 @@ impl Lanes {
         const LN2_HI: f64 = 6.931_471_803_691_238e-1; // fdlibm: ln 2 with the low 32 bits clear
         const LN2_LO: f64 = 1.908_214_929_270_587_7e-10;
         const INVERSE_FACTORIALS: [f64; 14] = [
-            1.0, 1.0, 0.5, 1.0 / 6.0, 1.0 / 24.0, 1.0 / 120.0, 1.0 / 720.0, 1.0 / 5040.0, 1.0 / 40320.0,
-            1.0 / 362_880.0, 1.0 / 3_628_800.0, 1.0 / 39_916_800.0, 1.0 / 479_001_600.0, 1.0 / 6_227_020_800.0,
+            1.0,
+            1.0,
+            0.5,
+            1.0 / 6.0,
+            1.0 / 24.0,
+            1.0 / 120.0,
+            1.0 / 720.0,
+            1.0 / 5040.0,
+            1.0 / 40320.0,
+            1.0 / 362_880.0,
+            1.0 / 3_628_800.0,
+            1.0 / 39_916_800.0,
+            1.0 / 479_001_600.0,
+            1.0 / 6_227_020_800.0,
         ];
         let x = self.max(Self::splat(-708.0));
         let k = (x * Self::splat(std::f64::consts::LOG2_E)).round_ties_even();
@@ -330,7 +347,12 @@ impl Lanes {
         let c = INVERSE_FACTORIALS.map(Self::splat);
         let (r2, pairs) = (r * r, [0, 1, 2, 3, 4, 5, 6].map(|k| c[2 * k] + c[2 * k + 1] * r));
         let r4 = r2 * r2;
-        let quads = [pairs[0] + pairs[1] * r2, pairs[2] + pairs[3] * r2, pairs[4] + pairs[5] * r2, pairs[6]];
+        let quads = [
+            pairs[0] + pairs[1] * r2,
+            pairs[2] + pairs[3] * r2,
+            pairs[4] + pairs[5] * r2,
+            pairs[6],
+        ];
         let p = (quads[0] + quads[1] * r4) + (quads[2] + quads[3] * r4) * (r4 * r4);
         // 2^k: k + 1023 + 2^52 holds k + 1023 in its low mantissa bits; shift it into the exponent.
         let biased = k + Self::splat(1023.0 + 4_503_599_627_370_496.0);
@@ -396,7 +418,9 @@ mod tests {
         for k in 0..100_000 {
             let x = (-(k as f64) * 708.0 / 100_000.0 - (k % 7) as f64 * 1e-9).max(-708.0);
             let [a, b] = Lanes::new(x, x * 0.5).exp_nonpositive().to_array();
-            worst = worst.max((a - x.exp()).abs() / x.exp()).max((b - (0.5 * x).exp()).abs() / (0.5 * x).exp());
+            worst = worst
+                .max((a - x.exp()).abs() / x.exp())
+                .max((b - (0.5 * x).exp()).abs() / (0.5 * x).exp());
         }
         assert!(worst < 4.5e-16, "worst relative error {worst:e}");
         assert_eq!(Lanes::splat(0.0).exp_nonpositive().to_array(), [1.0, 1.0]);

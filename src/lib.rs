@@ -35,13 +35,13 @@
 pub mod axis_angle;
 pub mod batch;
 
+pub mod algorithm;
 pub mod closed_form;
 pub mod error;
 pub mod great_arc;
 pub mod hopf;
 pub mod integrator;
 mod lanes;
-pub mod algorithm;
 pub mod model;
 pub mod quaternion;
 pub mod render;
@@ -50,12 +50,12 @@ pub mod slerp;
 #[cfg(target_arch = "wasm32")]
 pub mod bindings;
 
+pub use algorithm::{KliOptions, KliPath, kli};
 pub use axis_angle::{axis_angle, from_axis_angle};
 pub use closed_form::{kli_exact, kli_reach_time, kli_to_slerp_parameter};
 pub use error::KliError;
 pub use glam::{DQuat, DVec3};
 pub use hopf::hopf;
 pub use integrator::Integrator;
-pub use algorithm::{KliOptions, KliPath, kli};
 pub use quaternion::{from_wxyz, to_wxyz};
 pub use slerp::slerp;

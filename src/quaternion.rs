@@ -32,7 +32,10 @@ pub fn unit(name: &'static str, q: DQuat) -> Result<DQuat, KliError> {
     }
     let largest = wxyz.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
     if largest == 0.0 {
-        return Err(KliError::InvalidQuaternion { name: name.into(), problem: "it has zero length".into() });
+        return Err(KliError::InvalidQuaternion {
+            name: name.into(),
+            problem: "it has zero length".into(),
+        });
     }
     let scaled = q * (1.0 / largest);
     // 1/largest overflows for subnormal `largest`; divide instead in that case.

@@ -13,7 +13,11 @@ use crate::great_arc::GreatArc;
 /// `Slerp(p, r; s)`; inputs are normalised. `s` outside `[0, 1]` extrapolates along the circle.
 pub fn slerp(p: DQuat, r: DQuat, s: f64, shortest_path: bool) -> Result<DQuat, KliError> {
     if !s.is_finite() {
-        return Err(KliError::InvalidNumber { name: "s".into(), value: s, requirement: "a finite number" });
+        return Err(KliError::InvalidNumber {
+            name: "s".into(),
+            value: s,
+            requirement: "a finite number",
+        });
     }
     Ok(point_at(&arc(p, r, shortest_path)?, s))
 }

@@ -34,7 +34,9 @@ fn pixel(ctx: &CanvasRenderingContext2d, (x, y): (f64, f64)) -> [u8; 3] {
 }
 
 fn paper_scene() -> Scene {
-    Scene::new(kli(from_wxyz([0.0, 0.0, 0.0, 1.0]), from_wxyz([0.5; 4]), &KliOptions::default()).unwrap())
+    Scene::new(
+        kli(from_wxyz([0.0, 0.0, 0.0, 1.0]), from_wxyz([0.5; 4]), &KliOptions::default()).unwrap(),
+    )
 }
 
 #[wasm_bindgen_test]
@@ -53,7 +55,8 @@ fn sphere_view_puts_markers_where_the_hopf_map_says() {
     // The current KLI marker at t = 0.85: Table 1's q = (0.3083, 0.3083, 0.3083, 0.8455) through
     // eq. 5, computed here by hand: (a²+b²−c²−d², 2(ad+bc), 2(bd−ac)).
     let (a, d) = (0.3083_f64, 0.8455_f64);
-    let h = DVec3::new(a * a + a * a - a * a - d * d, 2.0 * (a * d + a * a), 2.0 * (a * d - a * a)).normalize();
+    let h = DVec3::new(a * a + a * a - a * a - d * d, 2.0 * (a * d + a * a), 2.0 * (a * d - a * a))
+        .normalize();
     assert_eq!(pixel(&ctx, at(h)), [0xe8, 0x59, 0x0c], "KLI marker at {h:?}");
     // The sphere's centre is shaded (grey-blue), not background.
     let [r, g, b] = pixel(&ctx, (150.0, 150.0));
@@ -74,7 +77,14 @@ fn object_view_shows_the_rotation() {
     let [r, g, _] = pixel(&ctx, probe);
     assert!(r > 150 && g < 90, "port wing should be red, got {r} {g}");
     let pen = Pen::begin(&ctx, 200.0, 200.0, 1.0, "#ffffff");
-    draw_object(&pen, &viewport, &camera, &mesh, DQuat::from_rotation_x(std::f64::consts::PI), false);
+    draw_object(
+        &pen,
+        &viewport,
+        &camera,
+        &mesh,
+        DQuat::from_rotation_x(std::f64::consts::PI),
+        false,
+    );
     let [r, g, _] = pixel(&ctx, probe);
     assert!(g > 100 && r < 90, "starboard wing should be green, got {r} {g}");
     // Far from the aircraft: background.
@@ -112,11 +122,14 @@ fn time_warp_plot_follows_the_closed_form() {
     let (left, top, w, h) = plot_area(0, width, height);
     let x = left + 6.0 / x_max * w;
     // A 1 px antialiased line on a fractional x: look one pixel either side.
-    let darkened = |y: i32| (-1..=1).any(|dx| pixel(&ctx, (x.floor() + f64::from(dx), f64::from(y)))[0] < 200);
+    let darkened =
+        |y: i32| (-1..=1).any(|dx| pixel(&ctx, (x.floor() + f64::from(dx), f64::from(y)))[0] < 200);
     let rows = (top as i32 + 2..(top + h) as i32 - 2).filter(|&y| darkened(y)).count();
     assert!(rows as f64 > 0.3 * h, "cursor at x = {x}: {rows} darkened rows of {h}");
     // Elsewhere in the same rows, away from the curve, the plot stays white.
-    let blank = (top as i32 + 2..(top + h) as i32 - 2).filter(|&y| pixel(&ctx, (x + 25.0, f64::from(y)))[0] < 200).count();
+    let blank = (top as i32 + 2..(top + h) as i32 - 2)
+        .filter(|&y| pixel(&ctx, (x + 25.0, f64::from(y)))[0] < 200)
+        .count();
     assert!(blank < 10, "{blank} darkened rows 25 px to the right");
 }
 

@@ -2,7 +2,10 @@
 //! near-antipodal pairs 1e-12 apart, and inputs scaled to tiny and huge magnitudes.
 #![cfg(not(target_arch = "wasm32"))]
 
-use kli::{DQuat, Integrator, KliError, KliOptions, from_wxyz, hopf, kli, kli_exact, kli_to_slerp_parameter, slerp};
+use kli::{
+    DQuat, Integrator, KliError, KliOptions, from_wxyz, hopf, kli, kli_exact,
+    kli_to_slerp_parameter, slerp,
+};
 use proptest::prelude::*;
 
 fn unit4() -> impl Strategy<Value = DQuat> {
@@ -20,19 +23,26 @@ enum Pair {
 }
 
 fn pair() -> impl Strategy<Value = (DQuat, DQuat, Pair)> {
-    (unit4(), unit4(), prop_oneof![Just(Pair::Random), Just(Pair::NearIdentical), Just(Pair::NearAntipodal)]).prop_map(
-        |(p, other, kind)| {
+    (
+        unit4(),
+        unit4(),
+        prop_oneof![Just(Pair::Random), Just(Pair::NearIdentical), Just(Pair::NearAntipodal)],
+    )
+        .prop_map(|(p, other, kind)| {
             // A unit direction orthogonal to p, so the 1e-12 offset is not lost to normalisation.
             let across = other - p * other.dot(p);
-            let across = if across.length() > 1e-3 { across.normalize() } else { DQuat::from_xyzw(-p.y, p.x, -p.w, p.z) };
+            let across = if across.length() > 1e-3 {
+                across.normalize()
+            } else {
+                DQuat::from_xyzw(-p.y, p.x, -p.w, p.z)
+            };
             let r = match kind {
                 Pair::Random => other,
                 Pair::NearIdentical => (p + across * 1e-12).normalize(),
                 Pair::NearAntipodal => (-p + across * 1e-12).normalize(),
             };
             (p, r, kind)
-        },
-    )
+        })
 }
 
 /// Tiny, ordinary and huge scales of the same input.

@@ -91,7 +91,8 @@ fn integrated_path_matches_the_closed_form() {
     // At δ = 0.01 both fourth-order schemes agree with the exact solution to 1e-8 (measured 1.3e-10
     // and 7e-11); |q| stays 1 to 1e-9 for RK4 (measured 1.2e-10) and to rounding for geodesic.
     for (integrator, agreement, norm_drift) in [("rk4", 1e-8, 1e-9), ("geodesic", 1e-8, 1e-14)] {
-        let path = api::kli(&quat(&P), &quat(&R), options(&[("integrator", integrator.into())])).unwrap();
+        let path =
+            api::kli(&quat(&P), &quat(&R), options(&[("integrator", integrator.into())])).unwrap();
         let q = path.quaternions().to_vec();
         for (n, &t) in path.times().to_vec().iter().enumerate() {
             let exact = path.at(t).unwrap().to_vec();
@@ -103,7 +104,10 @@ fn integrated_path_matches_the_closed_form() {
     // Euler drifts off the sphere: the reason it is there.
     let euler = api::kli(&quat(&P), &quat(&R), options(&[("integrator", "euler".into())])).unwrap();
     let q = euler.quaternions().to_vec();
-    let drift = q.chunks(4).map(|c| (c.iter().map(|x| x * x).sum::<f64>().sqrt() - 1.0).abs()).fold(0.0, f64::max);
+    let drift = q
+        .chunks(4)
+        .map(|c| (c.iter().map(|x| x * x).sum::<f64>().sqrt() - 1.0).abs())
+        .fold(0.0, f64::max);
     assert!(drift > 1e-4, "Euler drift {drift}");
 }
 
@@ -113,7 +117,8 @@ fn closed_form_values() {
     let phi0 = std::f64::consts::FRAC_PI_3;
     for t in [0.0_f64, 0.2, 1.8, 7.0] {
         let phi = 2.0 * ((phi0 / 2.0).tan() * (-t).exp()).atan();
-        let expected: Vec<f64> = (0..4).map(|i| ((phi).sin() * P[i] + (phi0 - phi).sin() * R[i]) / phi0.sin()).collect();
+        let expected: Vec<f64> =
+            (0..4).map(|i| ((phi).sin() * P[i] + (phi0 - phi).sin() * R[i]) / phi0.sin()).collect();
         let got = api::kli_exact(&quat(&P), &quat(&R), t, None).unwrap().to_vec();
         assert!(close(&got, &expected, 1e-15), "t = {t}");
         let s = api::kli_to_slerp_parameter(&quat(&P), &quat(&R), t, None).unwrap();
@@ -137,8 +142,9 @@ fn slerp_matches_the_textbook_formula() {
     let (pu, ru) = (norm(p), norm(r));
     let theta = pu.iter().zip(&ru).map(|(a, b)| a * b).sum::<f64>().acos();
     for s in [0.0, 0.125, 0.5, 0.875, 1.0] {
-        let expected: Vec<f64> =
-            (0..4).map(|i| (((1.0 - s) * theta).sin() * pu[i] + (s * theta).sin() * ru[i]) / theta.sin()).collect();
+        let expected: Vec<f64> = (0..4)
+            .map(|i| (((1.0 - s) * theta).sin() * pu[i] + (s * theta).sin() * ru[i]) / theta.sin())
+            .collect();
         let got = api::slerp(&typed(&p), &quat(&r), s, None).unwrap().to_vec();
         assert!(close(&got, &expected, 1e-12), "s = {s}: {got:?} vs {expected:?}");
     }
@@ -153,7 +159,11 @@ fn hopf_end_points_and_axis_angle() {
     assert!(close(&curve[..3], &[-1.0, 0.0, 0.0], 0.0));
     assert!(close(&curve[curve.len() - 3..], &[0.0, 1.0, 0.0], 2e-5));
     // p = k: a half turn about z; r: 120° about (1,1,1)/√3.
-    assert!(close(&api::axis_angle(&quat(&P)).unwrap().to_vec(), &[0.0, 0.0, 1.0, std::f64::consts::PI], 0.0));
+    assert!(close(
+        &api::axis_angle(&quat(&P)).unwrap().to_vec(),
+        &[0.0, 0.0, 1.0, std::f64::consts::PI],
+        0.0
+    ));
     let c = 1.0 / 3.0_f64.sqrt();
     let expected = [c, c, c, 2.0 * std::f64::consts::PI / 3.0];
     assert!(close(&api::axis_angle(&quat(&R)).unwrap().to_vec(), &expected, 1e-15));
@@ -171,16 +181,30 @@ fn shortest_path_both_ways() {
     let t_star = |phi0: f64| ((phi0 / 2.0).tan() / (5e-6_f64).asin().tan()).ln();
     let short = api::kli(&quat(&p), &quat(&r), None).unwrap();
     assert!(close(&short.target().to_vec(), &[0.6, -0.8, 0.0, 0.0], 1e-15));
-    assert!(short.final_time() >= t_star(0.6_f64.acos()) && short.final_time() < t_star(0.6_f64.acos()) + 0.01);
+    assert!(
+        short.final_time() >= t_star(0.6_f64.acos())
+            && short.final_time() < t_star(0.6_f64.acos()) + 0.01
+    );
     let long = api::kli(&quat(&p), &quat(&r), options(&[("shortestPath", false.into())])).unwrap();
     assert!(close(&long.target().to_vec(), &r, 1e-15));
     let t_long = t_star((-0.6_f64).acos());
-    assert!(long.final_time() >= t_long && long.final_time() < t_long + 0.01, "{}", long.final_time());
+    assert!(
+        long.final_time() >= t_long && long.final_time() < t_long + 0.01,
+        "{}",
+        long.final_time()
+    );
     // SLERP half way: the bisector of p and -r, or of p and r.
     let half = api::slerp(&quat(&p), &quat(&r), 0.5, None).unwrap().to_vec();
     assert!(close(&half, &[1.6 / 1.6_f64.hypot(0.8), -0.8 / 1.6_f64.hypot(0.8), 0.0, 0.0], 1e-15));
-    let half_long = api::slerp(&quat(&p), &quat(&r), 0.5, options(&[("shortestPath", false.into())])).unwrap().to_vec();
-    assert!(close(&half_long, &[0.4 / 0.4_f64.hypot(0.8), 0.8 / 0.4_f64.hypot(0.8), 0.0, 0.0], 1e-15));
+    let half_long =
+        api::slerp(&quat(&p), &quat(&r), 0.5, options(&[("shortestPath", false.into())]))
+            .unwrap()
+            .to_vec();
+    assert!(close(
+        &half_long,
+        &[0.4 / 0.4_f64.hypot(0.8), 0.8 / 0.4_f64.hypot(0.8), 0.0, 0.0],
+        1e-15
+    ));
 }
 
 fn expect_error(result: Result<impl Sized, JsError>, starts_with: &str) {
@@ -199,14 +223,29 @@ fn bad_quaternions_throw_errors_naming_the_argument() {
     let p = quat(&P);
     expect_error(api::kli(&quat(&[1.0, 2.0, 3.0]), &p, None), "p must be an array of 4 numbers");
     expect_error(api::kli(&p, &typed(&[1.0, 2.0, 3.0, 4.0, 5.0]), None), "r must hold 4 numbers");
-    expect_error(api::kli(&quat(&[1.0, f64::NAN, 0.0, 0.0]), &p, None), "p must be a quaternion of 4 finite numbers");
-    expect_error(api::kli(&p, &quat(&[f64::INFINITY, 0.0, 0.0, 0.0]), None), "r must be a quaternion of 4 finite numbers");
-    expect_error(api::kli(&p, &typed(&[0.0, 0.0, f64::NEG_INFINITY, 0.0]), None), "r must be a quaternion");
-    expect_error(api::kli(&quat(&[0.0; 4]), &p, None), "p must be a quaternion of 4 finite numbers [w, x, y, z], not all zero: it has zero length");
+    expect_error(
+        api::kli(&quat(&[1.0, f64::NAN, 0.0, 0.0]), &p, None),
+        "p must be a quaternion of 4 finite numbers",
+    );
+    expect_error(
+        api::kli(&p, &quat(&[f64::INFINITY, 0.0, 0.0, 0.0]), None),
+        "r must be a quaternion of 4 finite numbers",
+    );
+    expect_error(
+        api::kli(&p, &typed(&[0.0, 0.0, f64::NEG_INFINITY, 0.0]), None),
+        "r must be a quaternion",
+    );
+    expect_error(
+        api::kli(&quat(&[0.0; 4]), &p, None),
+        "p must be a quaternion of 4 finite numbers [w, x, y, z], not all zero: it has zero length",
+    );
     let strings: QuaternionLike = JsValue::from("abcd").unchecked_into();
     expect_error(api::kli(&strings, &p, None), "p must be an array of 4 numbers");
     let mixed: Array = [JsValue::from("1"), 0.into(), 0.into(), 0.into()].into_iter().collect();
-    expect_error(api::slerp(&p, mixed.unchecked_ref(), 0.5, None), "r must hold 4 numbers [w, x, y, z]: element 0 is \"1\"");
+    expect_error(
+        api::slerp(&p, mixed.unchecked_ref(), 0.5, None),
+        "r must hold 4 numbers [w, x, y, z]: element 0 is \"1\"",
+    );
     let null: QuaternionLike = JsValue::NULL.unchecked_into();
     expect_error(api::hopf(&null), "q must be an array of 4 numbers");
     expect_error(api::axis_angle(&quat(&[0.0; 4])), "q must be a quaternion");
@@ -221,14 +260,29 @@ fn bad_options_throw_errors_naming_the_option() {
     let (p, r) = (quat(&P), quat(&R));
     for name in ["tolerance", "step", "maxTime"] {
         for bad in [0.0, -1.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
-            expect_error(api::kli(&p, &r, options(&[(name, bad.into())])), &format!("{name} must be a finite number > 0"));
+            expect_error(
+                api::kli(&p, &r, options(&[(name, bad.into())])),
+                &format!("{name} must be a finite number > 0"),
+            );
         }
-        expect_error(api::kli(&p, &r, options(&[(name, "1e-5".into())])), &format!("{name} must be a number (got \"1e-5\""));
+        expect_error(
+            api::kli(&p, &r, options(&[(name, "1e-5".into())])),
+            &format!("{name} must be a number (got \"1e-5\""),
+        );
     }
-    expect_error(api::kli(&p, &r, options(&[("integrator", "rk5".into())])), "integrator must be \"rk4\", \"euler\" or \"geodesic\" (got \"rk5\")");
+    expect_error(
+        api::kli(&p, &r, options(&[("integrator", "rk5".into())])),
+        "integrator must be \"rk4\", \"euler\" or \"geodesic\" (got \"rk5\")",
+    );
     expect_error(api::kli(&p, &r, options(&[("integrator", 4.into())])), "integrator must be");
-    expect_error(api::kli(&p, &r, options(&[("shortestPath", "yes".into())])), "shortestPath must be true or false");
-    expect_error(api::kli(&p, &r, options(&[("tolerence", 1e-3.into())])), "options has an unknown key \"tolerence\"");
+    expect_error(
+        api::kli(&p, &r, options(&[("shortestPath", "yes".into())])),
+        "shortestPath must be true or false",
+    );
+    expect_error(
+        api::kli(&p, &r, options(&[("tolerence", 1e-3.into())])),
+        "options has an unknown key \"tolerence\"",
+    );
     let number: KliOptionsObject = JsValue::from(5).unchecked_into();
     expect_error(api::kli(&p, &r, Some(number)), "options must be an object");
 }
@@ -245,9 +299,18 @@ fn bad_times_and_impossible_requests_throw() {
     expect_error(api::kli_reach_time(&p, &r, 0.0, None), "tolerance must be a finite number > 0");
     expect_error(api::slerp(&p, &r, f64::NAN, None), "s must be a finite number");
     // ε below what f64 resolves: reported, not looped forever.
-    expect_error(api::kli(&p, &r, options(&[("tolerance", 1e-20.into())])), "tolerance 1e-20 not reached within maxTime 100");
-    expect_error(api::kli(&p, &r, options(&[("maxTime", 5.into())])), "tolerance 0.00001 not reached within maxTime 5");
-    expect_error(api::kli(&p, &r, options(&[("step", 1e-7.into())])), "step is too small for maxTime");
+    expect_error(
+        api::kli(&p, &r, options(&[("tolerance", 1e-20.into())])),
+        "tolerance 1e-20 not reached within maxTime 100",
+    );
+    expect_error(
+        api::kli(&p, &r, options(&[("maxTime", 5.into())])),
+        "tolerance 0.00001 not reached within maxTime 5",
+    );
+    expect_error(
+        api::kli(&p, &r, options(&[("step", 1e-7.into())])),
+        "step is too small for maxTime",
+    );
     // p = -r the long way round: an equilibrium.
     let minus_p = quat(&[0.0, 0.0, 0.0, -3.0]);
     let long = || options(&[("shortestPath", false.into())]);
@@ -306,8 +369,15 @@ fn batches_agree_with_the_single_calls() {
         let got = returned.to_vec();
         for i in (0..n).step_by(7) {
             let (p, r) = (quat(&starts[4 * i..4 * i + 4]), quat(&ends[4 * i..4 * i + 4]));
-            let single = if name == "slerp" { api::slerp(&p, &r, params[i], None) } else { api::kli_exact(&p, &r, params[i], None) };
-            assert!(close(&got[4 * i..4 * i + 4], &single.unwrap().to_vec(), 1e-12), "{name} pair {i}");
+            let single = if name == "slerp" {
+                api::slerp(&p, &r, params[i], None)
+            } else {
+                api::kli_exact(&p, &r, params[i], None)
+            };
+            assert!(
+                close(&got[4 * i..4 * i + 4], &single.unwrap().to_vec(), 1e-12),
+                "{name} pair {i}"
+            );
         }
     }
 }
@@ -323,11 +393,20 @@ fn kli_exact_batch_matches_the_plain_formula_to_1e_12() {
     let phi0 = pu.iter().zip(&ru).map(|(a, b)| a * b).sum::<f64>().acos();
     let times: Vec<f64> = (0..200).map(|k| k as f64 * 0.05).collect();
     let n = times.len();
-    let out = api::kli_exact_batch(&f64s(&p.repeat(n)), &f64s(&r.repeat(n)), &f64s(&times), &f64s(&vec![0.0; 4 * n]), None).unwrap().to_vec();
+    let out = api::kli_exact_batch(
+        &f64s(&p.repeat(n)),
+        &f64s(&r.repeat(n)),
+        &f64s(&times),
+        &f64s(&vec![0.0; 4 * n]),
+        None,
+    )
+    .unwrap()
+    .to_vec();
     let sampled = api::kli_sample(&quat(&p), &quat(&r), &f64s(&times), None).unwrap();
     for (k, &t) in times.iter().enumerate() {
         let phi = 2.0 * ((phi0 / 2.0).tan() * (-t).exp()).atan();
-        let expected: Vec<f64> = (0..4).map(|c| (phi.sin() * pu[c] + (phi0 - phi).sin() * ru[c]) / phi0.sin()).collect();
+        let expected: Vec<f64> =
+            (0..4).map(|c| (phi.sin() * pu[c] + (phi0 - phi).sin() * ru[c]) / phi0.sin()).collect();
         assert!(close(&out[4 * k..4 * k + 4], &expected, 1e-12), "kliExactBatch t = {t}");
         assert!(close(&sampled[4 * k..4 * k + 4], &expected, 1e-12), "kliSample t = {t}");
     }
@@ -344,7 +423,10 @@ fn kli_sample_near_plus_and_minus_r() {
             let sampled = api::kli_sample(&quat(&p), &quat(&r), &f64s(&times), o()).unwrap();
             for (k, &t) in times.iter().enumerate() {
                 let single = api::kli_exact(&quat(&p), &quat(&r), t, o()).unwrap().to_vec();
-                assert!(close(&sampled[4 * k..4 * k + 4], &single, 1e-12), "r = {r:?} shortest {shortest} t = {t}");
+                assert!(
+                    close(&sampled[4 * k..4 * k + 4], &single, 1e-12),
+                    "r = {r:?} shortest {shortest} t = {t}"
+                );
             }
         }
     }
@@ -355,21 +437,60 @@ fn batch_errors_name_the_argument_and_element() {
     let n = 5000;
     let (mut starts, ends, mut params) = batch_pairs(n);
     let out = || f64s(&vec![0.0; 4 * n]);
-    let kli_batch = |s: &[f64], p: &[f64], o: JsValue| api::kli_exact_batch(&f64s(s), &f64s(&ends), &f64s(p), &o, None);
-    expect_error(kli_batch(&starts, &params[..10], out()), "starts must hold 4 numbers per t value: 40 for 10 values (got 20000)");
-    expect_error(kli_batch(&starts, &params, f64s(&[0.0; 8])), "out must hold 4 numbers per t value");
+    let kli_batch = |s: &[f64], p: &[f64], o: JsValue| {
+        api::kli_exact_batch(&f64s(s), &f64s(&ends), &f64s(p), &o, None)
+    };
+    expect_error(
+        kli_batch(&starts, &params[..10], out()),
+        "starts must hold 4 numbers per t value: 40 for 10 values (got 20000)",
+    );
+    expect_error(
+        kli_batch(&starts, &params, f64s(&[0.0; 8])),
+        "out must hold 4 numbers per t value",
+    );
     let plain: Array = [1.0, 0.0, 0.0, 0.0].iter().map(|&v| JsValue::from(v)).collect();
-    expect_error(api::slerp_batch(&plain, &f64s(&ends), &f64s(&params), &out(), None), "starts must be a Float64Array (got an array of length 4)");
+    expect_error(
+        api::slerp_batch(&plain, &f64s(&ends), &f64s(&params), &out(), None),
+        "starts must be a Float64Array (got an array of length 4)",
+    );
     params[4321] = -1.0;
-    expect_error(kli_batch(&starts, &params, out()), "t[4321] must be a finite number ≥ 0 (got -1)");
+    expect_error(
+        kli_batch(&starts, &params, out()),
+        "t[4321] must be a finite number ≥ 0 (got -1)",
+    );
     params[4321] = 1.0;
     starts[4 * 4500 + 2] = f64::NAN;
-    expect_error(kli_batch(&starts, &params, out()), "starts[4500] must be a quaternion of 4 finite numbers");
-    expect_error(api::slerp_batch(&f64s(&[1.0, 0.0, 0.0, 0.0]), &f64s(&[-1.0, 0.0, 0.0, 0.0]), &f64s(&[0.5]), &f64s(&[0.0; 4]), options(&[("shortestPath", false.into())])), "starts[0] and ends[0] are antipodal");
-    expect_error(api::kli_sample(&quat(&P), &quat(&R), &f64s(&[0.0, f64::NAN]), None), "times[1] must be a finite number ≥ 0");
+    expect_error(
+        kli_batch(&starts, &params, out()),
+        "starts[4500] must be a quaternion of 4 finite numbers",
+    );
+    expect_error(
+        api::slerp_batch(
+            &f64s(&[1.0, 0.0, 0.0, 0.0]),
+            &f64s(&[-1.0, 0.0, 0.0, 0.0]),
+            &f64s(&[0.5]),
+            &f64s(&[0.0; 4]),
+            options(&[("shortestPath", false.into())]),
+        ),
+        "starts[0] and ends[0] are antipodal",
+    );
+    expect_error(
+        api::kli_sample(&quat(&P), &quat(&R), &f64s(&[0.0, f64::NAN]), None),
+        "times[1] must be a finite number ≥ 0",
+    );
     let text: JsValue = "0,1,2".into();
-    expect_error(api::kli_sample(&quat(&P), &quat(&R), &text, None), "times must be a Float64Array or an array of numbers");
+    expect_error(
+        api::kli_sample(&quat(&P), &quat(&R), &text, None),
+        "times must be a Float64Array or an array of numbers",
+    );
     // nlerp, the baseline, is unit and between the ends.
-    let half = api::nlerp_batch(&f64s(&[1.0, 0.0, 0.0, 0.0]), &f64s(&[0.0, 1.0, 0.0, 0.0]), &f64s(&[0.5]), &f64s(&[0.0; 4])).unwrap().to_vec();
+    let half = api::nlerp_batch(
+        &f64s(&[1.0, 0.0, 0.0, 0.0]),
+        &f64s(&[0.0, 1.0, 0.0, 0.0]),
+        &f64s(&[0.5]),
+        &f64s(&[0.0; 4]),
+    )
+    .unwrap()
+    .to_vec();
     assert!(close(&half, &[0.5_f64.sqrt(), 0.5_f64.sqrt(), 0.0, 0.0], 1e-15));
 }

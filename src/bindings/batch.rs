@@ -6,39 +6,68 @@
 use js_sys::{Float64Array, WebAssembly};
 use wasm_bindgen::prelude::*;
 
-use super::{KliOptionsObject, QuaternionLike, describe, error, invalid, number, options, quaternion};
-use crate::batch::{BatchKind, check_lengths, kli_sample_into, run_batch};
+use super::{
+    KliOptionsObject, QuaternionLike, describe, error, invalid, number, options, quaternion,
+};
 use crate::KliError;
+use crate::batch::{BatchKind, check_lengths, kli_sample_into, run_batch};
 
 /// Pairs per chunk: 4096 × 13 numbers × 8 bytes = 416 KB of scratch.
 const CHUNK: usize = 4096;
 
 fn float64_array<'a>(name: &str, value: &'a JsValue) -> Result<&'a Float64Array, KliError> {
-    value.dyn_ref::<Float64Array>().ok_or_else(|| invalid(name, format!("must be a Float64Array (got {})", describe(value))))
+    value
+        .dyn_ref::<Float64Array>()
+        .ok_or_else(|| invalid(name, format!("must be a Float64Array (got {})", describe(value))))
 }
 
 /// The byte range `[start, end)` of `array` in the module's memory, if it is a view of it.
 fn in_wasm_memory(array: &Float64Array) -> Option<(usize, usize)> {
     let memory: WebAssembly::Memory = wasm_bindgen::memory().unchecked_into();
     let start = array.byte_offset() as usize;
-    (JsValue::from(array.buffer()) == memory.buffer()).then_some((start, start + 8 * array.length() as usize))
+    (JsValue::from(array.buffer()) == memory.buffer())
+        .then_some((start, start + 8 * array.length() as usize))
 }
 
 /// The four arrays in place, when all are views of the module's memory and `out` overlaps no
 /// input (overlapping `&` and `&mut` slices would be undefined behaviour).
-fn in_place(starts: &Float64Array, ends: &Float64Array, parameters: &Float64Array, out: &Float64Array) -> Option<[(usize, usize); 4]> {
-    let ranges = [in_wasm_memory(starts)?, in_wasm_memory(ends)?, in_wasm_memory(parameters)?, in_wasm_memory(out)?];
+fn in_place(
+    starts: &Float64Array,
+    ends: &Float64Array,
+    parameters: &Float64Array,
+    out: &Float64Array,
+) -> Option<[(usize, usize); 4]> {
+    let ranges = [
+        in_wasm_memory(starts)?,
+        in_wasm_memory(ends)?,
+        in_wasm_memory(parameters)?,
+        in_wasm_memory(out)?,
+    ];
     let (o_start, o_end) = ranges[3];
     let disjoint = ranges[..3].iter().all(|&(a, b)| b <= o_start || o_end <= a || a == b);
     disjoint.then_some(ranges)
 }
 
-fn run(kind: BatchKind, starts: &JsValue, ends: &JsValue, parameters: &JsValue, out: &JsValue, shortest_path: bool) -> Result<(), KliError> {
+fn run(
+    kind: BatchKind,
+    starts: &JsValue,
+    ends: &JsValue,
+    parameters: &JsValue,
+    out: &JsValue,
+    shortest_path: bool,
+) -> Result<(), KliError> {
     let parameter_name = kind.parameter_name();
     let (starts, ends) = (float64_array("starts", starts)?, float64_array("ends", ends)?);
-    let (parameters, out) = (float64_array(parameter_name, parameters)?, float64_array("out", out)?);
+    let (parameters, out) =
+        (float64_array(parameter_name, parameters)?, float64_array("out", out)?);
     let n = parameters.length() as usize;
-    check_lengths(starts.length() as usize, ends.length() as usize, n, out.length() as usize, parameter_name)?;
+    check_lengths(
+        starts.length() as usize,
+        ends.length() as usize,
+        n,
+        out.length() as usize,
+        parameter_name,
+    )?;
     if let Some([s, e, x, o]) = in_place(starts, ends, parameters, out) {
         let slice = |(a, b): (usize, usize)| -> &[f64] {
             // SAFETY: a live Float64Array view of our memory: aligned, in bounds, and (checked
@@ -50,7 +79,8 @@ fn run(kind: BatchKind, starts: &JsValue, ends: &JsValue, parameters: &JsValue, 
         return run_batch(kind, slice(s), slice(e), slice(x), out, 0, shortest_path);
     }
     let chunk = CHUNK.min(n);
-    let (mut p, mut r, mut x, mut q) = (vec![0.0; 4 * chunk], vec![0.0; 4 * chunk], vec![0.0; chunk], vec![0.0; 4 * chunk]);
+    let (mut p, mut r, mut x, mut q) =
+        (vec![0.0; 4 * chunk], vec![0.0; 4 * chunk], vec![0.0; chunk], vec![0.0; 4 * chunk]);
     for first in (0..n).step_by(CHUNK.max(1)) {
         let m = CHUNK.min(n - first);
         let (a, b) = ((4 * first) as u32, (4 * (first + m)) as u32);
@@ -122,7 +152,10 @@ pub fn kli_sample(
     } else if times.is_object() {
         Float64Array::new(times).to_vec()
     } else {
-        return Err(error(invalid("times", format!("must be a Float64Array or an array of numbers (got {})", describe(times)))));
+        return Err(error(invalid(
+            "times",
+            format!("must be a Float64Array or an array of numbers (got {})", describe(times)),
+        )));
     };
     let mut out = vec![0.0; 4 * times.len()];
     kli_sample_into(p, r, &times, &mut out, shortest_path).map_err(error)?;
@@ -145,12 +178,23 @@ impl Float64Buffer {
     /// `length` zeros.
     #[wasm_bindgen(constructor)]
     pub fn new(length: f64) -> Result<Float64Buffer, JsError> {
-        if !(length.is_finite() && length >= 0.0 && length.fract() == 0.0 && length <= MAX_BUFFER as f64) {
-            return Err(error(invalid("length", format!("must be a whole number from 0 to {MAX_BUFFER} (got {})", number(length)))));
+        if !(length.is_finite()
+            && length >= 0.0
+            && length.fract() == 0.0
+            && length <= MAX_BUFFER as f64)
+        {
+            return Err(error(invalid(
+                "length",
+                format!("must be a whole number from 0 to {MAX_BUFFER} (got {})", number(length)),
+            )));
         }
         let mut data = Vec::new();
-        data.try_reserve_exact(length as usize)
-            .map_err(|_| error(invalid("length", format!("{} numbers do not fit in the module's memory", number(length)))))?;
+        data.try_reserve_exact(length as usize).map_err(|_| {
+            error(invalid(
+                "length",
+                format!("{} numbers do not fit in the module's memory", number(length)),
+            ))
+        })?;
         data.resize(length as usize, 0.0);
         Ok(Float64Buffer { data })
     }

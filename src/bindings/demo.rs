@@ -26,7 +26,11 @@ pub struct Demo {
 impl Demo {
     /// Runs KLI from p to r with the same arguments, checks and errors as `kli`.
     #[wasm_bindgen(constructor)]
-    pub fn new(p: &QuaternionLike, r: &QuaternionLike, options: Option<KliOptionsObject>) -> Result<Demo, JsError> {
+    pub fn new(
+        p: &QuaternionLike,
+        r: &QuaternionLike,
+        options: Option<KliOptionsObject>,
+    ) -> Result<Demo, JsError> {
         let options = self::options(options).map_err(error)?;
         let (p, r) = (quaternion("p", p).map_err(error)?, quaternion("r", r).map_err(error)?);
         let path = crate::kli(p, r, &options).map_err(error)?;
@@ -83,7 +87,14 @@ impl Demo {
 
     /// The rotating object at t: KLI, and SLERP at s = t/T beside it (Fig. 2, live).
     #[wasm_bindgen(js_name = drawObject)]
-    pub fn draw_object(&self, ctx: &CanvasRenderingContext2d, width: f64, height: f64, pixel_ratio: f64, t: f64) {
+    pub fn draw_object(
+        &self,
+        ctx: &CanvasRenderingContext2d,
+        width: f64,
+        height: f64,
+        pixel_ratio: f64,
+        t: f64,
+    ) {
         let t = finite(t);
         let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
         let camera = object_camera();
@@ -91,7 +102,11 @@ impl Demo {
         let (w, h) = if side_by_side { (width / 2.0, height) } else { (width, height / 2.0) };
         let panels = [
             (self.scene.kli_at(t), KLI, format!("KLI  t = {}", fixed(t, 2))),
-            (self.scene.slerp_at(t), SLERP, format!("SLERP  s = t/T = {}", fixed(self.scene.slerp_parameter(t), 3))),
+            (
+                self.scene.slerp_at(t),
+                SLERP,
+                format!("SLERP  s = t/T = {}", fixed(self.scene.slerp_parameter(t), 3)),
+            ),
         ];
         for (i, (q, color, label)) in panels.iter().enumerate() {
             let (left, top) = if side_by_side { (i as f64 * w, 0.0) } else { (0.0, i as f64 * h) };
@@ -103,7 +118,13 @@ impl Demo {
 
     /// The object at each of Table 1's moments, in a row (Fig. 2).
     #[wasm_bindgen(js_name = drawFilmstrip)]
-    pub fn draw_filmstrip(&self, ctx: &CanvasRenderingContext2d, width: f64, height: f64, pixel_ratio: f64) {
+    pub fn draw_filmstrip(
+        &self,
+        ctx: &CanvasRenderingContext2d,
+        width: f64,
+        height: f64,
+        pixel_ratio: f64,
+    ) {
         let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
         let camera = object_camera();
         let moments = self.scene.moments();
@@ -112,8 +133,18 @@ impl Demo {
             let left = i as f64 * cell;
             let viewport = Viewport::fitting(left, 0.0, cell, height - 16.0, 1.6);
             draw_object(&pen, &viewport, &camera, &self.mesh, self.scene.kli_at(t), false);
-            let label = if i + 1 == moments.len() { format!("T = {}", fixed(t, 2)) } else { format!("t = {}", number(t)) };
-            pen.text(&label, (left + 0.5 * cell, height - 9.0), if i + 1 == moments.len() { INK } else { MUTED }, 12.0, "center");
+            let label = if i + 1 == moments.len() {
+                format!("T = {}", fixed(t, 2))
+            } else {
+                format!("t = {}", number(t))
+            };
+            pen.text(
+                &label,
+                (left + 0.5 * cell, height - 9.0),
+                if i + 1 == moments.len() { INK } else { MUTED },
+                12.0,
+                "center",
+            );
         }
     }
 
@@ -121,29 +152,70 @@ impl Demo {
     /// current time: draw this when the scene or the view changes, then `drawSphereTime` over
     /// (a copy of) it each frame.
     #[wasm_bindgen(js_name = drawSphere)]
-    pub fn draw_sphere(&self, ctx: &CanvasRenderingContext2d, width: f64, height: f64, pixel_ratio: f64, azimuth: f64, elevation: f64) {
+    pub fn draw_sphere(
+        &self,
+        ctx: &CanvasRenderingContext2d,
+        width: f64,
+        height: f64,
+        pixel_ratio: f64,
+        azimuth: f64,
+        elevation: f64,
+    ) {
         let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
-        draw_sphere(&pen, &sphere_viewport(width, height), &Camera::orbit(azimuth, elevation), &self.scene);
+        draw_sphere(
+            &pen,
+            &sphere_viewport(width, height),
+            &Camera::orbit(azimuth, elevation),
+            &self.scene,
+        );
     }
 
     /// The KLI and SLERP points at t over a drawing of `drawSphere` with the same view.
     #[wasm_bindgen(js_name = drawSphereTime)]
     #[allow(clippy::too_many_arguments)]
-    pub fn draw_sphere_time(&self, ctx: &CanvasRenderingContext2d, width: f64, height: f64, pixel_ratio: f64, t: f64, azimuth: f64, elevation: f64) {
+    pub fn draw_sphere_time(
+        &self,
+        ctx: &CanvasRenderingContext2d,
+        width: f64,
+        height: f64,
+        pixel_ratio: f64,
+        t: f64,
+        azimuth: f64,
+        elevation: f64,
+    ) {
         let pen = Pen::over(ctx, pixel_ratio);
-        draw_sphere_cursor(&pen, &sphere_viewport(width, height), &Camera::orbit(azimuth, elevation), &self.scene, finite(t));
+        draw_sphere_cursor(
+            &pen,
+            &sphere_viewport(width, height),
+            &Camera::orbit(azimuth, elevation),
+            &self.scene,
+            finite(t),
+        );
     }
 
     /// The distance, time-warp and |q|-drift plots, without the current time (see `drawPlotsTime`).
     #[wasm_bindgen(js_name = drawPlots)]
-    pub fn draw_plots(&self, ctx: &CanvasRenderingContext2d, width: f64, height: f64, pixel_ratio: f64) {
+    pub fn draw_plots(
+        &self,
+        ctx: &CanvasRenderingContext2d,
+        width: f64,
+        height: f64,
+        pixel_ratio: f64,
+    ) {
         let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
         draw_plots(&pen, width, height, &self.scene);
     }
 
     /// The current time t as a line on each plot, over a drawing of `drawPlots`.
     #[wasm_bindgen(js_name = drawPlotsTime)]
-    pub fn draw_plots_time(&self, ctx: &CanvasRenderingContext2d, width: f64, height: f64, pixel_ratio: f64, t: f64) {
+    pub fn draw_plots_time(
+        &self,
+        ctx: &CanvasRenderingContext2d,
+        width: f64,
+        height: f64,
+        pixel_ratio: f64,
+        t: f64,
+    ) {
         draw_plot_cursors(&Pen::over(ctx, pixel_ratio), width, height, &self.scene, finite(t));
     }
 

@@ -15,9 +15,9 @@ pub(crate) use crate::render::pen::number;
 
 mod batch;
 mod demo;
+use crate::{Integrator, KliError, KliOptions};
 pub use batch::{Float64Buffer, kli_exact_batch, kli_sample, nlerp_batch, slerp_batch};
 pub use demo::Demo;
-use crate::{Integrator, KliError, KliOptions};
 
 #[wasm_bindgen(typescript_custom_section)]
 const TYPES: &'static str = r#"
@@ -64,7 +64,6 @@ fn error(e: KliError) -> JsError {
     JsError::new(&e.message_with(&number))
 }
 
-
 /// A short description of a JavaScript value for error messages.
 fn describe(value: &JsValue) -> String {
     if let Some(n) = value.as_f64() {
@@ -94,20 +93,33 @@ fn numbers<const N: usize>(name: &str, value: &JsValue, shape: &str) -> Result<[
     let mut out = [0.0; N];
     if let Some(array) = value.dyn_ref::<Float64Array>() {
         if array.length() as usize != N {
-            return Err(invalid(name, format!("must hold {N} numbers {shape} (got {})", array.length())));
+            return Err(invalid(
+                name,
+                format!("must hold {N} numbers {shape} (got {})", array.length()),
+            ));
         }
         array.copy_to(&mut out);
         return Ok(out);
     }
-    let length = if value.is_object() { Reflect::get(value, &"length".into()).ok().and_then(|l| l.as_f64()) } else { None };
+    let length = if value.is_object() {
+        Reflect::get(value, &"length".into()).ok().and_then(|l| l.as_f64())
+    } else {
+        None
+    };
     if length != Some(N as f64) {
-        return Err(invalid(name, format!("must be an array of {N} numbers {shape} (got {})", describe(value))));
+        return Err(invalid(
+            name,
+            format!("must be an array of {N} numbers {shape} (got {})", describe(value)),
+        ));
     }
     for (i, slot) in out.iter_mut().enumerate() {
         let element = Reflect::get_u32(value, i as u32).unwrap_or(JsValue::UNDEFINED);
-        *slot = element
-            .as_f64()
-            .ok_or_else(|| invalid(name, format!("must hold {N} numbers {shape}: element {i} is {}", describe(&element))))?;
+        *slot = element.as_f64().ok_or_else(|| {
+            invalid(
+                name,
+                format!("must hold {N} numbers {shape}: element {i} is {}", describe(&element)),
+            )
+        })?;
     }
     Ok(out)
 }
@@ -126,16 +138,23 @@ const OPTION_KEYS: [&str; 5] = ["tolerance", "step", "maxTime", "integrator", "s
 /// Reads the options object (absent, `undefined` or `null` give the defaults).
 fn options(value: Option<KliOptionsObject>) -> Result<KliOptions, KliError> {
     let mut options = KliOptions::default();
-    let Some(object) = value.map(JsValue::from).filter(|v| !v.is_undefined() && !v.is_null()) else {
+    let Some(object) = value.map(JsValue::from).filter(|v| !v.is_undefined() && !v.is_null())
+    else {
         return Ok(options);
     };
     if !object.is_object() || Array::is_array(&object) {
-        return Err(invalid("options", format!("must be an object like {{ tolerance: 1e-5 }} (got {})", describe(&object))));
+        return Err(invalid(
+            "options",
+            format!("must be an object like {{ tolerance: 1e-5 }} (got {})", describe(&object)),
+        ));
     }
     for key in Object::keys(object.unchecked_ref::<Object>()).iter() {
         let key = key.as_string().unwrap_or_default();
         if !OPTION_KEYS.contains(&key.as_str()) {
-            return Err(invalid("options", format!("has an unknown key \"{key}\"; the keys are {}", OPTION_KEYS.join(", "))));
+            return Err(invalid(
+                "options",
+                format!("has an unknown key \"{key}\"; the keys are {}", OPTION_KEYS.join(", ")),
+            ));
         }
     }
     let field = |key: &str| Reflect::get(&object, &key.into()).unwrap_or(JsValue::UNDEFINED);
@@ -144,7 +163,9 @@ fn options(value: Option<KliOptionsObject>) -> Result<KliOptions, KliError> {
         if v.is_undefined() {
             return Ok(None);
         }
-        v.as_f64().map(Some).ok_or_else(|| invalid(key, format!("must be a number (got {})", describe(&v))))
+        v.as_f64()
+            .map(Some)
+            .ok_or_else(|| invalid(key, format!("must be a number (got {})", describe(&v))))
     };
     if let Some(v) = number("tolerance")? {
         options.tolerance = v;
@@ -162,9 +183,12 @@ fn options(value: Option<KliOptionsObject>) -> Result<KliOptions, KliError> {
     }
     let shortest_path = field("shortestPath");
     if !shortest_path.is_undefined() {
-        options.shortest_path = shortest_path
-            .as_bool()
-            .ok_or_else(|| invalid("shortestPath", format!("must be true or false (got {})", describe(&shortest_path))))?;
+        options.shortest_path = shortest_path.as_bool().ok_or_else(|| {
+            invalid(
+                "shortestPath",
+                format!("must be true or false (got {})", describe(&shortest_path)),
+            )
+        })?;
     }
     options.validate()?;
     Ok(options)
@@ -228,7 +252,11 @@ impl JsKliPath {
 
 /// Runs the KLI algorithm (paper, Algorithm 1) from p towards r.
 #[wasm_bindgen]
-pub fn kli(p: &QuaternionLike, r: &QuaternionLike, options: Option<KliOptionsObject>) -> Result<JsKliPath, JsError> {
+pub fn kli(
+    p: &QuaternionLike,
+    r: &QuaternionLike,
+    options: Option<KliOptionsObject>,
+) -> Result<JsKliPath, JsError> {
     let options = self::options(options).map_err(error)?;
     let (p, r) = (quaternion("p", p).map_err(error)?, quaternion("r", r).map_err(error)?);
     crate::kli(p, r, &options).map(|path| JsKliPath { path }).map_err(error)
@@ -236,7 +264,12 @@ pub fn kli(p: &QuaternionLike, r: &QuaternionLike, options: Option<KliOptionsObj
 
 /// The exact KLI solution q(t) for finite t ≥ 0 (closed form; only `shortestPath` is used).
 #[wasm_bindgen(js_name = kliExact)]
-pub fn kli_exact(p: &QuaternionLike, r: &QuaternionLike, t: f64, options: Option<KliOptionsObject>) -> Result<Vec<f64>, JsError> {
+pub fn kli_exact(
+    p: &QuaternionLike,
+    r: &QuaternionLike,
+    t: f64,
+    options: Option<KliOptionsObject>,
+) -> Result<Vec<f64>, JsError> {
     let options = self::options(options).map_err(error)?;
     let (p, r) = (quaternion("p", p).map_err(error)?, quaternion("r", r).map_err(error)?);
     crate::kli_exact(p, r, t, options.shortest_path).map(to_array).map_err(error)
@@ -244,7 +277,12 @@ pub fn kli_exact(p: &QuaternionLike, r: &QuaternionLike, t: f64, options: Option
 
 /// The SLERP parameter s(t) ∈ [0, 1) with kliExact(p, r, t) = slerp(p, r, s(t)).
 #[wasm_bindgen(js_name = kliToSlerpParameter)]
-pub fn kli_to_slerp_parameter(p: &QuaternionLike, r: &QuaternionLike, t: f64, options: Option<KliOptionsObject>) -> Result<f64, JsError> {
+pub fn kli_to_slerp_parameter(
+    p: &QuaternionLike,
+    r: &QuaternionLike,
+    t: f64,
+    options: Option<KliOptionsObject>,
+) -> Result<f64, JsError> {
     let options = self::options(options).map_err(error)?;
     let (p, r) = (quaternion("p", p).map_err(error)?, quaternion("r", r).map_err(error)?);
     crate::kli_to_slerp_parameter(p, r, t, options.shortest_path).map_err(error)
@@ -252,7 +290,12 @@ pub fn kli_to_slerp_parameter(p: &QuaternionLike, r: &QuaternionLike, t: f64, op
 
 /// T* = ln(tan(φ0/2) / tan(arcsin(ε/2))): the exact first time ||target − q(t)|| < tolerance.
 #[wasm_bindgen(js_name = kliReachTime)]
-pub fn kli_reach_time(p: &QuaternionLike, r: &QuaternionLike, tolerance: f64, options: Option<KliOptionsObject>) -> Result<f64, JsError> {
+pub fn kli_reach_time(
+    p: &QuaternionLike,
+    r: &QuaternionLike,
+    tolerance: f64,
+    options: Option<KliOptionsObject>,
+) -> Result<f64, JsError> {
     let options = self::options(options).map_err(error)?;
     let (p, r) = (quaternion("p", p).map_err(error)?, quaternion("r", r).map_err(error)?);
     crate::kli_reach_time(p, r, tolerance, options.shortest_path).map_err(error)
@@ -260,7 +303,12 @@ pub fn kli_reach_time(p: &QuaternionLike, r: &QuaternionLike, tolerance: f64, op
 
 /// Slerp(p, r; s) (Shoemake); s outside [0, 1] extrapolates along the same great circle.
 #[wasm_bindgen]
-pub fn slerp(p: &QuaternionLike, r: &QuaternionLike, s: f64, options: Option<KliOptionsObject>) -> Result<Vec<f64>, JsError> {
+pub fn slerp(
+    p: &QuaternionLike,
+    r: &QuaternionLike,
+    s: f64,
+    options: Option<KliOptionsObject>,
+) -> Result<Vec<f64>, JsError> {
     let options = self::options(options).map_err(error)?;
     let (p, r) = (quaternion("p", p).map_err(error)?, quaternion("r", r).map_err(error)?);
     crate::slerp(p, r, s, options.shortest_path).map(to_array).map_err(error)
@@ -287,4 +335,3 @@ pub fn from_axis_angle(axis: &Vector3Like, angle: f64) -> Result<Vec<f64>, JsErr
     let axis = DVec3::from_array(numbers("axis", axis, "[x, y, z]").map_err(error)?);
     crate::from_axis_angle(axis, angle).map(to_array).map_err(error)
 }
-

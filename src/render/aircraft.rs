@@ -39,7 +39,8 @@ pub fn aircraft() -> Vec<Face> {
     faces.push(face(FUSELAGE, &back));
     // Wings: swept trapezoids, thin slabs so both sides read as solid.
     for (side, color) in [(1.0, PORT_WING), (-1.0, STARBOARD_WING)] {
-        let outline = [[0.35, 0.12 * side], [-0.05, 1.05 * side], [-0.3, 1.05 * side], [-0.25, 0.12 * side]];
+        let outline =
+            [[0.35, 0.12 * side], [-0.05, 1.05 * side], [-0.3, 1.05 * side], [-0.25, 0.12 * side]];
         let top: Vec<[f64; 3]> = outline.iter().map(|&[x, y]| [x, y, 0.025]).collect();
         let bottom: Vec<[f64; 3]> = outline.iter().map(|&[x, y]| [x, y, -0.025]).collect();
         faces.push(face(color, &top));
@@ -50,9 +51,18 @@ pub fn aircraft() -> Vec<Face> {
         }
     }
     // Tail: a horizontal stabiliser and a fin on top (+z).
-    faces.push(face(TAIL, &[[-0.7, 0.05, 0.0], [-0.92, 0.42, 0.0], [-1.02, 0.42, 0.0], [-0.95, 0.05, 0.0]]));
-    faces.push(face(TAIL, &[[-0.7, -0.05, 0.0], [-0.92, -0.42, 0.0], [-1.02, -0.42, 0.0], [-0.95, -0.05, 0.0]]));
-    faces.push(face(TAIL, &[[-0.65, 0.0, 0.05], [-0.95, 0.0, 0.05], [-1.05, 0.0, 0.5], [-0.93, 0.0, 0.5]]));
+    faces.push(face(
+        TAIL,
+        &[[-0.7, 0.05, 0.0], [-0.92, 0.42, 0.0], [-1.02, 0.42, 0.0], [-0.95, 0.05, 0.0]],
+    ));
+    faces.push(face(
+        TAIL,
+        &[[-0.7, -0.05, 0.0], [-0.92, -0.42, 0.0], [-1.02, -0.42, 0.0], [-0.95, -0.05, 0.0]],
+    ));
+    faces.push(face(
+        TAIL,
+        &[[-0.65, 0.0, 0.05], [-0.95, 0.0, 0.05], [-1.05, 0.0, 0.5], [-0.93, 0.0, 0.5]],
+    ));
     faces
 }
 
@@ -80,7 +90,12 @@ mod tests {
     fn nose_is_plus_x_fin_plus_z_port_plus_y() {
         let faces = aircraft();
         let extreme = |axis: DVec3, color: Rgb| {
-            faces.iter().filter(|f| f.color == color).flat_map(|f| f.vertices.iter()).map(|v| v.dot(axis)).fold(f64::MIN, f64::max)
+            faces
+                .iter()
+                .filter(|f| f.color == color)
+                .flat_map(|f| f.vertices.iter())
+                .map(|v| v.dot(axis))
+                .fold(f64::MIN, f64::max)
         };
         assert!(extreme(DVec3::X, NOSE) > extreme(DVec3::X, FUSELAGE));
         assert!(extreme(DVec3::Z, TAIL) > 0.4 && extreme(-DVec3::Z, TAIL) <= 0.0);

@@ -27,7 +27,11 @@ impl Camera {
         let limit = 89.9_f64.to_radians();
         let elevation = if elevation.is_finite() { elevation.max(-limit).min(limit) } else { 0.0 };
         let azimuth = if azimuth.is_finite() { azimuth } else { 0.0 };
-        let toward_viewer = DVec3::new(elevation.cos() * azimuth.cos(), elevation.cos() * azimuth.sin(), elevation.sin());
+        let toward_viewer = DVec3::new(
+            elevation.cos() * azimuth.cos(),
+            elevation.cos() * azimuth.sin(),
+            elevation.sin(),
+        );
         let right = DVec3::Z.cross(toward_viewer).normalize();
         Self { right, up: toward_viewer.cross(right), toward_viewer }
     }
@@ -64,7 +68,10 @@ impl Viewport {
     /// Screen pixel of a projected point.
     #[inline]
     pub fn pixel(&self, p: Projected) -> (f64, f64) {
-        (self.left + 0.5 * self.width + self.scale * p.x, self.top + 0.5 * self.height - self.scale * p.y)
+        (
+            self.left + 0.5 * self.width + self.scale * p.x,
+            self.top + 0.5 * self.height - self.scale * p.y,
+        )
     }
 }
 

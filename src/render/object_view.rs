@@ -20,7 +20,14 @@ struct Painted {
 }
 
 /// Draws `mesh` rotated by `q` (unit) into `viewport`, and its body axes when `axes` is true.
-pub fn draw_object(pen: &Pen, viewport: &Viewport, camera: &Camera, mesh: &[Face], q: DQuat, axes: bool) {
+pub fn draw_object(
+    pen: &Pen,
+    viewport: &Viewport,
+    camera: &Camera,
+    mesh: &[Face],
+    q: DQuat,
+    axes: bool,
+) {
     let light = (camera.toward_viewer() + DVec3::new(0.0, 0.0, 0.9)).normalize();
     let mut faces: Vec<Painted> = mesh
         .iter()
@@ -31,7 +38,8 @@ pub fn draw_object(pen: &Pen, viewport: &Viewport, camera: &Camera, mesh: &[Face
                 n = -n; // double-sided: light the side we see
             }
             let brightness = 0.45 + 0.55 * n.dot(light).max(0.0);
-            let depth = turned.iter().map(|&v| camera.project(v).depth).sum::<f64>() / turned.len() as f64;
+            let depth =
+                turned.iter().map(|&v| camera.project(v).depth).sum::<f64>() / turned.len() as f64;
             let outline = turned.iter().map(|&v| viewport.pixel(camera.project(v))).collect();
             Painted { depth, outline, color: shade(face.color, brightness) }
         })
@@ -50,7 +58,9 @@ pub fn draw_object(pen: &Pen, viewport: &Viewport, camera: &Camera, mesh: &[Face
     }
     if axes {
         let origin = viewport.pixel(camera.project(DVec3::ZERO));
-        for (axis, color, label) in [(DVec3::X, AXIS_X, "x"), (DVec3::Y, AXIS_Y, "y"), (DVec3::Z, AXIS_Z, "z")] {
+        for (axis, color, label) in
+            [(DVec3::X, AXIS_X, "x"), (DVec3::Y, AXIS_Y, "y"), (DVec3::Z, AXIS_Z, "z")]
+        {
             let tip = q * (axis * 1.35);
             let end = viewport.pixel(camera.project(tip));
             pen.line(origin, end, color, 2.0, &[]);

@@ -47,7 +47,13 @@ pub fn shade(color: Rgb, light: f64) -> String {
 impl<'a> Pen<'a> {
     /// Resets the transform to `pixel_ratio` (so the views draw in CSS pixels on a high-DPI
     /// backing store) and fills the whole canvas with `background`.
-    pub fn begin(ctx: &'a CanvasRenderingContext2d, width: f64, height: f64, pixel_ratio: f64, background: &str) -> Self {
+    pub fn begin(
+        ctx: &'a CanvasRenderingContext2d,
+        width: f64,
+        height: f64,
+        pixel_ratio: f64,
+        background: &str,
+    ) -> Self {
         let ratio = if pixel_ratio.is_finite() && pixel_ratio > 0.0 { pixel_ratio } else { 1.0 };
         let _ = ctx.set_transform(ratio, 0.0, 0.0, ratio, 0.0, 0.0);
         ctx.set_global_alpha(1.0);
@@ -129,7 +135,9 @@ impl<'a> Pen<'a> {
 
     /// A disc shaded as a sphere lit from the upper left.
     pub fn shaded_disc(&self, (x, y): (f64, f64), r: f64, light: &str, dark: &str) {
-        if let Ok(gradient) = self.ctx.create_radial_gradient(x - 0.35 * r, y - 0.4 * r, 0.05 * r, x, y, r) {
+        if let Ok(gradient) =
+            self.ctx.create_radial_gradient(x - 0.35 * r, y - 0.4 * r, 0.05 * r, x, y, r)
+        {
             let _ = gradient.add_color_stop(0.0, light);
             let _ = gradient.add_color_stop(1.0, dark);
             self.ctx.set_fill_style_canvas_gradient(&gradient);
@@ -142,7 +150,11 @@ impl<'a> Pen<'a> {
     /// Text at `(x, y)`; `align` is "left", "center" or "right", the baseline is the middle.
     pub fn text(&self, text: &str, (x, y): (f64, f64), color: &str, size: f64, align: &str) {
         let tenths = (size * 10.0).round() as u32;
-        self.ctx.set_font(&format!("{}.{}px system-ui, -apple-system, 'Segoe UI', sans-serif", tenths / 10, tenths % 10));
+        self.ctx.set_font(&format!(
+            "{}.{}px system-ui, -apple-system, 'Segoe UI', sans-serif",
+            tenths / 10,
+            tenths % 10
+        ));
         self.ctx.set_text_align(align);
         self.ctx.set_text_baseline("middle");
         self.ctx.set_fill_style_str(color);

@@ -2,8 +2,8 @@
 //! `T` and `T*`; the time warp `s(t)` against SLERP's `t / T`; the drift of `|q|` from 1.
 
 use super::pen::{GRID, INK, KLI, MUTED, Pen, SLERP, exponential, fixed};
-use super::ticks::{decades, nice_step};
 use super::scene::Scene;
+use super::ticks::{decades, nice_step};
 
 /// A plot frame: data ranges mapped onto a rectangle of the canvas.
 struct Panel {
@@ -39,12 +39,32 @@ impl Panel {
             pen.text(&trim(x), (px, py + 12.0), MUTED, 10.5, "center");
             x += step;
         }
-        pen.line((self.left, self.top + self.height), (self.left + self.width, self.top + self.height), MUTED, 1.0, &[]);
+        pen.line(
+            (self.left, self.top + self.height),
+            (self.left + self.width, self.top + self.height),
+            MUTED,
+            1.0,
+            &[],
+        );
         pen.line((self.left, self.top), (self.left, self.top + self.height), MUTED, 1.0, &[]);
-        pen.text("t", (self.left + self.width + 8.0, self.top + self.height), MUTED, 11.0, "center");
+        pen.text(
+            "t",
+            (self.left + self.width + 8.0, self.top + self.height),
+            MUTED,
+            11.0,
+            "center",
+        );
     }
 
-    fn series(&self, pen: &Pen, xs: &[f64], ys: impl Iterator<Item = f64>, color: &str, width: f64, dash: &[f64]) {
+    fn series(
+        &self,
+        pen: &Pen,
+        xs: &[f64],
+        ys: impl Iterator<Item = f64>,
+        color: &str,
+        width: f64,
+        dash: &[f64],
+    ) {
         let points: Vec<(f64, f64)> = xs.iter().zip(ys).map(|(&x, y)| self.at(x, y)).collect();
         pen.polyline(&points, color, width, dash);
     }
@@ -99,18 +119,38 @@ pub fn draw_plots(pen: &Pen, width: f64, height: f64, scene: &Scene) {
     panel.series(pen, times, log10_floor(scene.distances(), low as f64), KLI, 2.0, &[]);
     let (x0, ty) = panel.at(0.0, tolerance.log10());
     pen.line((x0, ty), (panel.left + panel.width, ty), MUTED, 1.0, &[4.0, 3.0]);
-    pen.text(&format!("ε = {}", exponential(tolerance, 0)), (panel.left + panel.width, ty - 8.0), MUTED, 10.5, "right");
+    pen.text(
+        &format!("ε = {}", exponential(tolerance, 0)),
+        (panel.left + panel.width, ty - 8.0),
+        MUTED,
+        10.5,
+        "right",
+    );
     let (tx, _) = panel.at(final_time, 0.0);
     pen.line((tx, panel.top), (tx, panel.top + panel.height), KLI, 1.0, &[]);
     let (sx, _) = panel.at(scene.predicted_time(), 0.0);
     pen.line((sx, panel.top), (sx, panel.top + panel.height), INK, 1.0, &[3.0, 3.0]);
-    pen.text(&format!("T = {}  T* = {}", fixed(final_time, 2), fixed(scene.predicted_time(), 4)), (panel.left + panel.width, panel.top + 8.0), INK, 10.5, "right");
+    pen.text(
+        &format!("T = {}  T* = {}", fixed(final_time, 2), fixed(scene.predicted_time(), 4)),
+        (panel.left + panel.width, panel.top + 8.0),
+        INK,
+        10.5,
+        "right",
+    );
 
     // 2. The time warp s(t) of KLI against SLERP's linear clock.
     let panel = cell(1, x_max, 0.0, 1.0);
-    let ticks: Vec<(f64, String)> = [0.0, 0.25, 0.5, 0.75, 1.0].iter().map(|&y| (y, trim(y))).collect();
+    let ticks: Vec<(f64, String)> =
+        [0.0, 0.25, 0.5, 0.75, 1.0].iter().map(|&y| (y, trim(y))).collect();
     panel.frame(pen, "SLERP parameter s(t)", &ticks);
-    panel.series(pen, times, times.iter().map(|&x| scene.slerp_parameter(x)), SLERP, 1.5, &[5.0, 4.0]);
+    panel.series(
+        pen,
+        times,
+        times.iter().map(|&x| scene.slerp_parameter(x)),
+        SLERP,
+        1.5,
+        &[5.0, 4.0],
+    );
     panel.series(pen, times, scene.warp().iter().copied(), KLI, 2.0, &[]);
     pen.text("KLI", panel.at(x_max * 0.08, 0.93), KLI, 11.0, "left");
     pen.text("SLERP, s = t/T", panel.at(x_max * 0.55, 0.3), SLERP, 11.0, "left");
@@ -120,9 +160,19 @@ pub fn draw_plots(pen: &Pen, width: f64, height: f64, scene: &Scene) {
     let high = if largest > 0.0 { (largest.log10().ceil() as i32).clamp(-15, 0) } else { -15 };
     let panel = cell(2, x_max, -17.0, high as f64);
     let integrator = scene.path().options().integrator;
-    panel.frame(pen, &format!("| |q| − 1 |, {} (log)", integrator.name()), &decade_ticks(-17, high, (high + 17) / 5));
+    panel.frame(
+        pen,
+        &format!("| |q| − 1 |, {} (log)", integrator.name()),
+        &decade_ticks(-17, high, (high + 17) / 5),
+    );
     panel.series(pen, times, log10_floor(scene.norm_drift(), -17.0), KLI, 2.0, &[]);
-    pen.text(&format!("max {}", exponential(largest, 1)), (panel.left + panel.width, panel.top + 8.0), INK, 10.5, "right");
+    pen.text(
+        &format!("max {}", exponential(largest, 1)),
+        (panel.left + panel.width, panel.top + 8.0),
+        INK,
+        10.5,
+        "right",
+    );
 }
 
 /// The current time `t` as a dotted vertical line on each plot, over [`draw_plots`]' drawing.

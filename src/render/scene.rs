@@ -4,10 +4,10 @@
 
 use glam::{DQuat, DVec3};
 
+use crate::KliPath;
 use crate::closed_form;
 use crate::hopf::hopf;
 use crate::slerp;
-use crate::KliPath;
 
 /// The moments of the paper's Table 1 (and Fig. 2), before the final time `T`.
 pub const PAPER_MOMENTS: [f64; 7] = [0.0, 0.2, 0.4, 0.55, 0.85, 1.2, 1.8];
@@ -118,7 +118,10 @@ mod tests {
     use crate::{KliOptions, from_wxyz, kli};
 
     fn paper() -> Scene {
-        Scene::new(kli(from_wxyz([0.0, 0.0, 0.0, 1.0]), from_wxyz([0.5; 4]), &KliOptions::default()).unwrap())
+        Scene::new(
+            kli(from_wxyz([0.0, 0.0, 0.0, 1.0]), from_wxyz([0.5; 4]), &KliOptions::default())
+                .unwrap(),
+        )
     }
 
     #[test]
@@ -142,7 +145,9 @@ mod tests {
         // Table 1 (MATH.md) at t = 1.2 for KLI.
         assert!((scene.kli_at(1.2) - from_wxyz([0.3732, 0.3732, 0.3732, 0.7630])).length() < 1e-4);
         let s = scene.slerp_at(1.2);
-        let expected = crate::slerp(from_wxyz([0.0, 0.0, 0.0, 1.0]), from_wxyz([0.5; 4]), 1.2 / 11.66, true).unwrap();
+        let expected =
+            crate::slerp(from_wxyz([0.0, 0.0, 0.0, 1.0]), from_wxyz([0.5; 4]), 1.2 / 11.66, true)
+                .unwrap();
         assert!((s - expected).length() < 1e-12);
     }
 

@@ -25,7 +25,14 @@ enum Side {
 /// `(colour, width, dash)` of a line.
 type Stroke<'a> = (&'a str, f64, &'a [f64]);
 
-fn polyline_on(pen: &Pen, viewport: &Viewport, camera: &Camera, points: &[DVec3], side: Side, (color, width, dash): Stroke) {
+fn polyline_on(
+    pen: &Pen,
+    viewport: &Viewport,
+    camera: &Camera,
+    points: &[DVec3],
+    side: Side,
+    (color, width, dash): Stroke,
+) {
     let mut run: Vec<(f64, f64)> = Vec::new();
     for &p in points {
         let projected = camera.project(p);
@@ -90,7 +97,9 @@ pub fn draw_sphere(pen: &Pen, viewport: &Viewport, camera: &Camera, scene: &Scen
     for line in &grid {
         polyline_on(pen, viewport, camera, line, Side::Front, ("#c3ccd5", 1.0, &[]));
     }
-    for (axis, color, label) in [(DVec3::X, AXIS_X, "x"), (DVec3::Y, AXIS_Y, "y"), (DVec3::Z, AXIS_Z, "z")] {
+    for (axis, color, label) in
+        [(DVec3::X, AXIS_X, "x"), (DVec3::Y, AXIS_Y, "y"), (DVec3::Z, AXIS_Z, "z")]
+    {
         let alpha = if in_front(axis) { 1.0 } else { 0.35 };
         pen.alpha(alpha);
         pen.line(at(axis * 0.94), at(axis * 1.1), color, 2.0, &[]);
@@ -118,7 +127,13 @@ pub fn draw_sphere_cursor(pen: &Pen, viewport: &Viewport, camera: &Camera, scene
     let at = |p: DVec3| viewport.pixel(camera.project(p));
     pen.disc(at(hopf(scene.slerp_at(t))), 7.0, None, Some((SLERP, 2.5)));
     pen.disc(at(hopf(scene.kli_at(t))), 7.5, Some(KLI), Some((INK, 2.0)));
-    pen.text(&format!("t = {}", fixed(t, 2)), (viewport.left + 8.0, viewport.top + 12.0), MUTED, 12.0, "left");
+    pen.text(
+        &format!("t = {}", fixed(t, 2)),
+        (viewport.left + 8.0, viewport.top + 12.0),
+        MUTED,
+        12.0,
+        "left",
+    );
 }
 
 fn offset((x, y): (f64, f64), dx: f64, dy: f64) -> (f64, f64) {

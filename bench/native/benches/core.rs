@@ -15,7 +15,8 @@ fn interpolation(c: &mut Criterion) {
     let nalgebra_pairs: Vec<_> = pairs
         .iter()
         .map(|&(p, r, s)| {
-            let q = |q: kli::DQuat| UnitQuaternion::new_normalize(Quaternion::new(q.w, q.x, q.y, q.z));
+            let q =
+                |q: kli::DQuat| UnitQuaternion::new_normalize(Quaternion::new(q.w, q.x, q.y, q.z));
             (q(p), q(r), s)
         })
         .collect();
@@ -32,7 +33,9 @@ fn interpolation(c: &mut Criterion) {
     group.bench_function("kli::batch::slerp_batch", |b| {
         b.iter(|| slerp_batch(black_box(&starts), &ends, &params, &mut out, true).unwrap())
     });
-    group.bench_function("glam DQuat::slerp", |b| b.iter(|| pairs.iter().map(|&(p, r, s)| p.slerp(r, s).w).sum::<f64>()));
+    group.bench_function("glam DQuat::slerp", |b| {
+        b.iter(|| pairs.iter().map(|&(p, r, s)| p.slerp(r, s).w).sum::<f64>())
+    });
     group.bench_function("nalgebra UnitQuaternion::slerp", |b| {
         b.iter(|| nalgebra_pairs.iter().map(|(p, r, s)| p.slerp(r, *s).w).sum::<f64>())
     });
@@ -41,7 +44,9 @@ fn interpolation(c: &mut Criterion) {
     let mut group = c.benchmark_group("KLI closed form of 10k pairs");
     group.throughput(Throughput::Elements(PAIRS as u64));
     group.bench_function("kli::kli_exact (one call each)", |b| {
-        b.iter(|| pairs.iter().map(|&(p, r, t)| kli_exact(p, r, 12.0 * t, true).unwrap().w).sum::<f64>())
+        b.iter(|| {
+            pairs.iter().map(|&(p, r, t)| kli_exact(p, r, 12.0 * t, true).unwrap().w).sum::<f64>()
+        })
     });
     group.bench_function("kli::batch::kli_exact_batch", |b| {
         b.iter(|| kli_exact_batch(black_box(&starts), &ends, &params, &mut out, true).unwrap())
@@ -54,7 +59,9 @@ fn algorithm_1(c: &mut Criterion) {
     let mut group = c.benchmark_group("Algorithm 1, paper's example (1166 steps)");
     for integrator in Integrator::ALL {
         let options = KliOptions { integrator, ..Default::default() };
-        group.bench_function(integrator.name(), |b| b.iter(|| kli(black_box(p), r, &options).unwrap().steps()));
+        group.bench_function(integrator.name(), |b| {
+            b.iter(|| kli(black_box(p), r, &options).unwrap().steps())
+        });
     }
     group.finish();
 }
