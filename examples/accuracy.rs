@@ -8,7 +8,7 @@ fn deviation(p: DQuat, r: DQuat, options: &KliOptions) -> Option<(f64, f64, f64)
     let path = kli(p, r, options).ok()?;
     let (mut error, mut drift) = (0.0_f64, 0.0_f64);
     for (&t, &q) in path.times().iter().zip(path.quaternions()) {
-        error = error.max((q - path.at(t).ok()?).length());
+        error = error.max((q - path.exact_at(t).ok()?).length());
         drift = drift.max((q.length() - 1.0).abs());
     }
     Some((path.final_time(), error, drift))

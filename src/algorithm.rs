@@ -6,10 +6,11 @@
 use glam::{DQuat, DVec3};
 
 use crate::closed_form;
-use crate::error::{KliError, require_positive};
+use crate::error::{ErrorKind, KliError, Requirement, require};
 use crate::great_arc::GreatArc;
 use crate::hopf::hopf;
 use crate::integrator::Integrator;
+use crate::quaternion::norm;
 
 /// The most samples a path may hold (40 MB of times and quaternions).
 pub const MAX_SAMPLES: usize = 1_000_000;
@@ -25,7 +26,7 @@ pub struct KliOptions {
     pub tolerance: f64,
     /// `δ`: the time step.
     pub step: f64,
-    /// Give up (with [`KliError::NotReached`]) past this time.
+    /// Give up (with [`ErrorKind::NotReached`]) past this time.
     pub max_time: f64,
     /// How each step is taken.
     pub integrator: Integrator,
@@ -48,10 +49,15 @@ impl Default for KliOptions {
 impl KliOptions {
     /// Checks that `tolerance`, `step` and `max_time` are finite and positive.
     pub fn validate(&self) -> Result<(), KliError> {
-        require_positive("tolerance", self.tolerance)?;
-        require_positive("step", self.step)?;
-        require_positive("maxTime", self.max_time)?;
+        require("tolerance", self.tolerance, Requirement::Positive)?;
+        require("step", self.step, Requirement::Positive)?;
+        require("max_time", self.max_time, Requirement::Positive)?;
         Ok(())
+    }
+
+    /// The most steps `n` with `n δ ≤ max_time`, forgiving the rounding of `max_time / δ`.
+    fn steps_allowed(&self) -> f64 {
+        (self.max_time / self.step * (1.0 + 4.0 * f64::EPSILON)).floor()
     }
 }
 
@@ -64,58 +70,81 @@ pub struct KliPath {
     options: KliOptions,
 }
 
-/// Runs Algorithm 1 from `p` towards `r` (inputs are normalised).
+/// Runs Algorithm 1 from `p` towards `r` (inputs are normalised). The last sample is within
+/// `tolerance` of the target, or the call fails: it never returns a path that falls short.
 pub fn kli(p: DQuat, r: DQuat, options: &KliOptions) -> Result<KliPath, KliError> {
     options.validate()?;
     let arc = closed_form::arc(p, r, options.shortest_path)?;
-    let target = arc.target();
-    let KliOptions { tolerance, step, max_time, integrator, .. } = *options;
-
-    // n δ ≤ max_time, forgiving the rounding of max_time / step.
-    let steps_allowed = (max_time / step * (1.0 + 4.0 * f64::EPSILON)).floor();
-    let last = steps_allowed.min((MAX_SAMPLES - 1) as f64) as usize;
+    let KliOptions { tolerance, step, integrator, .. } = *options;
+    let last = options.steps_allowed().min((MAX_SAMPLES - 1) as f64) as usize;
     let predicted = closed_form::reach_time(&arc, tolerance);
-    let expected = (predicted / step).ceil() as usize + 2;
-    let capacity = expected.min(last + 1);
-    let (mut times, mut quaternions) = (Vec::with_capacity(capacity), Vec::with_capacity(capacity));
-
+    let capacity = ((predicted / step).ceil() as usize + 2).min(last + 1);
+    let mut path = KliPath {
+        times: Vec::with_capacity(capacity),
+        quaternions: Vec::with_capacity(capacity),
+        arc,
+        options: *options,
+    };
+    let target = arc.target();
     let mut q = arc.start();
     let mut closest = f64::INFINITY;
     for n in 0..=last {
-        times.push(n as f64 * step);
-        quaternions.push(q);
-        let distance = (target - q).length();
+        path.times.push(n as f64 * step);
+        path.quaternions.push(q);
+        // `norm`, not `length`: a distance of 1e-312 must not round to 0 and pass any tolerance.
+        let distance = norm(target - q);
         if distance < tolerance {
-            return Ok(KliPath { times, quaternions, arc, options: *options });
+            return Ok(path);
         }
         closest = closest.min(distance);
         let next = integrator.step(q, target, step);
-        // Written so that a NaN norm counts as having left.
-        if !matches!(
-            (next.length() - 1.0).abs().partial_cmp(&LEFT_SPHERE),
-            Some(std::cmp::Ordering::Less)
-        ) {
-            let time = (n + 1) as f64 * step;
-            return Err(KliError::LeftSphere {
-                integrator: integrator.name(),
-                time,
-                norm: next.length(),
-            });
-        }
+        check_on_sphere(next, &arc, options, (n + 1) as f64 * step)?;
         if next == q {
             // Stuck: at the antipode (a numerical equilibrium), or at the target closer than
             // f64 resolves, where looping on to max_time would change nothing.
             if distance > 1.0 {
-                return Err(KliError::Stalled { time: n as f64 * step, distance });
+                let kind = ErrorKind::Stalled { time: n as f64 * step, distance };
+                return Err(KliError::new("shortest_path", kind));
             }
             break;
         }
         q = next;
     }
-    if quaternions.len() == last + 1 && steps_allowed > last as f64 {
-        Err(KliError::TooManySteps { steps: steps_allowed, limit: MAX_SAMPLES - 1 })
+    Err(gave_up(&path, closest, predicted))
+}
+
+/// Fails when `q`, reached at `time`, has left S³ (a NaN norm counts as having left). On the
+/// long way round (`p·r < 0`) the sphere repels rounding near `-r` (the integrator's fault);
+/// elsewhere it attracts, and only a step beyond the integrator's stability leaves it.
+fn check_on_sphere(
+    q: DQuat,
+    arc: &GreatArc,
+    options: &KliOptions,
+    time: f64,
+) -> Result<(), KliError> {
+    let norm = q.length();
+    if (norm - 1.0).abs() < LEFT_SPHERE {
+        return Ok(());
+    }
+    let integrator = options.integrator.name();
+    Err(if arc.start().dot(arc.target()) < 0.0 {
+        KliError::new("integrator", ErrorKind::LeftSphere { integrator, time, norm })
     } else {
-        Err(KliError::NotReached { tolerance, max_time, closest, predicted })
+        let kind = ErrorKind::Unstable { integrator, step: options.step, time, norm };
+        KliError::new("step", kind)
+    })
+}
+
+/// Why the loop ended without meeting the tolerance: it ran into the sample limit, or into
+/// `max_time` (or stopped moving) with `closest` the nearest it came.
+fn gave_up(path: &KliPath, closest: f64, predicted: f64) -> KliError {
+    let KliOptions { tolerance, max_time, .. } = path.options;
+    let steps = path.options.steps_allowed();
+    if path.times.len() == MAX_SAMPLES && steps > (MAX_SAMPLES - 1) as f64 {
+        KliError::new("step", ErrorKind::TooManySteps { steps, limit: MAX_SAMPLES - 1 })
+    } else {
+        let kind = ErrorKind::NotReached { tolerance, max_time, closest, predicted };
+        KliError::new("tolerance", kind)
     }
 }
 
@@ -160,9 +189,10 @@ impl KliPath {
         &self.options
     }
 
-    /// The exact `q(t)` for any `t ≥ 0` (MATH.md, "Closed form").
-    pub fn at(&self, t: f64) -> Result<DQuat, KliError> {
-        let t = crate::error::require_non_negative("t", t)?;
+    /// The exact `q(t)` for any `t ≥ 0` (MATH.md, "Closed form"); the integrated samples are
+    /// [`KliPath::quaternions`].
+    pub fn exact_at(&self, t: f64) -> Result<DQuat, KliError> {
+        let t = require("t", t, Requirement::NonNegative)?;
         Ok(closed_form::point_at(&self.arc, t))
     }
 }
@@ -211,7 +241,7 @@ mod tests {
         let (p, r) = paper();
         let options = KliOptions { tolerance: 1e-20, max_time: 50.0, ..Default::default() };
         let err = kli(p, r, &options).unwrap_err().to_string();
-        assert!(err.starts_with("tolerance 1e-20 not reached within maxTime 50"), "{err}");
+        assert!(err.starts_with("tolerance 1e-20 not reached within max_time 50"), "{err}");
         let options = KliOptions { step: 1e-6, ..Default::default() };
         let err = kli(p, r, &options).unwrap_err().to_string();
         assert!(err.starts_with("step is too small"), "{err}");
@@ -225,14 +255,15 @@ mod tests {
         let r = -p + from_wxyz([0.5, -0.5, 0.5, -0.5]) * 2e-15;
         let options = KliOptions { shortest_path: false, ..Default::default() };
         let err = kli(p, r, &options).unwrap_err().to_string();
-        assert!(err.starts_with("p is so close to -r that a step does not move q"), "{err}");
+        assert!(err.starts_with("shortest_path is false and p is so close to -r"), "{err}");
     }
 
     #[test]
     fn antipodal_long_way_is_refused() {
         let (p, _) = paper();
         let options = KliOptions { shortest_path: false, ..Default::default() };
-        assert_eq!(kli(p, -p, &options).unwrap_err(), KliError::Antipodal);
+        let e = kli(p, -p, &options).unwrap_err();
+        assert_eq!((e.argument(), e.kind().code()), ("shortest_path", "antipodal"));
     }
 
     #[test]
@@ -241,10 +272,46 @@ mod tests {
         for (options, name) in [
             (KliOptions { tolerance: 0.0, ..Default::default() }, "tolerance"),
             (KliOptions { step: f64::NAN, ..Default::default() }, "step"),
-            (KliOptions { max_time: f64::INFINITY, ..Default::default() }, "maxTime"),
+            (KliOptions { max_time: f64::INFINITY, ..Default::default() }, "max_time"),
         ] {
             let err = kli(p, r, &options).unwrap_err().to_string();
             assert!(err.starts_with(&format!("{name} must be a finite number > 0")), "{err}");
         }
+    }
+
+    #[test]
+    fn the_tolerance_is_met_or_the_call_fails() {
+        // 1e-312 apart: |r - p|² underflows to 0, so a plain length says the ends coincide.
+        let p = from_wxyz([1.0, 0.0, 0.0, 0.0]);
+        let r = from_wxyz([1.0, 1e-312, 0.0, 0.0]);
+        for tolerance in [5e-324, 1e-318, 1e-312, 2e-312] {
+            let options = KliOptions { tolerance, ..Default::default() };
+            match kli(p, r, &options) {
+                Ok(path) => {
+                    let last = *path.quaternions().last().unwrap();
+                    // Measured independently, scaled by 1e300 so that nothing underflows.
+                    let d = ((r.x - last.x) * 1e300).hypot((r.w - last.w) * 1e300);
+                    assert!(d < tolerance * 1e300, "ε = {tolerance:e}: {d:e} × 1e-300 left");
+                }
+                Err(e) => assert_eq!(e.kind().code(), "not-reached", "ε = {tolerance:e}: {e}"),
+            }
+        }
+        // The first tolerance no f64 distance but 0 meets is refused, not passed at t = 0.
+        let first = kli(p, r, &KliOptions { tolerance: 5e-324, ..Default::default() });
+        assert!(first.map(|path| path.steps() > 0).unwrap_or(true));
+        // A tolerance above the distance is met at once.
+        assert_eq!(
+            kli(p, r, &KliOptions { tolerance: 2e-312, ..Default::default() }).unwrap().steps(),
+            0
+        );
+    }
+
+    #[test]
+    fn a_step_too_large_is_blamed_on_the_step() {
+        // δ = 5 on the paper's pair (p·r > 0, the sphere attracts): RK4 is unstable there.
+        let (p, r) = paper();
+        let e = kli(p, r, &KliOptions { step: 5.0, ..Default::default() }).unwrap_err();
+        assert_eq!((e.argument(), e.kind().code()), ("step", "unstable"), "{e}");
+        assert!(e.to_string().starts_with("step 5 is too large for integrator rk4"), "{e}");
     }
 }

@@ -9,7 +9,7 @@
 
 use glam::{DQuat, DVec3};
 
-use crate::error::{KliError, non_finite};
+use crate::error::{ErrorKind, KliError, Requirement, Shape, require};
 use crate::quaternion::{from_wxyz, unit};
 
 /// `(U, θ)` of the polar form; `q` is normalised first.
@@ -26,23 +26,14 @@ pub fn axis_angle(q: DQuat) -> Result<(DVec3, f64), KliError> {
 
 /// The unit quaternion `cos(θ/2) + U sin(θ/2)` of a rotation by `angle` about `axis` (normalised).
 pub fn from_axis_angle(axis: DVec3, angle: f64) -> Result<DQuat, KliError> {
-    if !angle.is_finite() {
-        return Err(KliError::InvalidNumber {
-            name: "angle".into(),
-            value: angle,
-            requirement: "a finite number",
-        });
+    if let Some(index) = axis.to_array().iter().position(|c| !c.is_finite()) {
+        let kind = ErrorKind::NotFinite { shape: Shape::Vector3, index, value: axis[index] };
+        return Err(KliError::new("axis", kind));
     }
-    if !axis.is_finite() || axis == DVec3::ZERO {
-        let problem = match axis.to_array().iter().position(|c| !c.is_finite()) {
-            Some(i) => format!("coordinate {i} is {}", non_finite(axis[i])),
-            None => "it has zero length".into(),
-        };
-        return Err(KliError::InvalidArgument {
-            name: "axis".into(),
-            problem: format!("must be 3 finite numbers [x, y, z], not all zero: {problem}"),
-        });
+    if axis == DVec3::ZERO {
+        return Err(KliError::new("axis", ErrorKind::ZeroLength { shape: Shape::Vector3 }));
     }
+    let angle = require("angle", angle, Requirement::Finite)?;
     // Scaled first so tiny and huge axes normalise without underflow or overflow.
     let scaled = axis / axis.abs().max_element();
     let u = scaled / scaled.length();

@@ -11,13 +11,16 @@
 
 use glam::DQuat;
 
-use crate::error::{KliError, require_non_negative, require_positive};
+use crate::error::{KliError, Requirement, require};
 use crate::great_arc::GreatArc;
 use crate::quaternion::unit;
 
-/// `q(t)` on `arc` for `t ≥ 0` (not checked here).
+/// `q(t)` on `arc` for `t ≥ 0` (not checked here); `q(0)` is the start, exactly.
 #[inline]
 pub fn point_at(arc: &GreatArc, t: f64) -> DQuat {
+    if t == 0.0 {
+        return arc.start();
+    }
     point_from_half_angle_tan(arc, arc.half_angle_tan() * (-t).exp())
 }
 
@@ -60,7 +63,7 @@ pub fn reach_time(arc: &GreatArc, tolerance: f64) -> f64 {
 /// The exact KLI solution `q(t)` from `p` towards `r` (or `-r` when `shortest_path` and
 /// `p·r < 0`); inputs are normalised.
 pub fn kli_exact(p: DQuat, r: DQuat, t: f64, shortest_path: bool) -> Result<DQuat, KliError> {
-    let t = require_non_negative("t", t)?;
+    let t = require("t", t, Requirement::NonNegative)?;
     Ok(point_at(&arc(p, r, shortest_path)?, t))
 }
 
@@ -71,7 +74,7 @@ pub fn kli_to_slerp_parameter(
     t: f64,
     shortest_path: bool,
 ) -> Result<f64, KliError> {
-    let t = require_non_negative("t", t)?;
+    let t = require("t", t, Requirement::NonNegative)?;
     Ok(time_warp(&arc(p, r, shortest_path)?, t))
 }
 
@@ -82,7 +85,7 @@ pub fn kli_reach_time(
     tolerance: f64,
     shortest_path: bool,
 ) -> Result<f64, KliError> {
-    let tolerance = require_positive("tolerance", tolerance)?;
+    let tolerance = require("tolerance", tolerance, Requirement::Positive)?;
     Ok(reach_time(&arc(p, r, shortest_path)?, tolerance))
 }
 

@@ -1,74 +1,238 @@
-//! The one error type of the crate. Every message starts with the argument it is about, so the
-//! JavaScript `Error` built from it at the boundary names that argument too.
+//! The one error type of the crate: the argument at fault and what is wrong with it, as fields.
+//!
+//! Messages name arguments by their Rust names (`max_time`, `shortest_path`). A binding to
+//! another language renders the same error with its own names and number formatting through
+//! [`KliError::message`]; the JavaScript package passes camelCase and JavaScript's `String(x)`.
 
 use std::fmt;
 
-/// Why a call was refused.
+/// Why a call was refused: [`argument`](KliError::argument) names the argument at fault (an
+/// element of an array as `starts[3]`), [`kind`](KliError::kind) says what is wrong.
 #[derive(Debug, Clone, PartialEq)]
-pub enum KliError {
-    /// A quaternion argument (`name`) is not 4 finite numbers of non-zero length.
-    InvalidQuaternion { name: String, problem: String },
-    /// A number argument (`name`) broke its requirement, e.g. "a finite number > 0".
-    InvalidNumber { name: String, value: f64, requirement: &'static str },
-    /// An argument that is neither a quaternion nor a number, e.g. `integrator` or an options key.
-    InvalidArgument { name: String, problem: String },
-    /// `p = -r` and the long way round was asked for: `q' = 0`, an equilibrium (MATH.md, edge cases).
-    Antipodal,
+pub struct KliError {
+    argument: String,
+    kind: ErrorKind,
+}
+
+/// What a value must be, for [`ErrorKind::OutOfRange`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Requirement {
+    /// Finite.
+    Finite,
+    /// Finite and `> 0`.
+    Positive,
+    /// Finite and `≥ 0`.
+    NonNegative,
+    /// Finite with `|x| ≤` the bound.
+    AtMost(f64),
+}
+
+/// The shape of a vector argument, for messages about its components.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Shape {
+    /// A quaternion `[w, x, y, z]`, scalar first.
+    Quaternion,
+    /// A 3-vector `[x, y, z]`.
+    Vector3,
+}
+
+impl Shape {
+    fn components(self) -> &'static [&'static str] {
+        match self {
+            Shape::Quaternion => &["w", "x", "y", "z"],
+            Shape::Vector3 => &["x", "y", "z"],
+        }
+    }
+
+    fn describe(self) -> &'static str {
+        match self {
+            Shape::Quaternion => "a quaternion of 4 finite numbers [w, x, y, z], not all zero",
+            Shape::Vector3 => "3 finite numbers [x, y, z], not all zero",
+        }
+    }
+}
+
+/// What is wrong with the argument.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum ErrorKind {
+    /// Component `index` (of [`Shape::components`]' order) is NaN or infinite.
+    NotFinite { shape: Shape, index: usize, value: f64 },
+    /// A quaternion or axis of zero length: it has no direction.
+    ZeroLength { shape: Shape },
+    /// A number outside its domain.
+    OutOfRange { value: f64, requirement: Requirement },
+    /// An array that must hold `expected` numbers, 4 for each `per` value (e.g. each `t`).
+    WrongLength { expected: usize, got: usize, per: String },
+    /// A name that is not one of `allowed`.
+    UnknownName { got: String, allowed: &'static [&'static str] },
+    /// The target is `-start` and the long way round was asked for: `q' = 0` there, an unstable
+    /// equilibrium (MATH.md, "Edge cases"). `start` and `end` name the two quaternions.
+    Antipodal { start: String, end: String },
     /// Algorithm 1 did not meet the tolerance by `max_time`.
     NotReached { tolerance: f64, max_time: f64, closest: f64, predicted: f64 },
-    /// A step left `q` unchanged short of the tolerance: `p` so close to `-r` (taken the long way)
-    /// that `δ q'` is below the resolution of f64, a numerical equilibrium.
+    /// A step left `q` unchanged short of the tolerance, far from the target: `p` so close to `-r`
+    /// (taken the long way) that `δ q'` is below the resolution of f64.
     Stalled { time: f64, distance: f64 },
-    /// An integrator that works in R⁴ let `|q|` run away from 1. Near `-r` the sphere repels
-    /// off-sphere errors (`d|q|²/dt = 2 (q·r)(1 - |q|²)`), so rounding grows like `e^(2t)`.
+    /// An integrator that works in R⁴ let `|q|` run away from 1 near `-r`, where the sphere
+    /// repels off-sphere errors (`d|q|²/dt = 2 (q·r)(1 - |q|²)`, MATH.md, "Edge cases").
     LeftSphere { integrator: &'static str, time: f64, norm: f64 },
+    /// The step is beyond the integrator's stability: `|q|` ran away from 1 on a path where the
+    /// sphere attracts (`q·r > 0` throughout).
+    Unstable { integrator: &'static str, step: f64, time: f64, norm: f64 },
     /// `max_time / step` asks for more samples than a path may hold.
     TooManySteps { steps: f64, limit: usize },
+    /// Anything else, in words: the type checks of a language binding.
+    Invalid(String),
+}
+
+impl ErrorKind {
+    /// A short stable code for the kind, e.g. `"not-finite"`: what bindings hand their callers.
+    pub fn code(&self) -> &'static str {
+        match self {
+            ErrorKind::NotFinite { .. } => "not-finite",
+            ErrorKind::ZeroLength { .. } => "zero-length",
+            ErrorKind::OutOfRange { .. } => "out-of-range",
+            ErrorKind::WrongLength { .. } => "wrong-length",
+            ErrorKind::UnknownName { .. } => "unknown-name",
+            ErrorKind::Antipodal { .. } => "antipodal",
+            ErrorKind::NotReached { .. } => "not-reached",
+            ErrorKind::Stalled { .. } => "stalled",
+            ErrorKind::LeftSphere { .. } => "left-sphere",
+            ErrorKind::Unstable { .. } => "unstable",
+            ErrorKind::TooManySteps { .. } => "too-many-steps",
+            ErrorKind::Invalid(_) => "invalid",
+        }
+    }
+
+    /// The component at fault, for [`ErrorKind::NotFinite`].
+    pub fn component(&self) -> Option<usize> {
+        match self {
+            ErrorKind::NotFinite { index, .. } => Some(*index),
+            _ => None,
+        }
+    }
 }
 
 impl KliError {
-    /// The message, with numbers written by `number`. The JavaScript boundary passes
-    /// JavaScript's own `String(x)`, so the wasm build carries no float-formatting code.
-    pub fn message_with(&self, number: &dyn Fn(f64) -> String) -> String {
-        let n = number;
-        match self {
-            KliError::InvalidQuaternion { name, problem } => {
-                format!("{name} must be a quaternion of 4 finite numbers [w, x, y, z], not all zero: {problem}")
+    /// The error `kind` about `argument`.
+    pub fn new(argument: impl Into<String>, kind: ErrorKind) -> Self {
+        Self { argument: argument.into(), kind }
+    }
+
+    /// An [`ErrorKind::Invalid`] error: `argument` followed by `problem` is the message.
+    pub fn invalid(argument: impl Into<String>, problem: impl Into<String>) -> Self {
+        Self::new(argument, ErrorKind::Invalid(problem.into()))
+    }
+
+    /// The argument at fault, by its Rust name.
+    pub fn argument(&self) -> &str {
+        &self.argument
+    }
+
+    /// What is wrong with it.
+    pub fn kind(&self) -> &ErrorKind {
+        &self.kind
+    }
+
+    /// The same error about another argument, e.g. `starts[3]` instead of `q` in a batch call.
+    pub fn renamed(self, argument: impl Into<String>) -> Self {
+        Self { argument: argument.into(), ..self }
+    }
+
+    /// The message, with argument names written by `name` and numbers by `number`. It starts
+    /// with the argument's name.
+    pub fn message(&self, name: &dyn Fn(&str) -> String, number: &dyn Fn(f64) -> String) -> String {
+        let (arg, n) = (name(&self.argument), number);
+        match &self.kind {
+            ErrorKind::NotFinite { shape, index, value } => {
+                let component = shape.components().get(*index).copied().unwrap_or("?");
+                format!(
+                    "{arg} must be {}: its {component} component is {}",
+                    shape.describe(),
+                    n(*value)
+                )
             }
-            KliError::InvalidNumber { name, value, requirement } => format!("{name} must be {requirement} (got {})", n(*value)),
-            KliError::InvalidArgument { name, problem } => format!("{name} {problem}"),
-            KliError::Antipodal => "p and r are antipodal (p = -r) and shortestPath is false: q' = 0 there, an unstable \
-                 equilibrium, so the flow never moves and no path is determined (p and r are the same \
-                 rotation; use shortestPath: true)"
-                .into(),
-            KliError::NotReached { tolerance, max_time, closest, predicted } => format!(
-                "tolerance {} not reached within maxTime {} (closest distance {}; the closed form \
-                 predicts T* = {}): raise maxTime or the tolerance",
+            ErrorKind::ZeroLength { shape } => {
+                format!("{arg} must be {}: it has zero length", shape.describe())
+            }
+            ErrorKind::OutOfRange { value, requirement } => {
+                let requirement = match requirement {
+                    Requirement::Finite => "a finite number".into(),
+                    Requirement::Positive => "a finite number > 0".into(),
+                    Requirement::NonNegative => "a finite number ≥ 0".into(),
+                    Requirement::AtMost(bound) => {
+                        format!("a finite number from -{} to {}", n(*bound), n(*bound))
+                    }
+                };
+                format!("{arg} must be {requirement} (got {})", n(*value))
+            }
+            ErrorKind::WrongLength { expected, got, per } => format!(
+                "{arg} must hold 4 numbers per {per} value: {expected} for {} values (got {got})",
+                expected / 4
+            ),
+            ErrorKind::UnknownName { got, allowed } => {
+                format!("{arg} must be {} (got \"{got}\")", one_of(allowed))
+            }
+            ErrorKind::Antipodal { start, end } => format!(
+                "{} and {} are antipodal and {} is false: q' = 0 there, an unstable equilibrium, so \
+                 the flow never moves and no path is determined ({0} and {1} are the same \
+                 rotation; use {2}: true)",
+                name(start),
+                name(end),
+                name("shortest_path"),
+            ),
+            ErrorKind::NotReached { tolerance, max_time, closest, predicted } => format!(
+                "{arg} {} not reached within {} {} (closest distance {}; the closed form predicts \
+                 T* = {}): raise {} or the tolerance",
                 n(*tolerance),
+                name("max_time"),
                 n(*max_time),
                 n(*closest),
-                n(*predicted)
+                n(*predicted),
+                name("max_time"),
             ),
-            KliError::Stalled { time, distance } => format!(
-                "p is so close to -r that a step does not move q (stuck at distance {} from the target \
-                 at t = {}): with shortestPath false the flow starts at a numerical equilibrium; use \
-                 shortestPath: true or a larger step",
+            ErrorKind::Stalled { time, distance } => format!(
+                "{arg} is false and p is so close to -r that a step does not move q (stuck at \
+                 distance {} from the target at t = {}), a numerical equilibrium; use {arg}: true \
+                 or a larger step",
                 n(*distance),
                 n(*time)
             ),
-            KliError::LeftSphere { integrator, time, norm } => format!(
-                "integrator {integrator} left the sphere S³ (|q| = {} at t = {}): near -r the sphere \
-                 repels the rounding errors of a step taken in R⁴; use integrator \"geodesic\", which \
-                 stays on S³, or shortestPath: true",
+            ErrorKind::LeftSphere { integrator, time, norm } => format!(
+                "{arg} {integrator} left the sphere S³ (|q| = {} at t = {}): near -r the sphere \
+                 repels the rounding errors of a step taken in R⁴; use {arg} \"geodesic\", which \
+                 stays on S³, or {}: true",
                 n(*norm),
-                n(*time)
+                n(*time),
+                name("shortest_path"),
             ),
-            KliError::TooManySteps { steps, limit } => format!(
-                "step is too small for maxTime: maxTime / step = {} steps, more than the {limit} a path \
+            ErrorKind::Unstable { integrator, step, time, norm } => format!(
+                "{arg} {} is too large for {} {integrator}: q left the sphere S³ (|q| = {} at \
+                 t = {}); use a smaller step",
+                n(*step),
+                name("integrator"),
+                n(*norm),
+                n(*time),
+            ),
+            ErrorKind::TooManySteps { steps, limit } => format!(
+                "{arg} is too small for {}: {} / {arg} = {} steps, more than the {limit} a path \
                  may hold",
+                name("max_time"),
+                name("max_time"),
                 n(*steps)
             ),
+            ErrorKind::Invalid(problem) => format!("{arg} {problem}"),
         }
+    }
+}
+
+/// `"a", "b" or "c"`.
+fn one_of(names: &[&str]) -> String {
+    let quoted: Vec<String> = names.iter().map(|a| format!("\"{a}\"")).collect();
+    match quoted.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} or {last}", rest.join(", ")),
+        _ => quoted.concat(),
     }
 }
 
@@ -83,63 +247,67 @@ pub fn rust_number(x: f64) -> String {
 
 impl fmt::Display for KliError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.message_with(&rust_number))
-    }
-}
-
-/// Names a value that is not finite, without float formatting: `NaN`, `Infinity`, `-Infinity`.
-pub(crate) fn non_finite(x: f64) -> &'static str {
-    if x.is_nan() {
-        "NaN"
-    } else if x > 0.0 {
-        "Infinity"
-    } else {
-        "-Infinity"
+        f.write_str(&self.message(&|name| name.to_owned(), &rust_number))
     }
 }
 
 impl std::error::Error for KliError {}
 
-impl KliError {
-    /// The same error about another argument, e.g. `starts[3]` instead of `p` in a batch call.
-    pub fn renamed(self, new_name: impl Into<String>) -> Self {
-        match self {
-            KliError::InvalidQuaternion { problem, .. } => {
-                KliError::InvalidQuaternion { name: new_name.into(), problem }
-            }
-            KliError::InvalidNumber { value, requirement, .. } => {
-                KliError::InvalidNumber { name: new_name.into(), value, requirement }
-            }
-            KliError::InvalidArgument { problem, .. } => {
-                KliError::InvalidArgument { name: new_name.into(), problem }
-            }
-            other => other,
-        }
+/// Checks that `value` meets `requirement`.
+pub(crate) fn require(
+    argument: &str,
+    value: f64,
+    requirement: Requirement,
+) -> Result<f64, KliError> {
+    let ok = value.is_finite()
+        && match requirement {
+            Requirement::Finite => true,
+            Requirement::Positive => value > 0.0,
+            Requirement::NonNegative => value >= 0.0,
+            Requirement::AtMost(bound) => value.abs() <= bound,
+        };
+    if ok {
+        Ok(value)
+    } else {
+        Err(KliError::new(argument, ErrorKind::OutOfRange { value, requirement }))
     }
 }
 
-/// Checks that `value` is finite and `> 0`.
-pub(crate) fn require_positive(name: &'static str, value: f64) -> Result<f64, KliError> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(KliError::InvalidNumber {
-            name: name.into(),
-            value,
-            requirement: "a finite number > 0",
-        })
-    }
-}
+#[cfg(test)]
+mod tests {
+    use super::*;
 
-/// Checks that `value` is finite and `≥ 0`.
-pub(crate) fn require_non_negative(name: &'static str, value: f64) -> Result<f64, KliError> {
-    if value.is_finite() && value >= 0.0 {
-        Ok(value)
-    } else {
-        Err(KliError::InvalidNumber {
-            name: name.into(),
-            value,
-            requirement: "a finite number ≥ 0",
-        })
+    #[test]
+    fn messages_start_with_the_argument_in_the_callers_names() {
+        let e = KliError::new(
+            "max_time",
+            ErrorKind::OutOfRange { value: -1.0, requirement: Requirement::Positive },
+        );
+        assert_eq!(e.to_string(), "max_time must be a finite number > 0 (got -1)");
+        let camel = |s: &str| if s == "max_time" { "maxTime".to_owned() } else { s.to_owned() };
+        let js = e.message(&camel, &|x| format!("<{x}>"));
+        assert_eq!(js, "maxTime must be a finite number > 0 (got <-1>)");
+        assert_eq!((e.argument(), e.kind().code()), ("max_time", "out-of-range"));
+    }
+
+    #[test]
+    fn component_errors_name_the_component() {
+        let e = KliError::new(
+            "r",
+            ErrorKind::NotFinite { shape: Shape::Quaternion, index: 2, value: f64::NAN },
+        );
+        assert!(e.to_string().ends_with("its y component is NaN"), "{e}");
+        assert_eq!(e.kind().component(), Some(2));
+        let renamed = e.renamed("ends[4]");
+        assert!(renamed.to_string().starts_with("ends[4] must be a quaternion"));
+    }
+
+    #[test]
+    fn requirements() {
+        assert_eq!(require("s", 3.0, Requirement::AtMost(3.0)), Ok(3.0));
+        assert!(require("s", -3.5, Requirement::AtMost(3.0)).is_err());
+        assert!(require("t", f64::INFINITY, Requirement::Finite).is_err());
+        assert!(require("t", -0.0, Requirement::NonNegative).is_ok());
+        assert!(require("step", 0.0, Requirement::Positive).is_err());
     }
 }

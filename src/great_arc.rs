@@ -7,7 +7,7 @@
 
 use glam::DQuat;
 
-use crate::error::KliError;
+use crate::error::{ErrorKind, KliError};
 
 /// Below this length, `p - target` or `p + target` is rounding noise of the normalised inputs
 /// (each component is within 2 ulp), not a direction.
@@ -33,7 +33,7 @@ pub fn choose_target(p: DQuat, r: DQuat, shortest_path: bool) -> DQuat {
 impl GreatArc {
     /// The arc from unit `p` to unit `r` (or `-r`, see [`choose_target`]).
     ///
-    /// Errors with [`KliError::Antipodal`] when the target is `-p`: every great circle through `p`
+    /// Errors with [`ErrorKind::Antipodal`] about `shortest_path` when the target is `-p`: every great circle through `p`
     /// reaches it, and the flow `q' = r - (q·r) q` does not move at all.
     pub fn new(p: DQuat, r: DQuat, shortest_path: bool) -> Result<Self, KliError> {
         let target = choose_target(p, r, shortest_path);
@@ -43,7 +43,8 @@ impl GreatArc {
         let sum = p + target;
         let (d, s) = (difference.length(), sum.length());
         if s <= ROUNDING_NOISE {
-            return Err(KliError::Antipodal);
+            let kind = ErrorKind::Antipodal { start: "p".into(), end: "r".into() };
+            return Err(KliError::new("shortest_path", kind));
         }
         if d <= ROUNDING_NOISE {
             let zero = DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0);
@@ -111,7 +112,7 @@ impl GreatArc {
     /// `||target - p||` in R⁴, `= 2 sin(φ0/2)`.
     #[inline]
     pub fn start_distance(&self) -> f64 {
-        (self.target - self.start).length()
+        crate::quaternion::norm(self.target - self.start)
     }
 }
 
@@ -151,7 +152,8 @@ mod tests {
     fn antipodal_long_way_is_an_equilibrium() {
         let p = unit("p", from_wxyz([0.1, 0.2, 0.3, 0.4])).unwrap();
         let r = unit("r", from_wxyz([-0.3, -0.6, -0.9, -1.2])).unwrap();
-        assert_eq!(GreatArc::new(p, r, false), Err(KliError::Antipodal));
+        let e = GreatArc::new(p, r, false).unwrap_err();
+        assert_eq!((e.argument(), e.kind().code()), ("shortest_path", "antipodal"));
         // The short way, -r = p: nothing to do.
         let a = GreatArc::new(p, r, true).unwrap();
         assert_eq!(a.angle(), 0.0);

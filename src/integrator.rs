@@ -5,7 +5,7 @@ use std::str::FromStr;
 
 use glam::DQuat;
 
-use crate::error::KliError;
+use crate::error::{ErrorKind, KliError};
 use crate::model::velocity;
 
 /// How Algorithm 1 advances `q` by one step `δ`.
@@ -69,6 +69,9 @@ fn along_great_circle(q: DQuat, increment: DQuat) -> DQuat {
     q * cos + tangential * (sin / length)
 }
 
+/// The names of [`Integrator::ALL`], in order.
+const NAMES: [&str; 3] = ["rk4", "euler", "geodesic"];
+
 impl fmt::Display for Integrator {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.pad(self.name())
@@ -80,10 +83,8 @@ impl FromStr for Integrator {
 
     fn from_str(name: &str) -> Result<Self, KliError> {
         Integrator::ALL.into_iter().find(|i| i.name() == name).ok_or_else(|| {
-            KliError::InvalidArgument {
-                name: "integrator".into(),
-                problem: format!("must be \"rk4\", \"euler\" or \"geodesic\" (got \"{name}\")"),
-            }
+            let kind = ErrorKind::UnknownName { got: name.into(), allowed: &NAMES };
+            KliError::new("integrator", kind)
         })
     }
 }

@@ -67,6 +67,10 @@ mod imp {
             Mask(f64x2_lt(self.0, o.0))
         }
         #[inline(always)]
+        pub fn eq(self, o: Self) -> Mask {
+            Mask(f64x2_eq(self.0, o.0))
+        }
+        #[inline(always)]
         pub fn select(mask: Mask, yes: Self, no: Self) -> Self {
             Self(v128_bitselect(yes.0, no.0, mask.0))
         }
@@ -175,6 +179,11 @@ mod imp {
             unsafe { Mask(_mm_cmplt_pd(self.0, o.0)) }
         }
         #[inline(always)]
+        pub fn eq(self, o: Self) -> Mask {
+            // SAFETY: as above.
+            unsafe { Mask(_mm_cmpeq_pd(self.0, o.0)) }
+        }
+        #[inline(always)]
         pub fn select(mask: Mask, yes: Self, no: Self) -> Self {
             // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
             unsafe { Self(_mm_or_pd(_mm_and_pd(mask.0, yes.0), _mm_andnot_pd(mask.0, no.0))) }
@@ -280,6 +289,10 @@ mod imp {
         #[inline(always)]
         pub fn lt(self, o: Self) -> Mask {
             Mask([self.0[0] < o.0[0], self.0[1] < o.0[1]])
+        }
+        #[inline(always)]
+        pub fn eq(self, o: Self) -> Mask {
+            Mask([self.0[0] == o.0[0], self.0[1] == o.0[1]])
         }
         #[inline(always)]
         pub fn select(mask: Mask, yes: Self, no: Self) -> Self {
@@ -431,6 +444,7 @@ mod tests {
     fn select_and_masks() {
         let (a, b) = (Lanes::new(1.0, 5.0), Lanes::new(2.0, 3.0));
         assert_eq!(Lanes::select(a.lt(b), a, b).to_array(), [1.0, 3.0]);
+        assert_eq!(Lanes::select(a.eq(Lanes::new(1.0, 4.0)), a, b).to_array(), [1.0, 3.0]);
         assert!(!a.le(b).all() && Mask::splat(true).all() && (b.le(b) & a.le(a)).all());
         assert_eq!(a.max(b).to_array(), [2.0, 5.0]);
         assert_eq!((-a).abs().to_array(), [1.0, 5.0]);

@@ -8,7 +8,7 @@
 //! ```
 //!
 //! until `||r - q|| < ε` (Algorithm 1). The solution is known in closed form
-//! (`../shared/MATH.md`): it is SLERP along the same great circle, with the clock
+//! (`docs/MATH.md`): it is SLERP along the same great circle, with the clock
 //! `tan(φ(t)/2) = tan(φ0/2) e^(-t)`.
 //!
 //! Quaternions are [`glam::DQuat`] (f64). The paper, and the JavaScript API, write them scalar
@@ -29,8 +29,10 @@
 //! Modules, one concept each: [`model`] (the vector field), [`integrator`] (RK4, Euler, geodesic),
 //! [`algorithm`] (Algorithm 1), [`great_arc`] (the circle from `p` to the target),
 //! [`closed_form`] (the exact solution), [`slerp`](mod@slerp), [`hopf`](mod@hopf),
-//! [`axis_angle`](mod@axis_angle) (polar form), [`batch`] (many pairs at once), and on wasm32 the
-//! JavaScript boundary `bindings` and the canvas `render`er.
+//! [`axis_angle`](mod@axis_angle) (polar form), [`batch`] (many pairs at once), [`error`].
+//!
+//! This crate knows nothing of WebAssembly: the JavaScript package is the `kli-wasm` crate beside
+//! it, and the demo page's renderer the `kli-demo` crate.
 
 pub mod axis_angle;
 pub mod batch;
@@ -44,16 +46,12 @@ pub mod integrator;
 mod lanes;
 pub mod model;
 pub mod quaternion;
-pub mod render;
 pub mod slerp;
-
-#[cfg(target_arch = "wasm32")]
-pub mod bindings;
 
 pub use algorithm::{KliOptions, KliPath, kli};
 pub use axis_angle::{axis_angle, from_axis_angle};
 pub use closed_form::{kli_exact, kli_reach_time, kli_to_slerp_parameter};
-pub use error::KliError;
+pub use error::{ErrorKind, KliError};
 pub use glam::{DQuat, DVec3};
 pub use hopf::hopf;
 pub use integrator::Integrator;

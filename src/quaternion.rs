@@ -4,7 +4,7 @@
 
 use glam::DQuat;
 
-use crate::error::{KliError, non_finite};
+use crate::error::{ErrorKind, KliError, Shape};
 
 /// `[w, x, y, z]` (scalar first, the paper's `a + b i + c j + d k`) to a glam quaternion.
 #[inline]
@@ -18,29 +18,47 @@ pub fn to_wxyz(q: DQuat) -> [f64; 4] {
     [q.w, q.x, q.y, q.z]
 }
 
+/// `|q|²` in this range is computed without underflow or overflow: `|q|` is `√(|q|²)`.
+const PLAIN: std::ops::Range<f64> = 1e-290..1e290;
+
 /// Validates and normalises an input quaternion: 4 finite numbers, not all zero.
 ///
-/// The components are first scaled by the largest magnitude, so inputs as small as `1e-300` or as
-/// large as `1e300` normalise without underflow or overflow.
-pub fn unit(name: &'static str, q: DQuat) -> Result<DQuat, KliError> {
+/// A quaternion whose `|q|²` already rounds to 1 is returned as it is, bit for bit (so unit
+/// inputs come back unchanged from, say, SLERP at `s = 0`). Others are divided by `|q|`, which
+/// for lengths as small as `1e-300` or as large as `1e300` is computed after scaling by the
+/// largest component, without underflow or overflow.
+pub fn unit(name: &str, q: DQuat) -> Result<DQuat, KliError> {
     let wxyz = to_wxyz(q);
-    if let Some(i) = wxyz.iter().position(|c| !c.is_finite()) {
-        return Err(KliError::InvalidQuaternion {
-            name: name.into(),
-            problem: format!("component {i} is {}", non_finite(wxyz[i])),
-        });
+    if let Some(index) = wxyz.iter().position(|c| !c.is_finite()) {
+        let kind = ErrorKind::NotFinite { shape: Shape::Quaternion, index, value: wxyz[index] };
+        return Err(KliError::new(name, kind));
+    }
+    let length_squared = q.length_squared();
+    if length_squared == 1.0 {
+        return Ok(q);
+    }
+    if PLAIN.contains(&length_squared) {
+        return Ok(q / length_squared.sqrt());
     }
     let largest = wxyz.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
     if largest == 0.0 {
-        return Err(KliError::InvalidQuaternion {
-            name: name.into(),
-            problem: "it has zero length".into(),
-        });
+        return Err(KliError::new(name, ErrorKind::ZeroLength { shape: Shape::Quaternion }));
     }
-    let scaled = q * (1.0 / largest);
-    // 1/largest overflows for subnormal `largest`; divide instead in that case.
-    let scaled = if scaled.is_finite() { scaled } else { from_wxyz(wxyz.map(|c| c / largest)) };
-    Ok(scaled * (1.0 / scaled.length()))
+    let scaled = from_wxyz(wxyz.map(|c| c / largest));
+    Ok(scaled / scaled.length())
+}
+
+/// `|q|` in R⁴ without underflow or overflow: a distance of `1e-312` is `1e-312`, not `0`.
+pub fn norm(q: DQuat) -> f64 {
+    let length_squared = q.length_squared();
+    if PLAIN.contains(&length_squared) {
+        return length_squared.sqrt();
+    }
+    let largest = to_wxyz(q).iter().fold(0.0_f64, |m, c| m.max(c.abs()));
+    if largest == 0.0 || !largest.is_finite() {
+        return largest;
+    }
+    largest * (q / largest).length()
 }
 
 #[cfg(test)]
@@ -68,11 +86,45 @@ mod tests {
 
     #[test]
     fn rejects_zero_and_non_finite() {
-        let zero = unit("p", from_wxyz([0.0; 4])).unwrap_err().to_string();
-        assert!(zero.starts_with("p ") && zero.contains("zero length"), "{zero}");
-        let nan = unit("r", from_wxyz([1.0, f64::NAN, 0.0, 0.0])).unwrap_err().to_string();
-        assert!(nan.starts_with("r ") && nan.contains("component 1 is NaN"), "{nan}");
-        let inf = unit("r", from_wxyz([1.0, 0.0, 0.0, f64::INFINITY])).unwrap_err().to_string();
-        assert!(inf.contains("component 3 is Infinity"), "{inf}");
+        let zero = unit("p", from_wxyz([0.0; 4])).unwrap_err();
+        assert_eq!(zero.argument(), "p");
+        assert_eq!(zero.kind(), &ErrorKind::ZeroLength { shape: Shape::Quaternion });
+        let nan = unit("r", from_wxyz([1.0, f64::NAN, 0.0, 0.0])).unwrap_err();
+        assert_eq!((nan.argument(), nan.kind().component()), ("r", Some(1)));
+        assert!(nan.to_string().ends_with("its x component is NaN"), "{nan}");
+        let inf = unit("r", from_wxyz([1.0, 0.0, 0.0, f64::INFINITY])).unwrap_err();
+        assert!(inf.to_string().ends_with("its z component is inf"), "{inf}");
+    }
+
+    #[test]
+    fn unit_inputs_are_returned_bit_for_bit() {
+        // Each has |q|² = 1 in f64 though |q| is not exactly 1 in exact arithmetic.
+        let mut state = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        };
+        let mut kept = 0;
+        for _ in 0..10_000 {
+            let raw = from_wxyz([next(), next(), next(), next()]);
+            let q = raw * (1.0 / raw.length());
+            if q.length_squared() == 1.0 {
+                assert_eq!(unit("q", q).unwrap(), q);
+                kept += 1;
+            }
+        }
+        assert!(kept > 1000, "only {kept} inputs had |q|² = 1");
+    }
+
+    #[test]
+    fn norm_does_not_underflow_or_overflow() {
+        assert_eq!(norm(from_wxyz([0.0, 1e-312, 0.0, 0.0])), 1e-312);
+        assert_eq!(norm(from_wxyz([3e-200, 4e-200, 0.0, 0.0])), 5e-200);
+        let big = 2.0_f64.powi(700);
+        assert_eq!(norm(from_wxyz([3.0 * big, 0.0, 4.0 * big, 0.0])), 5.0 * big);
+        assert_eq!(norm(from_wxyz([0.0; 4])), 0.0);
+        assert_eq!(norm(from_wxyz([0.5; 4])), 1.0);
     }
 }

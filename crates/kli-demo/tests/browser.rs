@@ -3,14 +3,15 @@
 #![cfg(target_arch = "wasm32")]
 
 use glam::{DQuat, DVec3};
-use kli::render::aircraft::aircraft;
-use kli::render::camera::{Camera, Viewport};
-use kli::render::object_view::draw_object;
-use kli::render::pen::Pen;
-use kli::render::plots::{draw_plot_cursors, draw_plots, plot_area, time_axis_end};
-use kli::render::scene::Scene;
-use kli::render::sphere_view::{draw_sphere, draw_sphere_cursor};
 use kli::{KliOptions, from_wxyz, kli};
+use kli_demo::aircraft::aircraft;
+use kli_demo::camera::{Camera, Viewport};
+use kli_demo::object_view::draw_object;
+use kli_demo::palette;
+use kli_demo::pen::Pen;
+use kli_demo::plots::{draw_plot_cursors, draw_plots, plot_area, time_axis_end};
+use kli_demo::scene::Scene;
+use kli_demo::sphere_view::{draw_sphere, draw_sphere_cursor};
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
 use web_sys::{CanvasRenderingContext2d, HtmlCanvasElement};
@@ -18,6 +19,11 @@ use web_sys::{CanvasRenderingContext2d, HtmlCanvasElement};
 wasm_bindgen_test_configure!(run_in_browser);
 
 const WHITE: [u8; 3] = [255, 255, 255];
+
+/// `#rrggbb` as bytes.
+fn rgb(hex: &str) -> [u8; 3] {
+    [1, 3, 5].map(|i| u8::from_str_radix(&hex[i..i + 2], 16).unwrap())
+}
 
 fn canvas(width: u32, height: u32) -> CanvasRenderingContext2d {
     let document = web_sys::window().unwrap().document().unwrap();
@@ -57,7 +63,7 @@ fn sphere_view_puts_markers_where_the_hopf_map_says() {
     let (a, d) = (0.3083_f64, 0.8455_f64);
     let h = DVec3::new(a * a + a * a - a * a - d * d, 2.0 * (a * d + a * a), 2.0 * (a * d - a * a))
         .normalize();
-    assert_eq!(pixel(&ctx, at(h)), [0xe8, 0x59, 0x0c], "KLI marker at {h:?}");
+    assert_eq!(pixel(&ctx, at(h)), rgb(palette::KLI), "KLI marker at {h:?}");
     // The sphere's centre is shaded (grey-blue), not background.
     let [r, g, b] = pixel(&ctx, (150.0, 150.0));
     assert!(b > r && b < 255 && g < 255, "{r} {g} {b}");
@@ -106,12 +112,13 @@ fn time_warp_plot_follows_the_closed_form() {
     let s = 1.0 - 2.0 * ((phi0 / 2.0).tan() * (-t).exp()).atan() / phi0;
     let x = left + t / x_max * w;
     let expected_y = top + (1.0 - s) * h;
-    // Scan the column for the KLI colour (#e8590c, the 2 px curve).
+    // Scan the column for the KLI colour (the 2 px curve; its edges are blended with white).
+    let kli = rgb(palette::KLI);
     let found: Vec<f64> = (0..height as i32)
         .map(f64::from)
         .filter(|&y| {
-            let [r, g, b] = pixel(&ctx, (x, y));
-            r > 200 && (70..140).contains(&g) && b < 80
+            let p = pixel(&ctx, (x, y));
+            (0..3).all(|c| (p[c] as i32 - kli[c] as i32).abs() < 40)
         })
         .collect();
     assert!(!found.is_empty(), "no KLI curve in column {x}");

@@ -4,10 +4,10 @@
 
 use glam::{DQuat, DVec3};
 
-use crate::KliPath;
-use crate::closed_form;
-use crate::hopf::hopf;
-use crate::slerp;
+use kli::KliPath;
+use kli::closed_form;
+use kli::hopf::hopf;
+use kli::slerp;
 
 /// The moments of the paper's Table 1 (and Fig. 2), before the final time `T`.
 pub const PAPER_MOMENTS: [f64; 7] = [0.0, 0.2, 0.4, 0.55, 0.85, 1.2, 1.8];
@@ -59,7 +59,7 @@ impl Scene {
 
     /// The integrated KLI rotation at `t ∈ [0, T]`, between samples by normalised linear
     /// interpolation (the samples are `δ` apart; Euler's are not unit, hence the normalising).
-    pub fn kli_at(&self, t: f64) -> DQuat {
+    pub fn integrated_at(&self, t: f64) -> DQuat {
         let q = self.path.quaternions();
         let step = self.path.options().step;
         let position = (t / step).max(0.0).min((q.len() - 1) as f64);
@@ -115,7 +115,7 @@ impl Scene {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{KliOptions, from_wxyz, kli};
+    use kli::{KliOptions, from_wxyz, kli};
 
     fn paper() -> Scene {
         Scene::new(
@@ -143,10 +143,13 @@ mod tests {
         let scene = paper();
         // At t = 1.2 KLI has covered 1 - φ(1.2)/φ0 of the angle, SLERP only 1.2 / 11.66.
         // Table 1 (MATH.md) at t = 1.2 for KLI.
-        assert!((scene.kli_at(1.2) - from_wxyz([0.3732, 0.3732, 0.3732, 0.7630])).length() < 1e-4);
+        assert!(
+            (scene.integrated_at(1.2) - from_wxyz([0.3732, 0.3732, 0.3732, 0.7630])).length()
+                < 1e-4
+        );
         let s = scene.slerp_at(1.2);
         let expected =
-            crate::slerp(from_wxyz([0.0, 0.0, 0.0, 1.0]), from_wxyz([0.5; 4]), 1.2 / 11.66, true)
+            kli::slerp(from_wxyz([0.0, 0.0, 0.0, 1.0]), from_wxyz([0.5; 4]), 1.2 / 11.66, true)
                 .unwrap();
         assert!((s - expected).length() < 1e-12);
     }

@@ -1,9 +1,11 @@
 //! The plots beside the views: the distance `||target - q(t)||` on a log scale with the tolerance,
 //! `T` and `T*`; the time warp `s(t)` against SLERP's `t / T`; the drift of `|q|` from 1.
 
-use super::pen::{GRID, INK, KLI, MUTED, Pen, SLERP, exponential, fixed};
-use super::scene::Scene;
-use super::ticks::{decades, nice_step};
+use crate::format::{exponential, fixed};
+use crate::palette::{GRID, INK, KLI, MUTED, SLERP};
+use crate::pen::Pen;
+use crate::scene::Scene;
+use crate::ticks::{decades, nice_step};
 
 /// A plot frame: data ranges mapped onto a rectangle of the canvas.
 struct Panel {

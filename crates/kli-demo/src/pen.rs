@@ -6,35 +6,11 @@ use js_sys::Array;
 use wasm_bindgen::JsValue;
 use web_sys::CanvasRenderingContext2d;
 
-use super::aircraft::Rgb;
-
-pub const INK: &str = "#343a40";
-pub const MUTED: &str = "#868e96";
-pub const GRID: &str = "#dee2e6";
-pub const KLI: &str = "#e8590c";
-pub const SLERP: &str = "#7048e8";
-pub const AXIS_X: &str = "#e03131";
-pub const AXIS_Y: &str = "#2f9e44";
-pub const AXIS_Z: &str = "#1971c2";
+use crate::aircraft::Rgb;
 
 /// Draws on one canvas context.
 pub struct Pen<'a> {
     ctx: &'a CanvasRenderingContext2d,
-}
-
-/// `x` with `digits` decimals, by JavaScript's `toFixed` (no float formatting in the module).
-pub fn fixed(x: f64, digits: u8) -> String {
-    js_sys::Number::from(x).to_fixed(digits).map(String::from).unwrap_or_default()
-}
-
-/// `x` in exponent form with `digits` decimals, by JavaScript's `toExponential`.
-pub fn exponential(x: f64, digits: u8) -> String {
-    js_sys::Number::from(x).to_exponential(digits).map(String::from).unwrap_or_default()
-}
-
-/// `String(x)`.
-pub fn number(x: f64) -> String {
-    js_sys::Number::from(x).to_string_with_radix(10).map(String::from).unwrap_or_default()
 }
 
 /// `rgb(…)` of a colour scaled by `light` (1 = as is).
@@ -149,15 +125,25 @@ impl<'a> Pen<'a> {
 
     /// Text at `(x, y)`; `align` is "left", "center" or "right", the baseline is the middle.
     pub fn text(&self, text: &str, (x, y): (f64, f64), color: &str, size: f64, align: &str) {
+        self.font(size);
+        self.ctx.set_text_align(align);
+        self.ctx.set_text_baseline("middle");
+        self.ctx.set_fill_style_str(color);
+        let _ = self.ctx.fill_text(text, x, y);
+    }
+
+    /// The width of `text` in CSS pixels at `size`.
+    pub fn text_width(&self, text: &str, size: f64) -> f64 {
+        self.font(size);
+        self.ctx.measure_text(text).map(|m| m.width()).unwrap_or(0.0)
+    }
+
+    fn font(&self, size: f64) {
         let tenths = (size * 10.0).round() as u32;
         self.ctx.set_font(&format!(
             "{}.{}px system-ui, -apple-system, 'Segoe UI', sans-serif",
             tenths / 10,
             tenths % 10
         ));
-        self.ctx.set_text_align(align);
-        self.ctx.set_text_baseline("middle");
-        self.ctx.set_fill_style_str(color);
-        let _ = self.ctx.fill_text(text, x, y);
     }
 }

@@ -1,25 +1,20 @@
 //! The batch calls: Float64Arrays in, results written into the caller's `out`. Arrays that live in
-//! the module's own memory ([`Float64Buffer`] views) are used in place, with no copy at all;
+//! the module's own memory ([`crate::Float64Buffer`] views) are used in place, with no copy at all;
 //! others are copied in and out a chunk at a time, so a call of any size needs only a few hundred
 //! KB of wasm memory and no allocation on the JavaScript side.
 
 use js_sys::{Float64Array, WebAssembly};
+use kli::KliError;
+use kli::batch::{BatchKind, check_lengths, kli_sample_into, run_batch};
+use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
-use super::{
-    KliOptionsObject, QuaternionLike, describe, error, invalid, number, options, quaternion,
-};
-use crate::KliError;
-use crate::batch::{BatchKind, check_lengths, kli_sample_into, run_batch};
+use crate::error::{JsResult, throw};
+use crate::options::{KliOptionsObject, read_options};
+use crate::read::{QuaternionLike, describe, float64_array, quaternion};
 
 /// Pairs per chunk: 4096 × 13 numbers × 8 bytes = 416 KB of scratch.
 const CHUNK: usize = 4096;
-
-fn float64_array<'a>(name: &str, value: &'a JsValue) -> Result<&'a Float64Array, KliError> {
-    value
-        .dyn_ref::<Float64Array>()
-        .ok_or_else(|| invalid(name, format!("must be a Float64Array (got {})", describe(value))))
-}
 
 /// The byte range `[start, end)` of `array` in the module's memory, if it is a view of it.
 fn in_wasm_memory(array: &Float64Array) -> Option<(usize, usize)> {
@@ -102,9 +97,9 @@ pub fn slerp_batch(
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] s: &JsValue,
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] out: &JsValue,
     options: Option<KliOptionsObject>,
-) -> Result<Float64Array, JsError> {
-    let shortest_path = self::options(options).map_err(error)?.shortest_path;
-    run(BatchKind::Slerp, starts, ends, s, out, shortest_path).map_err(error)?;
+) -> JsResult<Float64Array> {
+    let shortest_path = read_options(options).map_err(throw)?.shortest_path;
+    run(BatchKind::Slerp, starts, ends, s, out, shortest_path).map_err(throw)?;
     Ok(out.clone().unchecked_into())
 }
 
@@ -117,9 +112,9 @@ pub fn kli_exact_batch(
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] t: &JsValue,
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] out: &JsValue,
     options: Option<KliOptionsObject>,
-) -> Result<Float64Array, JsError> {
-    let shortest_path = self::options(options).map_err(error)?.shortest_path;
-    run(BatchKind::KliExact, starts, ends, t, out, shortest_path).map_err(error)?;
+) -> JsResult<Float64Array> {
+    let shortest_path = read_options(options).map_err(throw)?.shortest_path;
+    run(BatchKind::KliExact, starts, ends, t, out, shortest_path).map_err(throw)?;
     Ok(out.clone().unchecked_into())
 }
 
@@ -131,8 +126,8 @@ pub fn nlerp_batch(
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] ends: &JsValue,
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] s: &JsValue,
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] out: &JsValue,
-) -> Result<Float64Array, JsError> {
-    run(BatchKind::Nlerp, starts, ends, s, out, true).map_err(error)?;
+) -> JsResult<Float64Array> {
+    run(BatchKind::Nlerp, starts, ends, s, out, true).map_err(throw)?;
     Ok(out.clone().unchecked_into())
 }
 
@@ -144,72 +139,19 @@ pub fn kli_sample(
     r: &QuaternionLike,
     #[wasm_bindgen(unchecked_param_type = "Float64Array | ArrayLike<number>")] times: &JsValue,
     options: Option<KliOptionsObject>,
-) -> Result<Vec<f64>, JsError> {
-    let shortest_path = self::options(options).map_err(error)?.shortest_path;
-    let (p, r) = (quaternion("p", p).map_err(error)?, quaternion("r", r).map_err(error)?);
+) -> JsResult<Vec<f64>> {
+    let shortest_path = read_options(options).map_err(throw)?.shortest_path;
+    let (p, r) = (quaternion("p", p).map_err(throw)?, quaternion("r", r).map_err(throw)?);
     let times: Vec<f64> = if let Some(array) = times.dyn_ref::<Float64Array>() {
         array.to_vec()
     } else if times.is_object() {
         Float64Array::new(times).to_vec()
     } else {
-        return Err(error(invalid(
-            "times",
-            format!("must be a Float64Array or an array of numbers (got {})", describe(times)),
-        )));
+        let problem =
+            format!("must be a Float64Array or an array of numbers (got {})", describe(times));
+        return Err(throw(KliError::invalid("times", problem)));
     };
     let mut out = vec![0.0; 4 * times.len()];
-    kli_sample_into(p, r, &times, &mut out, shortest_path).map_err(error)?;
+    kli_sample_into(p, r, &times, &mut out, shortest_path).map_err(throw)?;
     Ok(out)
-}
-
-/// An f64 array in the module's own memory: pass its `view` to the batch calls and they read and
-/// write it in place, with no copy. A view is valid until the module's memory grows (any call
-/// may grow it), so read `view` again before each use rather than keeping it.
-#[wasm_bindgen]
-pub struct Float64Buffer {
-    data: Vec<f64>,
-}
-
-/// The largest buffer: 2^27 numbers, 1 GiB.
-const MAX_BUFFER: usize = 1 << 27;
-
-#[wasm_bindgen]
-impl Float64Buffer {
-    /// `length` zeros.
-    #[wasm_bindgen(constructor)]
-    pub fn new(length: f64) -> Result<Float64Buffer, JsError> {
-        if !(length.is_finite()
-            && length >= 0.0
-            && length.fract() == 0.0
-            && length <= MAX_BUFFER as f64)
-        {
-            return Err(error(invalid(
-                "length",
-                format!("must be a whole number from 0 to {MAX_BUFFER} (got {})", number(length)),
-            )));
-        }
-        let mut data = Vec::new();
-        data.try_reserve_exact(length as usize).map_err(|_| {
-            error(invalid(
-                "length",
-                format!("{} numbers do not fit in the module's memory", number(length)),
-            ))
-        })?;
-        data.resize(length as usize, 0.0);
-        Ok(Float64Buffer { data })
-    }
-
-    /// A Float64Array over the buffer, in the module's memory.
-    #[wasm_bindgen(getter)]
-    pub fn view(&self) -> Float64Array {
-        // SAFETY: the view is handed to JavaScript, which may write through it; Rust never holds
-        // a reference to `data` across a call, and the view dies with a memory growth.
-        unsafe { Float64Array::view(&self.data) }
-    }
-
-    /// The number of f64 values.
-    #[wasm_bindgen(getter)]
-    pub fn length(&self) -> usize {
-        self.data.len()
-    }
 }

@@ -3,9 +3,10 @@
 
 use glam::{DQuat, DVec3};
 
-use super::aircraft::{Face, normal};
-use super::camera::{Camera, Viewport};
-use super::pen::{AXIS_X, AXIS_Y, AXIS_Z, Pen, shade};
+use crate::aircraft::{Face, normal};
+use crate::camera::{Camera, Viewport};
+use crate::palette::{AXIS_X, AXIS_Y, AXIS_Z};
+use crate::pen::{Pen, shade};
 
 /// The default view of the object: from the front-left, a little above.
 pub fn object_camera() -> Camera {

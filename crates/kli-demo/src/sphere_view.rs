@@ -4,10 +4,12 @@
 
 use glam::DVec3;
 
-use super::camera::{Camera, Viewport};
-use super::pen::{AXIS_X, AXIS_Y, AXIS_Z, GRID, INK, KLI, MUTED, Pen, SLERP, fixed};
-use super::scene::Scene;
-use crate::hopf::hopf;
+use crate::camera::{Camera, Viewport};
+use crate::format::fixed;
+use crate::palette::{AXIS_X, AXIS_Y, AXIS_Z, GRID, INK, KLI, MUTED, SLERP};
+use crate::pen::Pen;
+use crate::scene::Scene;
+use kli::hopf::hopf;
 
 /// The default view of the sphere: both ends of the paper's curve in front.
 pub fn sphere_camera() -> Camera {
@@ -70,7 +72,7 @@ fn grid() -> Vec<Vec<DVec3>> {
 pub fn draw_sphere(pen: &Pen, viewport: &Viewport, camera: &Camera, scene: &Scene) {
     let grid = grid();
     let moments = scene.moments();
-    let kli_moments: Vec<DVec3> = moments.iter().map(|&m| hopf(scene.kli_at(m))).collect();
+    let kli_moments: Vec<DVec3> = moments.iter().map(|&m| hopf(scene.integrated_at(m))).collect();
     let slerp_moments: Vec<DVec3> = moments.iter().map(|&m| hopf(scene.slerp_at(m))).collect();
     let start = hopf(scene.path().arc().start());
     let end = hopf(scene.path().target());
@@ -126,7 +128,7 @@ pub fn draw_sphere(pen: &Pen, viewport: &Viewport, camera: &Camera, scene: &Scen
 pub fn draw_sphere_cursor(pen: &Pen, viewport: &Viewport, camera: &Camera, scene: &Scene, t: f64) {
     let at = |p: DVec3| viewport.pixel(camera.project(p));
     pen.disc(at(hopf(scene.slerp_at(t))), 7.0, None, Some((SLERP, 2.5)));
-    pen.disc(at(hopf(scene.kli_at(t))), 7.5, Some(KLI), Some((INK, 2.0)));
+    pen.disc(at(hopf(scene.integrated_at(t))), 7.5, Some(KLI), Some((INK, 2.0)));
     pen.text(
         &format!("t = {}", fixed(t, 2)),
         (viewport.left + 8.0, viewport.top + 12.0),

@@ -1,25 +1,34 @@
-//! The demo page's boundary: one [`Demo`] per choice of `p`, `r` and options, holding the
-//! computed [`Scene`] and drawing its views onto canvas contexts the page passes in.
+//! The `Demo` class: one per choice of `p`, `r` and options, holding the computed [`Scene`] and
+//! drawing its views onto canvas contexts the page passes in.
 
+use glam::DQuat;
+use kli::quaternion::to_wxyz;
+use kli_wasm::error::{JsResult, throw};
+use kli_wasm::options::{KliOptionsObject, read_options};
+use kli_wasm::read::{QuaternionLike, quaternion};
 use wasm_bindgen::prelude::*;
 use web_sys::CanvasRenderingContext2d;
 
-use super::{KliOptionsObject, QuaternionLike, error, options, quaternion, to_array};
-use crate::render::aircraft::{Face, aircraft};
-use crate::render::camera::{Camera, Viewport};
-use crate::render::object_view::{draw_object, object_camera};
-use crate::render::pen::{INK, KLI, MUTED, Pen, SLERP, fixed, number};
-use crate::render::plots::{draw_plot_cursors, draw_plots};
-use crate::render::scene::Scene;
-use crate::render::sphere_view::{draw_sphere, draw_sphere_cursor, sphere_camera};
-
-const BACKGROUND: &str = "#ffffff";
+use crate::aircraft::{Face, aircraft};
+use crate::camera::{Camera, Viewport};
+use crate::format::{fixed, number};
+use crate::object_view::{draw_object, object_camera};
+use crate::palette::{BACKGROUND, INK, KLI, MUTED, SLERP};
+use crate::pen::Pen;
+use crate::plots::{draw_plot_cursors, draw_plots};
+use crate::scene::Scene;
+use crate::sphere_view::{draw_sphere, draw_sphere_cursor, sphere_camera};
 
 /// The KLI run behind the demo page, and its canvas views.
 #[wasm_bindgen]
 pub struct Demo {
     scene: Scene,
     mesh: Vec<Face>,
+    flipped: bool,
+}
+
+fn to_array(q: DQuat) -> Vec<f64> {
+    to_wxyz(q).to_vec()
 }
 
 #[wasm_bindgen]
@@ -30,11 +39,20 @@ impl Demo {
         p: &QuaternionLike,
         r: &QuaternionLike,
         options: Option<KliOptionsObject>,
-    ) -> Result<Demo, JsError> {
-        let options = self::options(options).map_err(error)?;
-        let (p, r) = (quaternion("p", p).map_err(error)?, quaternion("r", r).map_err(error)?);
-        let path = crate::kli(p, r, &options).map_err(error)?;
-        Ok(Demo { scene: Scene::new(path), mesh: aircraft() })
+    ) -> JsResult<Demo> {
+        let options = read_options(options).map_err(throw)?;
+        let p = quaternion("p", p).map_err(throw)?;
+        let r = quaternion("r", r).map_err(throw)?;
+        let path = kli::kli(p, r, &options).map_err(throw)?;
+        // The target is r or -r bit for bit, so this is the core's own choice, not a re-derivation.
+        let flipped = path.target() != r;
+        Ok(Demo { scene: Scene::new(path), mesh: aircraft(), flipped })
+    }
+
+    /// Whether the flow goes to −r (shortestPath and p·r < 0): the same rotation as r.
+    #[wasm_bindgen(getter)]
+    pub fn flipped(&self) -> bool {
+        self.flipped
     }
 
     /// T, measured by Algorithm 1.
@@ -68,15 +86,15 @@ impl Demo {
     }
 
     /// The integrated q at t (between samples by normalised linear interpolation).
-    #[wasm_bindgen(js_name = kliAt)]
-    pub fn kli_at(&self, t: f64) -> Vec<f64> {
-        to_array(self.scene.kli_at(finite(t)))
+    #[wasm_bindgen(js_name = integratedAt)]
+    pub fn integrated_at(&self, t: f64) -> Vec<f64> {
+        to_array(self.scene.integrated_at(finite(t)))
     }
 
-    /// The exact q(t) of the closed form.
+    /// The exact q(t) of the closed form, as `KliPath.exactAt`.
     #[wasm_bindgen(js_name = exactAt)]
-    pub fn exact_at(&self, t: f64) -> Result<Vec<f64>, JsError> {
-        self.scene.path().at(t).map(to_array).map_err(error)
+    pub fn exact_at(&self, t: f64) -> JsResult<Vec<f64>> {
+        self.scene.path().exact_at(t).map(to_array).map_err(throw)
     }
 
     /// SLERP on the same clock, s = t / T.
@@ -101,7 +119,7 @@ impl Demo {
         let side_by_side = width >= height;
         let (w, h) = if side_by_side { (width / 2.0, height) } else { (width, height / 2.0) };
         let panels = [
-            (self.scene.kli_at(t), KLI, format!("KLI  t = {}", fixed(t, 2))),
+            (self.scene.integrated_at(t), KLI, format!("KLI  t = {}", fixed(t, 2))),
             (
                 self.scene.slerp_at(t),
                 SLERP,
@@ -116,7 +134,8 @@ impl Demo {
         }
     }
 
-    /// The object at each of Table 1's moments, in a row (Fig. 2).
+    /// The object at each of Table 1's moments, in a row (Fig. 2), labelled with the time; on
+    /// a narrow canvas the labels drop "t =" and then shrink, so that they never overlap.
     #[wasm_bindgen(js_name = drawFilmstrip)]
     pub fn draw_filmstrip(
         &self,
@@ -129,22 +148,27 @@ impl Demo {
         let camera = object_camera();
         let moments = self.scene.moments();
         let cell = width / moments.len() as f64;
+        let last = moments.len() - 1;
+        let labels = |short: bool| -> Vec<String> {
+            let t = |i: usize, m: f64| if i == last { fixed(m, 2) } else { number(m) };
+            let names = if short { ("", "T ") } else { ("t = ", "T = ") };
+            let name = |i: usize| if i == last { names.1 } else { names.0 };
+            moments.iter().enumerate().map(|(i, &m)| format!("{}{}", name(i), t(i, m))).collect()
+        };
+        let fits = |labels: &[String], size: f64| {
+            labels.iter().all(|l| pen.text_width(l, size) <= cell - 6.0)
+        };
+        let (labels, size) = [(false, 12.0), (true, 12.0), (true, 10.0), (true, 8.0)]
+            .into_iter()
+            .map(|(short, size)| (labels(short), size))
+            .find(|(labels, size)| fits(labels, *size))
+            .unwrap_or_else(|| (labels(true), 8.0));
         for (i, &t) in moments.iter().enumerate() {
             let left = i as f64 * cell;
             let viewport = Viewport::fitting(left, 0.0, cell, height - 16.0, 1.6);
-            draw_object(&pen, &viewport, &camera, &self.mesh, self.scene.kli_at(t), false);
-            let label = if i + 1 == moments.len() {
-                format!("T = {}", fixed(t, 2))
-            } else {
-                format!("t = {}", number(t))
-            };
-            pen.text(
-                &label,
-                (left + 0.5 * cell, height - 9.0),
-                if i + 1 == moments.len() { INK } else { MUTED },
-                12.0,
-                "center",
-            );
+            draw_object(&pen, &viewport, &camera, &self.mesh, self.scene.integrated_at(t), false);
+            let colour = if i == last { INK } else { MUTED };
+            pen.text(&labels[i], (left + 0.5 * cell, height - 9.0), colour, size, "center");
         }
     }
 

@@ -4,8 +4,8 @@
 #![cfg(target_arch = "wasm32")]
 
 use js_sys::{Array, Float64Array, Object, Reflect};
-use kli::bindings::{self as api, KliOptionsObject, QuaternionLike, Vector3Like};
-use wasm_bindgen::{JsCast, JsError, JsValue};
+use kli_wasm::{self as api, KliOptionsObject, QuaternionLike, Vector3Like};
+use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::wasm_bindgen_test;
 
 const P: [f64; 4] = [0.0, 0.0, 0.0, 1.0];
@@ -28,8 +28,7 @@ fn options(entries: &[(&str, JsValue)]) -> Option<KliOptionsObject> {
     Some(object.unchecked_into())
 }
 
-fn message(error: JsError) -> String {
-    let value = JsValue::from(error);
+fn message(value: JsValue) -> String {
     assert!(value.is_instance_of::<js_sys::Error>(), "not an Error: {value:?}");
     value.unchecked_into::<js_sys::Error>().message().into()
 }
@@ -95,7 +94,7 @@ fn integrated_path_matches_the_closed_form() {
             api::kli(&quat(&P), &quat(&R), options(&[("integrator", integrator.into())])).unwrap();
         let q = path.quaternions().to_vec();
         for (n, &t) in path.times().to_vec().iter().enumerate() {
-            let exact = path.at(t).unwrap().to_vec();
+            let exact = path.exact_at(t).unwrap().to_vec();
             assert!(close(&q[4 * n..4 * n + 4], &exact, agreement), "{integrator} t = {t}");
             let norm = q[4 * n..4 * n + 4].iter().map(|c| c * c).sum::<f64>().sqrt();
             assert!((norm - 1.0).abs() < norm_drift, "{integrator} t = {t}: |q| = {norm}");
@@ -207,7 +206,7 @@ fn shortest_path_both_ways() {
     ));
 }
 
-fn expect_error(result: Result<impl Sized, JsError>, starts_with: &str) {
+fn expect_error(result: Result<impl Sized, JsValue>, starts_with: &str) {
     match result {
         Ok(_) => panic!("expected an Error starting with {starts_with:?}"),
         Err(e) => {
@@ -294,7 +293,7 @@ fn bad_times_and_impossible_requests_throw() {
         expect_error(api::kli_exact(&p, &r, t, None), "t must be a finite number ≥ 0");
         expect_error(api::kli_to_slerp_parameter(&p, &r, t, None), "t must be a finite number ≥ 0");
         let path = api::kli(&p, &r, None).unwrap();
-        expect_error(path.at(t), "t must be a finite number ≥ 0");
+        expect_error(path.exact_at(t), "t must be a finite number ≥ 0");
     }
     expect_error(api::kli_reach_time(&p, &r, 0.0, None), "tolerance must be a finite number > 0");
     expect_error(api::slerp(&p, &r, f64::NAN, None), "s must be a finite number");
@@ -493,4 +492,124 @@ fn batch_errors_name_the_argument_and_element() {
     .unwrap()
     .to_vec();
     assert!(close(&half, &[0.5_f64.sqrt(), 0.5_f64.sqrt(), 0.0, 0.0], 1e-15));
+}
+
+// ---- Errors carry their argument; the fuzzing finds of issue 7 ------------------------------
+
+/// The `argument`, `kind` and `component` properties of a thrown Error.
+fn properties(result: Result<impl Sized, JsValue>) -> (String, String, Option<f64>) {
+    let Err(error) = result else { panic!("expected an Error") };
+    let get = |key: &str| Reflect::get(&error, &key.into()).unwrap();
+    (
+        get("argument").as_string().unwrap(),
+        get("kind").as_string().unwrap(),
+        get("component").as_f64(),
+    )
+}
+
+#[wasm_bindgen_test]
+fn errors_carry_the_argument_and_kind_as_properties() {
+    let (p, r) = (quat(&P), quat(&R));
+    let p_nan = quat(&[0.0, f64::NAN, 0.0, 1.0]);
+    assert_eq!(
+        properties(api::kli(&p_nan, &r, None)),
+        ("p".into(), "not-finite".into(), Some(1.0))
+    );
+    assert_eq!(
+        properties(api::kli(&p, &r, options(&[("maxTime", (-1.0).into())]))),
+        ("maxTime".into(), "out-of-range".into(), None)
+    );
+    let minus_p = quat(&[0.0, 0.0, 0.0, -1.0]);
+    let long = options(&[("shortestPath", false.into())]);
+    assert_eq!(
+        properties(api::kli(&p, &minus_p, long)),
+        ("shortestPath".into(), "antipodal".into(), None)
+    );
+    // δ = 5 on the paper's pair: the step's fault, not the shortest-path choice's.
+    assert_eq!(
+        properties(api::kli(&p, &r, options(&[("step", 5.into())]))),
+        ("step".into(), "unstable".into(), None)
+    );
+    assert_eq!(
+        properties(api::kli(&p, &r, options(&[("integrator", "rk5".into())]))),
+        ("integrator".into(), "unknown-name".into(), None)
+    );
+    let mut ends = R.repeat(9);
+    ends[4 * 7] = f64::INFINITY;
+    let batch = api::slerp_batch(
+        &f64s(&P.repeat(9)),
+        &f64s(&ends),
+        &f64s(&[0.5; 9]),
+        &f64s(&[0.0; 36]),
+        None,
+    );
+    assert_eq!(properties(batch), ("ends[7]".into(), "not-finite".into(), Some(0.0)));
+    let long = options(&[("shortestPath", false.into())]);
+    expect_error(api::kli(&p, &minus_p, long), "p and r are antipodal and shortestPath is false");
+}
+
+#[wasm_bindgen_test]
+fn huge_slerp_parameters_throw_instead_of_nan() {
+    let (p, r) = (quat(&P), quat(&R));
+    let one = |x: f64| f64s(&[x]);
+    for s in [1e6 + 1.0, 1e20, 1e300, f64::MAX, -1e300] {
+        expect_error(
+            api::slerp(&p, &r, s, None),
+            "s must be a finite number from -1000000 to 1000000",
+        );
+        let batch = api::slerp_batch(&f64s(&P), &f64s(&R), &one(s), &f64s(&[0.0; 4]), None);
+        expect_error(batch, "s[0] must be a finite number from -1000000 to 1000000");
+        let nlerp = api::nlerp_batch(&f64s(&P), &f64s(&R), &one(s), &f64s(&[0.0; 4]));
+        expect_error(nlerp, "s[0] must be a finite number from -1000000 to 1000000");
+    }
+    // Within the bound, single and batch agree exactly (both take the single call's path).
+    for s in [1e6, -7.5e5, 1234.5, -3.0] {
+        let single = api::slerp(&p, &r, s, None).unwrap().to_vec();
+        let batch =
+            api::slerp_batch(&f64s(&P), &f64s(&R), &one(s), &f64s(&[0.0; 4]), None).unwrap();
+        assert_eq!(batch.to_vec(), single, "s = {s}");
+        assert!((single.iter().map(|c| c * c).sum::<f64>() - 1.0).abs() < 1e-15);
+    }
+}
+
+#[wasm_bindgen_test]
+fn unit_inputs_come_back_exactly_at_the_ends() {
+    // Normalised quaternions whose |q|² is 1 exactly in f64 (x² + y² + z² + w², glam's order),
+    // found by search: most normalised quaternions are, none of these is a "round" one.
+    let mut found = (1..200).map(|k| {
+        let k = k as f64;
+        let q = [0.3 + 0.01 * k, -0.1 * k, 0.7, 0.2 + 0.003 * k];
+        let n = q.iter().map(|c| c * c).sum::<f64>().sqrt();
+        q.map(|c| c / n)
+    });
+    let mut next_unit =
+        || found.find(|q| q[1] * q[1] + q[2] * q[2] + q[3] * q[3] + q[0] * q[0] == 1.0).unwrap();
+    let (p, r) = (next_unit(), next_unit());
+    assert_eq!(api::slerp(&quat(&p), &quat(&r), 0.0, None).unwrap().to_vec(), p);
+    assert_eq!(api::slerp(&quat(&p), &quat(&r), 1.0, None).unwrap().to_vec(), r);
+    assert_eq!(api::kli_exact(&quat(&p), &quat(&r), 0.0, None).unwrap().to_vec(), p);
+    let batch = |s: f64| {
+        api::slerp_batch(&f64s(&p), &f64s(&r), &f64s(&[s]), &f64s(&[0.0; 4]), None)
+            .unwrap()
+            .to_vec()
+    };
+    assert_eq!(batch(0.0), p);
+    assert_eq!(batch(1.0), r);
+}
+
+#[wasm_bindgen_test]
+fn kli_meets_the_tolerance_or_throws() {
+    // 1e-312 apart: a plain |r − p| underflows to 0 and would pass any tolerance at t = 0.
+    let (p, r) = ([1.0, 0.0, 0.0, 0.0], [1.0, 1e-312, 0.0, 0.0]);
+    for tolerance in [5e-324, 1e-315, 1e-312] {
+        match api::kli(&quat(&p), &quat(&r), options(&[("tolerance", tolerance.into())])) {
+            Ok(path) => {
+                let q = path.quaternions().to_vec();
+                let last = &q[q.len() - 4..];
+                let gap = ((r[1] - last[1]) * 1e300).hypot((r[0] - last[0]) * 1e300);
+                assert!(gap < tolerance * 1e300, "ε = {tolerance:e}: {gap:e} × 1e-300");
+            }
+            Err(e) => assert_eq!(properties(Err::<(), _>(e)).1, "not-reached", "ε = {tolerance:e}"),
+        }
+    }
 }

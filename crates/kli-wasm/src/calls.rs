@@ -1,0 +1,110 @@
+//! The single calls: one pair of rotations (or one rotation) in, one answer out.
+
+use glam::DQuat;
+use kli::KliOptions;
+use kli::quaternion::to_wxyz;
+use wasm_bindgen::prelude::*;
+
+use crate::error::{JsResult, throw};
+use crate::options::{KliOptionsObject, read_options};
+use crate::path::JsKliPath;
+use crate::read::{QuaternionLike, Vector3Like, quaternion, vector3};
+
+fn to_array(q: DQuat) -> Vec<f64> {
+    to_wxyz(q).to_vec()
+}
+
+/// The options, then `p` and `r`, read and checked in that order.
+fn pair_and_options(
+    p: &QuaternionLike,
+    r: &QuaternionLike,
+    options: Option<KliOptionsObject>,
+) -> JsResult<(DQuat, DQuat, KliOptions)> {
+    let options = read_options(options).map_err(throw)?;
+    let p = quaternion("p", p).map_err(throw)?;
+    let r = quaternion("r", r).map_err(throw)?;
+    Ok((p, r, options))
+}
+
+/// Runs the KLI algorithm (paper, Algorithm 1) from p towards r. The last sample is within the
+/// tolerance of the target, or the call throws.
+#[wasm_bindgen]
+pub fn kli(
+    p: &QuaternionLike,
+    r: &QuaternionLike,
+    options: Option<KliOptionsObject>,
+) -> JsResult<JsKliPath> {
+    let (p, r, options) = pair_and_options(p, r, options)?;
+    kli::kli(p, r, &options).map(JsKliPath::from).map_err(throw)
+}
+
+/// The exact KLI solution q(t) for finite t ≥ 0 (closed form; only `shortestPath` is used).
+#[wasm_bindgen(js_name = kliExact)]
+pub fn kli_exact(
+    p: &QuaternionLike,
+    r: &QuaternionLike,
+    t: f64,
+    options: Option<KliOptionsObject>,
+) -> JsResult<Vec<f64>> {
+    let (p, r, options) = pair_and_options(p, r, options)?;
+    kli::kli_exact(p, r, t, options.shortest_path).map(to_array).map_err(throw)
+}
+
+/// The SLERP parameter s(t) ∈ [0, 1) with kliExact(p, r, t) = slerp(p, r, s(t)).
+#[wasm_bindgen(js_name = kliToSlerpParameter)]
+pub fn kli_to_slerp_parameter(
+    p: &QuaternionLike,
+    r: &QuaternionLike,
+    t: f64,
+    options: Option<KliOptionsObject>,
+) -> JsResult<f64> {
+    let (p, r, options) = pair_and_options(p, r, options)?;
+    kli::kli_to_slerp_parameter(p, r, t, options.shortest_path).map_err(throw)
+}
+
+/// T* = ln(tan(φ0/2) / tan(arcsin(ε/2))): the exact first time ||target − q(t)|| < tolerance.
+#[wasm_bindgen(js_name = kliReachTime)]
+pub fn kli_reach_time(
+    p: &QuaternionLike,
+    r: &QuaternionLike,
+    tolerance: f64,
+    options: Option<KliOptionsObject>,
+) -> JsResult<f64> {
+    let (p, r, options) = pair_and_options(p, r, options)?;
+    kli::kli_reach_time(p, r, tolerance, options.shortest_path).map_err(throw)
+}
+
+/// Slerp(p, r; s) (Shoemake); s outside [0, 1] extrapolates along the same great circle, up to
+/// |s| ≤ 1e6. Unit inputs come back exactly at s = 0 and s = 1.
+#[wasm_bindgen]
+pub fn slerp(
+    p: &QuaternionLike,
+    r: &QuaternionLike,
+    s: f64,
+    options: Option<KliOptionsObject>,
+) -> JsResult<Vec<f64>> {
+    let (p, r, options) = pair_and_options(p, r, options)?;
+    kli::slerp(p, r, s, options.shortest_path).map(to_array).map_err(throw)
+}
+
+/// The Hopf map of paper eq. 5: the point (x, y, z) of S² where q sends the body x-axis.
+#[wasm_bindgen]
+pub fn hopf(q: &QuaternionLike) -> JsResult<Vec<f64>> {
+    let q = quaternion("q", q).map_err(throw)?;
+    Ok(kli::hopf(q).to_array().to_vec())
+}
+
+/// The polar form q = cos(θ/2) + U sin(θ/2) as [Ux, Uy, Uz, θ], θ ∈ [0, 2π].
+#[wasm_bindgen(js_name = axisAngle)]
+pub fn axis_angle(q: &QuaternionLike) -> JsResult<Vec<f64>> {
+    let q = quaternion("q", q).map_err(throw)?;
+    let (axis, angle) = kli::axis_angle(q).map_err(throw)?;
+    Ok(vec![axis.x, axis.y, axis.z, angle])
+}
+
+/// The unit quaternion [w, x, y, z] of a rotation by `angle` radians about `axis` ([x, y, z]).
+#[wasm_bindgen(js_name = fromAxisAngle)]
+pub fn from_axis_angle(axis: &Vector3Like, angle: f64) -> JsResult<Vec<f64>> {
+    let axis = vector3("axis", axis).map_err(throw)?;
+    kli::from_axis_angle(axis, angle).map(to_array).map_err(throw)
+}

@@ -1,0 +1,80 @@
+//! # kli-wasm: the npm package `kli`
+//!
+//! The JavaScript API of the [`kli`] crate, and nothing else: each file converts and checks
+//! JavaScript values, calls the plain-Rust core, and turns every [`kli::KliError`] into a
+//! JavaScript `Error` whose message names the argument and whose `argument` and `kind` properties
+//! say the same for code ([`error`]). Nothing here may panic: a panic would trap and kill the
+//! module for the page.
+//!
+//! Quaternions cross as 4 numbers, scalar first `[w, x, y, z]`; results are `Float64Array`s.
+//! Names are the Rust names in camelCase (`max_time` is `maxTime`), everywhere.
+//!
+//! Files: [`error`] (errors and number formatting), [`read`] (JavaScript values in), [`options`]
+//! (the options object), [`calls`] (the single calls), [`path`] (the `KliPath` class), [`batch`]
+//! (many pairs a call), [`buffer`] (`Float64Buffer`, arrays in the module's memory). Crates that
+//! add to the module (the demo page's `kli-demo`) use [`error`], [`read`] and [`options`] too.
+
+pub mod batch;
+pub mod buffer;
+pub mod calls;
+pub mod error;
+pub mod options;
+pub mod path;
+pub mod read;
+
+pub use batch::{kli_exact_batch, kli_sample, nlerp_batch, slerp_batch};
+pub use buffer::Float64Buffer;
+pub use calls::{
+    axis_angle, from_axis_angle, hopf, kli, kli_exact, kli_reach_time, kli_to_slerp_parameter,
+    slerp,
+};
+pub use error::JsResult;
+pub use options::KliOptionsObject;
+pub use path::JsKliPath;
+pub use read::{QuaternionLike, Vector3Like};
+
+use wasm_bindgen::prelude::*;
+
+#[wasm_bindgen(typescript_custom_section)]
+const TYPES: &'static str = r#"
+/** A quaternion as 4 finite numbers, scalar first: `[w, x, y, z]` (the paper's a + bi + cj + dk).
+ *  An Array or a typed array; it is normalised, and must not be all zero. */
+export type QuaternionLike = ArrayLike<number>;
+
+/** A 3-vector as 3 finite numbers `[x, y, z]`: an Array or a typed array. */
+export type Vector3Like = ArrayLike<number>;
+
+/** How Algorithm 1 takes a step: classical Runge–Kutta, explicit Euler (drifts off S³), or the
+ *  RK4 step taken along a great circle (stays on S³). */
+export type Integrator = "rk4" | "euler" | "geodesic";
+
+/** Options of every call; every key is optional and unknown keys are rejected. */
+export interface KliOptions {
+  /** ε: Algorithm 1 stops once ||target − q(T)|| < ε. Finite, > 0. Default 1e-5. */
+  tolerance?: number;
+  /** δ: the time step of Algorithm 1. Finite, > 0. Default 0.01. */
+  step?: number;
+  /** Algorithm 1 fails with an Error past this time. Finite, > 0. Default 100. */
+  maxTime?: number;
+  /** Default "rk4". */
+  integrator?: Integrator;
+  /** When true (default) and p·r < 0, go to −r: the same rotation, the shorter arc. When false,
+   *  go to r the long way round; p = −r is then an equilibrium and an Error. */
+  shortestPath?: boolean;
+}
+
+/** What is wrong, in a word: the `kind` of every Error kli throws. */
+export type KliErrorKind =
+  | "not-finite" | "zero-length" | "out-of-range" | "wrong-length" | "unknown-name" | "antipodal"
+  | "not-reached" | "stalled" | "left-sphere" | "unstable" | "too-many-steps" | "invalid";
+
+/** Every Error kli throws: the message starts with the argument's name, and the same facts are
+ *  properties, so code can route an error without reading its text. */
+export interface KliError extends Error {
+  /** The argument at fault, as the call names it: "p", "maxTime", "ends[7]". */
+  argument: string;
+  kind: KliErrorKind;
+  /** For kind "not-finite": which component, 0 for w (or x of a 3-vector). */
+  component?: number;
+}
+"#;

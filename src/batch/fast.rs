@@ -1,0 +1,404 @@
+//! The batch kernels for the common case, branch-free and two pairs a step on [`Lanes`]: unit
+//! inputs up to rounding, parameters in range, the target not near `-p`. Each reports whether
+//! every pair was in its domain; if one was not, the caller redoes the call pair by pair.
+//! Formulas: the half-angle frame of the parent module's docs.
+
+use super::BatchKind;
+use crate::lanes::{Lanes, Mask};
+use crate::slerp::MAX_PARAMETER;
+
+/// Runs the fast kernel of `kind`; returns whether every pair was in its domain (when not,
+/// `out` holds garbage for the pairs outside it).
+pub(super) fn run(
+    kind: BatchKind,
+    starts: &[f64],
+    ends: &[f64],
+    parameters: &[f64],
+    out: &mut [f64],
+    shortest_path: bool,
+) -> bool {
+    match kind {
+        BatchKind::KliExact => kli_exact(starts, ends, parameters, out, shortest_path),
+        BatchKind::Slerp => slerp(starts, ends, parameters, out, shortest_path),
+        BatchKind::Nlerp => nlerp(starts, ends, parameters, out),
+    }
+}
+
+/// `1/√n` for `n` within [`NEARLY_UNIT`] of 1, as the series `1 - e/2 + 3e²/8 - 5e³/16` in
+/// `e = n - 1` (remainder `35e⁴/128` < 3e-17): inputs that are unit quaternions up to rounding,
+/// including single-precision ones, need no square root or division.
+#[inline(always)]
+fn inverse_sqrt_near_one(n: Lanes) -> Lanes {
+    let e = n - Lanes::splat(1.0);
+    Lanes::splat(1.0)
+        + e * (Lanes::splat(-0.5) + e * (Lanes::splat(0.375) - Lanes::splat(0.3125) * e))
+}
+
+/// How far `|q|²` may be from 1 for [`inverse_sqrt_near_one`].
+const NEARLY_UNIT: f64 = 1e-4;
+
+/// One quaternion component per element, two pairs per lane.
+type Quat2 = [Lanes; 4];
+
+/// The dot product in glam's order (x, y, z, then w), so that `|q|² = 1` here exactly when
+/// [`crate::quaternion::unit`] sees it so and leaves `q` as it is.
+#[inline(always)]
+fn dot4(a: &Quat2, b: &Quat2) -> Lanes {
+    a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[0] * b[0]
+}
+
+/// The half-angle frame (module docs) of two pairs as the fast kernels build it: `d = p - t`,
+/// `s = p + t` for `p` and the target `t` normalised by [`inverse_sqrt_near_one`], their squared
+/// lengths, and whether both inputs were near enough to unit for that. `p` and `t` themselves
+/// are kept for the ends: an input with `|q|² = 1` is multiplied by exactly 1.
+struct Frame {
+    p: Quat2,
+    t: Quat2,
+    d: Quat2,
+    s: Quat2,
+    dd: Lanes,
+    ss: Lanes,
+    nearly_unit: Mask,
+}
+
+impl Frame {
+    #[inline(always)]
+    fn new(p: &Quat2, r: &Quat2, shortest_path: bool) -> Self {
+        let (np, nr) = (dot4(p, p), dot4(r, r));
+        let (ip, ir) = (inverse_sqrt_near_one(np), inverse_sqrt_near_one(nr));
+        let ir = if shortest_path {
+            Lanes::select(dot4(p, r).lt(Lanes::splat(0.0)), -ir, ir)
+        } else {
+            ir
+        };
+        let (p, t) = (p.map(|c| c * ip), r.map(|c| c * ir));
+        let d = [0, 1, 2, 3].map(|c| p[c] - t[c]);
+        let s = [0, 1, 2, 3].map(|c| p[c] + t[c]);
+        let limit = Lanes::splat(NEARLY_UNIT);
+        let nearly_unit =
+            (np - Lanes::splat(1.0)).abs().le(limit) & (nr - Lanes::splat(1.0)).abs().le(limit);
+        Self { dd: dot4(&d, &d), ss: dot4(&s, &s), p, t, d, s, nearly_unit }
+    }
+}
+
+/// Runs `kernel` over the pairs two at a time (an odd last pair fills both lanes) and writes its
+/// results to `out`; returns whether every pair was in the kernel's domain.
+#[inline(always)]
+fn two_pairs_at_a_time(
+    starts: &[f64],
+    ends: &[f64],
+    parameters: &[f64],
+    out: &mut [f64],
+    kernel: impl Fn(&Quat2, &Quat2, Lanes) -> (Quat2, Mask),
+) -> bool {
+    let lanes = |a: &[f64], b: &[f64]| -> Quat2 { [0, 1, 2, 3].map(|c| Lanes::new(a[c], b[c])) };
+    let mut all = Mask::splat(true);
+    let mut run = |p: &[f64], p2: &[f64], r: &[f64], r2: &[f64], x: Lanes, q: &mut [f64]| {
+        let (result, valid) = kernel(&lanes(p, p2), &lanes(r, r2), x);
+        all = all & valid;
+        for c in 0..4 {
+            let [first, second] = result[c].to_array();
+            q[c] = first;
+            if q.len() > 4 {
+                q[4 + c] = second;
+            }
+        }
+    };
+    let (starts2, ends2, parameters2) =
+        (starts.chunks_exact(8), ends.chunks_exact(8), parameters.chunks_exact(2));
+    let (start_rest, end_rest, parameter_rest) =
+        (starts2.remainder(), ends2.remainder(), parameters2.remainder());
+    let mut out2 = out.chunks_exact_mut(8);
+    for (((p, r), x), q) in starts2.zip(ends2).zip(parameters2).zip(&mut out2) {
+        run(&p[..4], &p[4..], &r[..4], &r[4..], Lanes::new(x[0], x[1]), q);
+    }
+    if let ([x], 4, 4) = (parameter_rest, start_rest.len(), end_rest.len()) {
+        run(start_rest, start_rest, end_rest, end_rest, Lanes::splat(*x), out2.into_remainder());
+    }
+    all.all()
+}
+
+/// The KLI closed form for every pair, assuming each is in the common case (unit inputs up to
+/// rounding, `t ≥ 0`, the target not near `-p`); returns whether all were.
+///
+/// In the half-angle frame (module docs) with `dd = |d|²`, `ss = |s|²`, `E = e^(-t)` and
+/// `u = tan(φ/2) = (|d|/|s|) E`, multiplying through by `ss` removes every square root:
+/// `q = [(ss - dd E² + 2 dd E) s + (2E ss - ss + dd E²) d] / (2 (ss + dd E²))`.
+fn kli_exact(
+    starts: &[f64],
+    ends: &[f64],
+    t: &[f64],
+    out: &mut [f64],
+    shortest_path: bool,
+) -> bool {
+    two_pairs_at_a_time(starts, ends, t, out, |p, r, t| {
+        let Frame { p, d, s, dd, ss, nearly_unit, .. } = Frame::new(p, r, shortest_path);
+        let e = (-t).exp_nonpositive();
+        let dde = dd * e;
+        let half = Lanes::splat(0.5) / (ss + dde * e);
+        let a = (ss - dde * e + Lanes::splat(2.0) * dde) * half;
+        let b = (Lanes::splat(2.0) * e * ss - ss + dde * e) * half;
+        let zero = Lanes::splat(0.0);
+        let start = t.eq(zero);
+        let q = [0, 1, 2, 3].map(|c| Lanes::select(start, p[c], a * s[c] + b * d[c]));
+        (
+            q,
+            nearly_unit
+                & Lanes::splat(FRAME_LIMIT).le(ss)
+                & zero.le(t)
+                & t.le(Lanes::splat(f64::MAX)),
+        )
+    })
+}
+
+/// `atan(u)` lane-wise for `0 ≤ u ≤ 1`, branch-free: two half-angle steps
+/// `u ↦ u / (1 + √(1 + u²))` bring `u` below `tan(π/16) ≈ 0.199`, where the Taylor series to
+/// `u²³` is exact to 1e-19.
+#[inline(always)]
+fn atan_unit_interval(u: Lanes) -> Lanes {
+    const C: [f64; 12] = [
+        1.0,
+        -1.0 / 3.0,
+        1.0 / 5.0,
+        -1.0 / 7.0,
+        1.0 / 9.0,
+        -1.0 / 11.0,
+        1.0 / 13.0,
+        -1.0 / 15.0,
+        1.0 / 17.0,
+        -1.0 / 19.0,
+        1.0 / 21.0,
+        -1.0 / 23.0,
+    ];
+    // Both halvings at once, with one division: for a = √(1 + u²), the second step of
+    // v = u / (1 + a) is w = u / (1 + a + √((1 + a)² + u²)).
+    let one = Lanes::splat(1.0);
+    let u2 = u * u;
+    let one_plus_a = one + (one + u2).sqrt();
+    let w = u / (one_plus_a + (one_plus_a * one_plus_a + u2).sqrt());
+    // The series in z = w², by Estrin's scheme (see `Lanes::exp_nonpositive`).
+    let c = C.map(Lanes::splat);
+    let z = w * w;
+    let (z2, pairs) = (z * z, [0, 1, 2, 3, 4, 5].map(|k| c[2 * k] + c[2 * k + 1] * z));
+    let z4 = z2 * z2;
+    let series = (pairs[0] + pairs[1] * z2)
+        + (pairs[2] + pairs[3] * z2) * z4
+        + (pairs[4] + pairs[5] * z2) * (z4 * z4);
+    Lanes::splat(4.0) * w * series
+}
+
+/// `(sin x, cos x)` lane-wise for `|x| ≤ π/4`, branch-free Taylor polynomials in `y = x²` (to
+/// `x¹⁷` and `x¹⁶`: remainders below 1e-17), by Estrin's scheme.
+#[inline(always)]
+fn sin_cos_small(x: Lanes) -> (Lanes, Lanes) {
+    const SIN: [f64; 9] = [
+        1.0,
+        -1.0 / 6.0,
+        1.0 / 120.0,
+        -1.0 / 5040.0,
+        1.0 / 362_880.0,
+        -1.0 / 39_916_800.0,
+        1.0 / 6_227_020_800.0,
+        -1.0 / 1_307_674_368_000.0,
+        1.0 / 355_687_428_096_000.0,
+    ];
+    const COS: [f64; 9] = [
+        1.0,
+        -0.5,
+        1.0 / 24.0,
+        -1.0 / 720.0,
+        1.0 / 40_320.0,
+        -1.0 / 3_628_800.0,
+        1.0 / 479_001_600.0,
+        -1.0 / 87_178_291_200.0,
+        1.0 / 20_922_789_888_000.0,
+    ];
+    let y = x * x;
+    let (y2, y4) = (y * y, y * y * (y * y));
+    let estrin = |c: [f64; 9]| {
+        let c = c.map(Lanes::splat);
+        let pairs = [0, 1, 2, 3].map(|k| c[2 * k] + c[2 * k + 1] * y);
+        (pairs[0] + pairs[1] * y2) + (pairs[2] + pairs[3] * y2) * y4 + c[8] * (y4 * y4)
+    };
+    (x * estrin(SIN), estrin(COS))
+}
+
+/// SLERP for every pair in the common case (unit inputs up to rounding, `σ ∈ [0, 1]`, the
+/// target within 90° of `p` in R⁴); returns whether all were. In the half-angle frame,
+/// `q = cos((1-2σ) ψ0) s/|s| + sin((1-2σ) ψ0) d/|d|` with `ψ0 = atan(|d|/|s|) ≤ π/4`.
+fn slerp(
+    starts: &[f64],
+    ends: &[f64],
+    sigma: &[f64],
+    out: &mut [f64],
+    shortest_path: bool,
+) -> bool {
+    two_pairs_at_a_time(starts, ends, sigma, out, |p, r, sigma| {
+        let Frame { p, t, d, s, dd, ss, nearly_unit } = Frame::new(p, r, shortest_path);
+        // One division for 1/|s|, 1/|d| and |d|/|s|. When p = t exactly, |d| is floored so the
+        // quotient stays finite; sin is 0 there and the d term vanishes.
+        let (dn, sn) = (dd.sqrt().max(Lanes::splat(f64::MIN_POSITIVE)), ss.sqrt());
+        let inverse = Lanes::splat(1.0) / (dn * sn);
+        let half_angle = atan_unit_interval(dd * inverse);
+        let (sin, cos) =
+            sin_cos_small((Lanes::splat(1.0) - Lanes::splat(2.0) * sigma) * half_angle);
+        let (a, b) = (cos * dn * inverse, sin * sn * inverse);
+        let q = with_exact_ends(&p, &t, sigma, [0, 1, 2, 3].map(|c| a * s[c] + b * d[c]));
+        (q, nearly_unit & dd.le(ss) & Lanes::splat(0.0).le(sigma) & sigma.le(Lanes::splat(1.0)))
+    })
+}
+
+/// Normalised linear interpolation for every pair, assuming unit inputs up to rounding (as
+/// [`kli_exact`] does, so the baseline is as cheap as it can be); returns whether all were.
+fn nlerp(starts: &[f64], ends: &[f64], s: &[f64], out: &mut [f64]) -> bool {
+    two_pairs_at_a_time(starts, ends, s, out, |p, r, sigma| {
+        // In the frame, p = (s + d)/2 and the target t = (s - d)/2: lerp is s/2 + (1/2 - σ) d.
+        let Frame { p, t, d, s: sum, nearly_unit, .. } = Frame::new(p, r, true);
+        let half = Lanes::splat(0.5);
+        let m = [0, 1, 2, 3].map(|c| half * sum[c] + (half - sigma) * d[c]);
+        let scale = Lanes::splat(1.0) / dot4(&m, &m).sqrt();
+        let in_range = sigma.abs().le(Lanes::splat(MAX_PARAMETER));
+        (with_exact_ends(&p, &t, sigma, m.map(|c| c * scale)), nearly_unit & in_range)
+    })
+}
+
+/// `q`, but the start `p` exactly where `σ = 0` and the target `t` exactly where `σ = 1`.
+#[inline(always)]
+fn with_exact_ends(p: &Quat2, t: &Quat2, sigma: Lanes, q: Quat2) -> Quat2 {
+    let (at_start, at_end) = (sigma.eq(Lanes::splat(0.0)), sigma.eq(Lanes::splat(1.0)));
+    [0, 1, 2, 3].map(|c| Lanes::select(at_start, p[c], Lanes::select(at_end, t[c], q[c])))
+}
+
+/// `|s|²` below which the half-angle frame is not orthogonal to 1e-12 (`s·d/(|s||d|)` is
+/// rounding over `|s|`): the target is within 1e-3 of `-p`.
+const FRAME_LIMIT: f64 = 1e-6;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::closed_form::kli_exact as kli_exact_single;
+    use crate::quaternion::{from_wxyz, to_wxyz, unit};
+    use glam::DQuat;
+
+    fn flat(qs: &[[f64; 4]]) -> Vec<f64> {
+        qs.iter().flatten().copied().collect()
+    }
+
+    #[test]
+    fn fast_paths_match_the_general_loop_and_fall_back_when_they_must() {
+        // Unit inputs up to single-precision rounding take the fast path; its results agree
+        // with the general loop's to 1e-15.
+        let starts = flat(&[[0.3, -0.1, 0.7, 0.2], [1.0, 0.0, 0.0, 0.0], [0.5; 4]]);
+        let ends =
+            flat(&[[0.5, 0.4, -0.2, 0.6], [-0.6, 0.8, 0.0, 0.0], [0.5, 0.5, 0.5, 0.5 + 1e-12]]);
+        let unit = |v: &[f64]| -> Vec<f64> {
+            v.chunks(4)
+                .flat_map(|q| {
+                    let n = q.iter().map(|c| c * c).sum::<f64>().sqrt();
+                    q.iter().map(move |c| ((c / n) as f32) as f64)
+                })
+                .collect()
+        };
+        let (starts, ends) = (unit(&starts), unit(&ends));
+        let t = [0.0, 0.7, 30.0];
+        for shortest in [true, false] {
+            let mut fast = vec![0.0; 12];
+            assert!(kli_exact(&starts, &ends, &t, &mut fast, shortest));
+            let mut general = vec![0.0; 12];
+            for i in 0..3 {
+                let p = unit_q(&starts[4 * i..4 * i + 4]);
+                let r = unit_q(&ends[4 * i..4 * i + 4]);
+                general[4 * i..4 * i + 4]
+                    .copy_from_slice(&to_wxyz(kli_exact_single(p, r, t[i], shortest).unwrap()));
+            }
+            for (a, b) in fast.iter().zip(&general) {
+                assert!((a - b).abs() < 1e-15, "{fast:?} vs {general:?}");
+            }
+        }
+        // Not nearly unit, or the long way near -p: the fast path declines.
+        let mut out = vec![0.0; 4];
+        assert!(!kli_exact(&[2.0, 0.0, 0.0, 0.0], &[0.0, 1.0, 0.0, 0.0], &[1.0], &mut out, true));
+        assert!(!kli_exact(
+            &[1.0, 0.0, 0.0, 0.0],
+            &[-1.0, 1e-9, 0.0, 0.0],
+            &[1.0],
+            &mut out,
+            false
+        ));
+        assert!(!kli_exact(
+            &[1.0, 0.0, 0.0, 0.0],
+            &[0.0, 1.0, 0.0, 0.0],
+            &[f64::NAN],
+            &mut out,
+            true
+        ));
+        // …and the call still answers, through the general loop.
+        super::super::kli_exact_batch(
+            &[2.0, 0.0, 0.0, 0.0],
+            &[0.0, 1.0, 0.0, 0.0],
+            &[1.0],
+            &mut out,
+            true,
+        )
+        .unwrap();
+        assert!((out.iter().map(|c| c * c).sum::<f64>() - 1.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn branch_free_atan_sin_cos_are_accurate() {
+        let mut worst = 0.0_f64;
+        for k in 0..=100_000 {
+            let u = k as f64 / 100_000.0;
+            worst = worst.max((atan_unit_interval(Lanes::splat(u)).to_array()[0] - u.atan()).abs());
+            let x = (u - 0.5) * std::f64::consts::FRAC_PI_2;
+            let (sin, cos) = sin_cos_small(Lanes::splat(x));
+            worst = worst
+                .max((sin.to_array()[0] - x.sin()).abs())
+                .max((cos.to_array()[1] - x.cos()).abs());
+        }
+        assert!(worst < 4e-16, "worst absolute error {worst:e}");
+    }
+
+    #[test]
+    fn slerp_fast_path_matches_the_single_call() {
+        let starts = flat(&[[0.3, -0.1, 0.7, 0.2], [1.0, 0.0, 0.0, 0.0], [0.5; 4], [0.5; 4]]);
+        let ends = flat(&[
+            [0.5, 0.4, -0.2, 0.6],
+            [-0.6, 0.8, 0.0, 0.0],
+            [0.5, 0.5, 0.5, 0.5 + 1e-12],
+            [0.5; 4],
+        ]);
+        let normalised: Vec<f64> =
+            starts.chunks(4).chain(ends.chunks(4)).flat_map(|q| to_wxyz(unit_q(q))).collect();
+        let (starts, ends) = normalised.split_at(16);
+        let sigma = [0.0, 0.35, 0.8, 1.0];
+        let mut fast = vec![0.0; 16];
+        assert!(slerp(starts, ends, &sigma, &mut fast, true));
+        for i in 0..4 {
+            let single = to_wxyz(
+                crate::slerp(
+                    unit_q(&starts[4 * i..4 * i + 4]),
+                    unit_q(&ends[4 * i..4 * i + 4]),
+                    sigma[i],
+                    true,
+                )
+                .unwrap(),
+            );
+            for c in 0..4 {
+                assert!(
+                    (fast[4 * i + c] - single[c]).abs() < 1e-15,
+                    "pair {i}: {:?} vs {single:?}",
+                    &fast[4 * i..4 * i + 4]
+                );
+            }
+        }
+        // Extrapolation and the long way round leave it to the general loop.
+        let mut out = vec![0.0; 4];
+        assert!(!slerp(&[1.0, 0.0, 0.0, 0.0], &[0.0, 1.0, 0.0, 0.0], &[1.5], &mut out, true));
+        assert!(!slerp(&[1.0, 0.0, 0.0, 0.0], &[-0.6, 0.8, 0.0, 0.0], &[0.5], &mut out, false));
+    }
+
+    fn unit_q(q: &[f64]) -> DQuat {
+        unit("q", from_wxyz(q.try_into().unwrap())).unwrap()
+    }
+}
