@@ -13,20 +13,24 @@ WASM_BINDGEN_VERSION = $(shell awk '/^name = "wasm-bindgen"$$/ {getline; gsub(/v
 # Features the Rust wasm32 target emits; wasm-opt must accept them.
 WASM_FEATURES := --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
                  --enable-mutable-globals --enable-reference-types --enable-multivalue --enable-simd
+RELEASE := target/$(TARGET)/release
 
-.PHONY: help setup setup-rust setup-node setup-browser pkg demo serve test test-native \
-        test-wasm-node test-wasm-browser test-package test-page bench clean
+.PHONY: help setup setup-rust setup-node setup-browser pkg www demo serve test lint test-native \
+        test-wasm-node test-wasm-portable test-wasm-browser test-package test-page bench clean
 
 help:
 	@echo "make demo   build and serve the demo page at http://127.0.0.1:$(PORT)/"
-	@echo "make test   run every test (native, wasm under Node, package, headless Chromium)"
+	@echo "make test   run every check and test (lint, native, wasm under Node, package, Chromium)"
 	@echo "make pkg    build the npm package into pkg/"
+	@echo "make www    build the page's module into www/pkg/"
 	@echo "make bench  run the benchmarks"
 
 setup: setup-rust setup-node setup-browser
 
 setup-rust:
 	@rustup target list --installed | grep -qx $(TARGET) || rustup target add $(TARGET)
+	@rustup component list --installed | grep -q '^clippy' || rustup component add clippy
+	@rustup component list --installed | grep -q '^rustfmt' || rustup component add rustfmt
 	@if [ "$$(wasm-bindgen --version 2>/dev/null)" != "wasm-bindgen $(WASM_BINDGEN_VERSION)" ]; then \
 	  echo "installing wasm-bindgen-cli $(WASM_BINDGEN_VERSION) (about 2.5 minutes, once)"; \
 	  cargo install wasm-bindgen-cli --version $(WASM_BINDGEN_VERSION); \
@@ -44,41 +48,63 @@ setup-browser:
 	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium chromium-driver >/dev/null; \
 	fi
 
+# The npm package: crates/kli-wasm, the JavaScript API only.
 pkg: setup-rust setup-node
-	cargo build --release --lib --target $(TARGET)
+	cargo build --release -p kli-wasm --lib --target $(TARGET)
 	rm -rf pkg
-	wasm-bindgen --target web --out-dir pkg --out-name kli target/$(TARGET)/release/kli.wasm
+	wasm-bindgen --target web --out-dir pkg --out-name kli $(RELEASE)/kli_wasm.wasm
 	wasm-opt -O3 $(WASM_FEATURES) pkg/kli_bg.wasm -o pkg/kli_bg.wasm
 	cp README.md pkg/
 	node scripts/package-json.mjs
 	@echo "pkg/kli_bg.wasm: $$(stat -c %s pkg/kli_bg.wasm) bytes, $$(gzip -9c pkg/kli_bg.wasm | wc -c) gzipped"
 
-www/pkg: pkg
-	rm -rf www/pkg && cp -r pkg www/pkg
+# The page's one module: crates/kli-demo, the package's API and the renderer.
+www: setup-rust setup-node
+	cargo build --release -p kli-demo --lib --target $(TARGET)
+	rm -rf www/pkg
+	wasm-bindgen --target web --out-dir www/pkg --out-name kli_demo $(RELEASE)/kli_demo.wasm
+	wasm-opt -O3 $(WASM_FEATURES) www/pkg/kli_demo_bg.wasm -o www/pkg/kli_demo_bg.wasm
+	@echo "www/pkg/kli_demo_bg.wasm: $$(stat -c %s www/pkg/kli_demo_bg.wasm) bytes, $$(gzip -9c www/pkg/kli_demo_bg.wasm | wc -c) gzipped"
 
-demo: www/pkg
+demo: www
 	@echo "Serving the demo at http://127.0.0.1:$(PORT)/  (Ctrl-C to stop)"
 	python3 -m http.server $(PORT) --bind 127.0.0.1 --directory www
 
-test: test-native test-wasm-node test-package test-wasm-browser test-page
+test: lint test-native test-wasm-node test-wasm-portable test-package test-wasm-browser test-page
+
+# Formatting, clippy (native and wasm32), rustdoc, and the page's JavaScript against the
+# generated types: all without warnings.
+lint: setup-rust www
+	cargo fmt --all --check
+	cargo clippy --workspace --all-targets -- -D warnings
+	cargo clippy --workspace --exclude kli-bench --all-targets --target $(TARGET) -- -D warnings
+	RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --exclude kli-bench
+	tsc -p www/jsconfig.json
 
 test-native:
-	cargo test
+	cargo test --workspace
 
 test-wasm-node: setup-rust
-	WASM_BINDGEN_TEST_ONLY_NODE=1 cargo test --target $(TARGET) --tests
+	WASM_BINDGEN_TEST_ONLY_NODE=1 cargo test -p kli-wasm --target $(TARGET) --tests
+
+# The same suite built without simd128, so the plain [f64; 2] lanes run too (its own target
+# directory keeps the two builds from invalidating each other).
+test-wasm-portable: setup-rust
+	KLI_LANES=portable CARGO_TARGET_DIR=target/portable \
+	CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-C target-feature=-simd128" \
+	WASM_BINDGEN_TEST_ONLY_NODE=1 cargo test -p kli-wasm --target $(TARGET) --tests
 
 test-wasm-browser: setup-rust setup-browser
-	WASM_BINDGEN_TEST_ONLY_WEB=1 cargo test --target $(TARGET) --tests
+	WASM_BINDGEN_TEST_ONLY_WEB=1 cargo test -p kli-demo --target $(TARGET) --tests
 
-test-package: www/pkg
+test-package: pkg
 	node --test tests/js/
 
-test-page: www/pkg setup-browser
+test-page: www setup-browser
 	node --test tests/e2e/
 
 # Benchmarks, not tests: nothing here is asserted by `make test`.
-bench: www/pkg setup-browser
+bench: pkg www setup-browser
 	cargo bench -p kli-bench --bench core -- --warm-up-time 1 --measurement-time 3
 	node bench/batch.mjs
 	node bench/page.mjs

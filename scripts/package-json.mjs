@@ -1,24 +1,26 @@
-// Writes pkg/package.json for the ES module that wasm-bindgen generated in pkg/, taking the
-// name, version, description and licence from Cargo.toml so the two can never disagree.
+// Writes pkg/package.json for the ES module that wasm-bindgen generated in pkg/, taking the npm
+// name, the version, description and licence from the Cargo manifests so they never disagree.
 import { readFileSync, writeFileSync, existsSync } from "node:fs";
 
-const cargo = readFileSync(new URL("../Cargo.toml", import.meta.url), "utf8");
-const field = (name) => {
-  const match = cargo.match(new RegExp(`^${name}\\s*=\\s*"([^"]*)"`, "m"));
-  if (!match) throw new Error(`Cargo.toml has no ${name}`);
+const manifest = (path) => readFileSync(new URL(`../${path}`, import.meta.url), "utf8");
+const field = (toml, name) => {
+  const match = toml.match(new RegExp(`^${name}\\s*=\\s*"([^"]*)"`, "m"));
+  if (!match) throw new Error(`no ${name} in the Cargo manifest`);
   return match[1];
 };
+const workspace = manifest("Cargo.toml").split("[workspace.package]")[1];
+const crate = manifest("crates/kli-wasm/Cargo.toml");
 
 const files = ["kli.js", "kli.d.ts", "kli_bg.wasm", "kli_bg.wasm.d.ts", "README.md"];
 for (const file of files) {
   if (!existsSync(new URL(`../pkg/${file}`, import.meta.url))) throw new Error(`pkg/${file} is missing`);
 }
 
-const manifest = {
-  name: field("name"),
-  version: field("version"),
-  description: field("description"),
-  license: field("license"),
+const json = {
+  name: field(crate.split("[package.metadata.npm]")[1], "name"),
+  version: field(workspace, "version"),
+  description: field(crate, "description"),
+  license: field(workspace, "license"),
   type: "module",
   main: "kli.js",
   module: "kli.js",
@@ -32,5 +34,5 @@ const manifest = {
   sideEffects: false,
   keywords: ["quaternion", "rotation", "slerp", "interpolation", "kuramoto", "hopf", "wasm"],
 };
-writeFileSync(new URL("../pkg/package.json", import.meta.url), JSON.stringify(manifest, null, 2) + "\n");
-console.log(`pkg/package.json: ${manifest.name}@${manifest.version}`);
+writeFileSync(new URL("../pkg/package.json", import.meta.url), JSON.stringify(json, null, 2) + "\n");
+console.log(`pkg/package.json: ${json.name}@${json.version}`);

@@ -56,7 +56,7 @@ impl Shape {
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
 pub enum ErrorKind {
-    /// Component `index` (of [`Shape::components`]' order) is NaN or infinite.
+    /// Component `index` (`[w, x, y, z]` or `[x, y, z]`, from 0) is NaN or infinite.
     NotFinite { shape: Shape, index: usize, value: f64 },
     /// A quaternion or axis of zero length: it has no direction.
     ZeroLength { shape: Shape },

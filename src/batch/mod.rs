@@ -14,7 +14,7 @@
 //! which the fast kernel rewrites without square roots: one `exp` and one division a pair.
 //! For SLERP, with `ψ0 = φ0/2`: `q(σ) = cos((1-2σ) ψ0) s/|s| + sin((1-2σ) ψ0) d/|d|`.
 //!
-//! The fast kernels ([`fast`]) cover the common case. A call with any pair outside it (bad
+//! The fast kernels (`batch/fast.rs`) cover the common case. A call with any pair outside it (bad
 //! input, extreme magnitudes, extrapolation, a target near `-p` where the frame loses
 //! orthogonality) is redone pair by pair through the single calls' own code, so a batch and the
 //! single calls agree on every input both accept, and refuse the same inputs.
@@ -330,8 +330,8 @@ mod tests {
         // Not unit: tiny, huge and single-precision inputs.
         starts[0..4].copy_from_slice(&[1e-300, 2e-300, 0.0, -1e-300]);
         starts[4..8].copy_from_slice(&[3e300, 0.0, 4e300, 0.0]);
-        for c in 8..12 {
-            starts[c] = starts[c] as f32 as f64;
+        for c in &mut starts[8..12] {
+            *c = *c as f32 as f64;
         }
         let inside: Vec<f64> = (0..20).map(|i| i as f64 / 19.0).collect();
         // Extrapolation up to the bound sends the whole call through the general loop.

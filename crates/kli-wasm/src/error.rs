@@ -12,16 +12,15 @@ pub type JsResult<T> = Result<T, JsValue>;
 /// The JavaScript name of a Rust argument name: camelCase (`max_time` → `maxTime`); an element
 /// such as `starts[3]` keeps its index.
 pub fn js_name(rust: &str) -> String {
+    // Rust names are ASCII; ASCII case mapping keeps Unicode's tables out of the module.
     let mut name = String::with_capacity(rust.len());
     let mut upper = false;
     for c in rust.chars() {
         if c == '_' {
             upper = true;
-        } else if upper {
-            name.extend(c.to_uppercase());
-            upper = false;
         } else {
-            name.push(c);
+            name.push(if upper { c.to_ascii_uppercase() } else { c });
+            upper = false;
         }
     }
     name

@@ -1,6 +1,6 @@
 //! # kli-wasm: the npm package `kli`
 //!
-//! The JavaScript API of the [`kli`] crate, and nothing else: each file converts and checks
+//! The JavaScript API of the [`kli`](mod@::kli) crate, and nothing else: each file converts and checks
 //! JavaScript values, calls the plain-Rust core, and turns every [`kli::KliError`] into a
 //! JavaScript `Error` whose message names the argument and whose `argument` and `kind` properties
 //! say the same for code ([`error`]). Nothing here may panic: a panic would trap and kill the

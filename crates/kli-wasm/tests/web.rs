@@ -613,3 +613,11 @@ fn kli_meets_the_tolerance_or_throws() {
         }
     }
 }
+
+#[wasm_bindgen_test]
+fn built_with_the_lanes_the_run_asked_for() {
+    // `make test-wasm-portable` builds without simd128 and says so: the batch kernels above ran
+    // on the plain [f64; 2] lanes there, and on wasm SIMD in `make test-wasm-node`.
+    let portable = option_env!("KLI_LANES") == Some("portable");
+    assert_eq!(cfg!(target_feature = "simd128"), !portable);
+}
