@@ -1,7 +1,10 @@
 // Offline support: every file the page needs is cached when first fetched; the network is tried
 // first so a rebuilt page is never stale, and the cache answers when the server is gone.
-const CACHE = "kli-demo-v1";
-const FILES = ["./", "index.html", "style.css", "main.js", "state.js", "pkg/kli.js", "pkg/kli_bg.wasm"];
+const CACHE = "kli-demo-v2";
+const FILES = [
+  "./", "index.html", "style.css", "main.js", "clock.js", "dom.js", "form.js", "input.js", "numbers.js",
+  "presets.js", "summary.js", "url.js", "views.js", "pkg/kli_demo.js", "pkg/kli_demo_bg.wasm",
+];
 
 self.addEventListener("install", (event) => {
   event.waitUntil(caches.open(CACHE).then((cache) => cache.addAll(FILES)).then(() => self.skipWaiting()));
