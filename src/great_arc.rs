@@ -105,7 +105,7 @@ impl GreatArc {
     /// The point at angle `φ` from the target (towards `p`).
     #[inline]
     pub fn point_at_angle(&self, phi: f64) -> DQuat {
-        let (sin, cos) = phi.sin_cos();
+        let (sin, cos) = crate::trig::sin_cos(phi);
         self.point(sin, cos)
     }
 

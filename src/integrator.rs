@@ -65,7 +65,7 @@ fn along_great_circle(q: DQuat, increment: DQuat) -> DQuat {
     if length == 0.0 {
         return q;
     }
-    let (sin, cos) = length.atan2(1.0 + increment.dot(q)).sin_cos();
+    let (sin, cos) = crate::trig::sin_cos(length.atan2(1.0 + increment.dot(q)));
     q * cos + tangential * (sin / length)
 }
 

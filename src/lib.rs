@@ -47,6 +47,7 @@ mod lanes;
 pub mod model;
 pub mod quaternion;
 pub mod slerp;
+mod trig;
 
 pub use algorithm::{KliOptions, KliPath, kli};
 pub use axis_angle::{axis_angle, from_axis_angle};

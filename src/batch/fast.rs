@@ -6,6 +6,7 @@
 use super::BatchKind;
 use crate::lanes::{Lanes, Mask};
 use crate::slerp::MAX_PARAMETER;
+use crate::trig::sin_cos_small;
 
 /// Runs the fast kernel of `kind`; returns whether every pair was in its domain (when not,
 /// `out` holds garbage for the pairs outside it).
@@ -185,42 +186,6 @@ fn atan_unit_interval(u: Lanes) -> Lanes {
         + (pairs[2] + pairs[3] * z2) * z4
         + (pairs[4] + pairs[5] * z2) * (z4 * z4);
     Lanes::splat(4.0) * w * series
-}
-
-/// `(sin x, cos x)` lane-wise for `|x| ≤ π/4`, branch-free Taylor polynomials in `y = x²` (to
-/// `x¹⁷` and `x¹⁶`: remainders below 1e-17), by Estrin's scheme.
-#[inline(always)]
-fn sin_cos_small(x: Lanes) -> (Lanes, Lanes) {
-    const SIN: [f64; 9] = [
-        1.0,
-        -1.0 / 6.0,
-        1.0 / 120.0,
-        -1.0 / 5040.0,
-        1.0 / 362_880.0,
-        -1.0 / 39_916_800.0,
-        1.0 / 6_227_020_800.0,
-        -1.0 / 1_307_674_368_000.0,
-        1.0 / 355_687_428_096_000.0,
-    ];
-    const COS: [f64; 9] = [
-        1.0,
-        -0.5,
-        1.0 / 24.0,
-        -1.0 / 720.0,
-        1.0 / 40_320.0,
-        -1.0 / 3_628_800.0,
-        1.0 / 479_001_600.0,
-        -1.0 / 87_178_291_200.0,
-        1.0 / 20_922_789_888_000.0,
-    ];
-    let y = x * x;
-    let (y2, y4) = (y * y, y * y * (y * y));
-    let estrin = |c: [f64; 9]| {
-        let c = c.map(Lanes::splat);
-        let pairs = [0, 1, 2, 3].map(|k| c[2 * k] + c[2 * k + 1] * y);
-        (pairs[0] + pairs[1] * y2) + (pairs[2] + pairs[3] * y2) * y4 + c[8] * (y4 * y4)
-    };
-    (x * estrin(SIN), estrin(COS))
 }
 
 /// SLERP for every pair in the common case (unit inputs up to rounding, `σ ∈ [0, 1]`, the

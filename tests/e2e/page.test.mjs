@@ -5,6 +5,7 @@ import assert from "node:assert/strict";
 import { mkdir } from "node:fs/promises";
 import { join } from "node:path";
 import { chromium } from "playwright-core";
+import { readFileSync } from "node:fs";
 import { CHROMIUM, serve } from "../../scripts/static-server.mjs";
 
 const root = new URL("../../", import.meta.url).pathname;
@@ -62,7 +63,7 @@ function canvasStats(page, selector, colours = {}) {
   }, [selector, colours]);
 }
 
-const KLI_ORANGE = [232, 89, 12];
+const KLI_ORANGE = [194, 65, 12]; // crates/kli-demo/src/palette.rs
 const WING_RED = [224, 49, 49];
 const WING_GREEN = [47, 158, 68];
 const readout = (page) => page.textContent("#time-readout");
@@ -136,7 +137,8 @@ test("changing r changes the curve and the URL", async () => {
   await page.waitForTimeout(100);
   const after = await canvasStats(page, "#sphere-canvas", { orange: KLI_ORANGE });
   assert.notEqual(before.hash, after.hash);
-  assert.match(page.url(), /r=0\.2%2C0\.9%2C-0\.3%2C0\.2/);
+  // URL writes are throttled (at most one per 400 ms): wait for the last one.
+  await page.waitForURL(/r=0\.2%2C0\.9%2C-0\.3%2C0\.2/, { timeout: 2000 });
   assert.equal(await page.inputValue("[name=preset]"), "custom");
   assert.notEqual(await page.inputValue("[name=r-angle]"), "120", "axis–angle fields follow");
   assert.deepEqual(problems, []);
@@ -146,9 +148,9 @@ test("changing r changes the curve and the URL", async () => {
 test("a URL with parameters reproduces its state", async () => {
   const query = "?p=1,0,0,0&r=0,1,0,0&eps=1e-4&step=0.02&int=geodesic&short=0&t=0.5";
   const { page, context, problems } = await open(query);
-  assert.deepEqual(await Promise.all(["p-w", "p-x", "r-w", "r-x", "eps", "step"].map((n) => page.inputValue(`[name=${n}]`))), ["1", "0", "0", "1", "1e-4", "0.02"]);
+  assert.deepEqual(await Promise.all(["p-w", "p-x", "r-w", "r-x", "tolerance", "step"].map((n) => page.inputValue(`[name=${n}]`))), ["1", "0", "0", "1", "1e-4", "0.02"]);
   assert.equal(await page.inputValue("[name=integrator]"), "geodesic");
-  assert.equal(await page.isChecked("[name=shortest]"), false);
+  assert.equal(await page.isChecked("[name=shortestPath]"), false);
   // The axis–angle fields follow the URL's quaternions: r = i is a half turn about x.
   assert.deepEqual(await Promise.all(["r-ax", "r-ay", "r-az", "r-angle"].map((n) => page.inputValue(`[name=${n}]`))), ["1", "0", "0", "180"]);
   assert.equal(await currentTime(page), 0.5);
@@ -166,15 +168,17 @@ test("a URL with parameters reproduces its state", async () => {
 
 test("every bad input shows its message and the page keeps working", async () => {
   const { page, context, problems } = await open("?t=1");
+  // The messages are the module's own (crates/kli-wasm): the page checks nothing itself.
+  const quaternion = (which, c) => `${which} must be a quaternion of 4 finite numbers [w, x, y, z], not all zero: its ${c} component is NaN`;
   const cases = [
-    ["p-w", "abc", "#p-error", "p: the w component must be a number."],
-    ["p-x", "", "#p-error", "p: the x component must be a number."],
-    ["eps", "0", "#eps-error", "ε must be a number greater than 0."],
-    ["eps", "-1e-5", "#eps-error", "ε must be a number greater than 0."],
-    ["eps", "1e-30", "#eps-error", "tolerance 1e-30 not reached"],
-    ["step", "x", "#step-error", "δ must be a number greater than 0."],
+    ["p-w", "abc", "#p-error", quaternion("p", "w")],
+    ["p-x", "", "#p-error", quaternion("p", "x")],
+    ["tolerance", "0", "#tolerance-error", "tolerance must be a finite number > 0 (got 0)"],
+    ["tolerance", "-1e-5", "#tolerance-error", "tolerance must be a finite number > 0 (got -0.00001)"],
+    ["tolerance", "1e-30", "#tolerance-error", "tolerance 1e-30 not reached"],
+    ["step", "x", "#step-error", "step must be a finite number > 0 (got NaN)"],
     ["step", "1e-9", "#step-error", "step is too small for maxTime"],
-    ["r-angle", "ninety", "#r-error", "r: the angle must be a number."],
+    ["r-angle", "ninety", "#r-error", "r: angle must be a finite number (got NaN)"],
   ];
   for (const [name, text, output, message] of cases) {
     const original = await page.inputValue(`[name=${name}]`);
@@ -190,13 +194,13 @@ test("every bad input shows its message and the page keeps working", async () =>
   }
   // All zero r, then r = −p the long way round.
   for (const axis of ["w", "x", "y", "z"]) await page.fill(`[name=r-${axis}]`, "0");
-  assert.equal(await page.textContent("#r-error"), "r must not be all zero.");
+  assert.equal(await page.textContent("#r-error"), "r must be a quaternion of 4 finite numbers [w, x, y, z], not all zero: it has zero length");
   await page.fill("[name=r-z]", "-2");
-  await page.uncheck("[name=shortest]");
-  assert.match(await page.textContent("#shortest-error"), /^p and r are antipodal/);
+  await page.uncheck("[name=shortestPath]");
+  assert.match(await page.textContent("#shortestPath-error"), /^p and r are antipodal and shortestPath is false/);
   await page.screenshot({ path: join(artifacts, "errors.png"), fullPage: true });
-  await page.check("[name=shortest]");
-  assert.equal(await page.textContent("#shortest-error"), "");
+  await page.check("[name=shortestPath]");
+  assert.equal(await page.textContent("#shortestPath-error"), "");
   assert.match(await page.textContent("#note"), /nothing to interpolate/);
   assert.deepEqual(problems, []);
   await context.close();
@@ -205,8 +209,8 @@ test("every bad input shows its message and the page keeps working", async () =>
 test("bad URL values show messages, are never HTML, and fall back to the paper", async () => {
   const query = "?p=%3Cimg%20src%3Dx%20onerror%3Dwindow.hacked%3D1%3E,0,0,1&eps=-1&int=<b>x</b>";
   const { page, context, problems } = await open(query);
-  assert.equal(await page.textContent("#p-error"), "p: the w component must be a number.");
-  assert.equal(await page.textContent("#eps-error"), "ε must be a number greater than 0.");
+  assert.equal(await page.textContent("#p-error"), "p must be a quaternion of 4 finite numbers [w, x, y, z], not all zero: its w component is NaN");
+  assert.equal(await page.textContent("#tolerance-error"), "tolerance must be a finite number > 0 (got -1)");
   assert.equal(await page.inputValue("[name=integrator]"), "rk4");
   assert.equal(await page.$$eval("img", (images) => images.length), 0);
   assert.equal(await page.evaluate(() => window.hacked), undefined);
@@ -291,5 +295,261 @@ test("works offline once loaded", async () => {
   await page.waitForFunction(() => document.querySelector("#load-status").hidden);
   assert.match(await readout(page), /T = 11\.66$/);
   assert.ok((await canvasStats(page, "#sphere-canvas")).drawn > 20000);
+  await context.close();
+});
+
+// ---- The defects of issue 7, each found in an audit or a soak run ----------------------------
+
+/** The time the URL holds, or undefined while it holds none. */
+const urlTime = (page) => new URL(page.url()).searchParams.get("t") ?? undefined;
+
+test("Space on a focused button presses it: Restart restarts rather than pausing", async () => {
+  const { page, context, problems } = await open("?t=5");
+  await page.focus("#restart");
+  await page.keyboard.press(" ");
+  // Restart goes to 0 and plays (no reduced motion here); a page-wide Space would have played
+  // from 5 instead.
+  await page.waitForFunction(() => document.querySelector("#play").textContent === "Pause");
+  assert.ok((await currentTime(page)) < 2, "restarted from 0");
+  // Enter on Play presses Play, once.
+  await page.focus("#play");
+  await page.keyboard.press("Enter");
+  assert.equal(await page.textContent("#play"), "Play");
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test("keyboard and slider time changes update the object's label and the URL at once", async () => {
+  const { page, context, problems } = await open("?t=1");
+  const label = () => page.getAttribute("#object-canvas", "aria-label");
+  await page.locator("body").press("End");
+  assert.match(await label(), /^The aircraft at t = 11\.66:/);
+  await page.waitForFunction(() => new URL(location.href).searchParams.get("t") === "11.66", null, { timeout: 2000 });
+  await page.locator("body").press("Home");
+  assert.match(await label(), /^The aircraft at t = 0\.00:/);
+  await page.waitForFunction(() => new URL(location.href).searchParams.get("t") === "0.00", null, { timeout: 2000 });
+  await page.locator("body").press("ArrowRight");
+  const stepped = await currentTime(page);
+  assert.match(await label(), new RegExp(`^The aircraft at t = ${stepped.toFixed(2)}:`));
+  // The slider, moved while paused, updates the label too.
+  await page.$eval("#time", (slider) => {
+    slider.value = "3.3";
+    slider.dispatchEvent(new Event("input", { bubbles: true }));
+  });
+  assert.match(await label(), /^The aircraft at t = 3\.30:/);
+  await page.waitForFunction(() => new URL(location.href).searchParams.get("t") === "3.30", null, { timeout: 2000 });
+  // …and the time is announced once it rests.
+  await page.waitForFunction(() => document.querySelector("#time-status").textContent === "t = 3.30 / T = 11.66");
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test("the first load while playing writes no time into the URL", async () => {
+  const { page, context, problems } = await open("");
+  await page.waitForTimeout(600);
+  assert.equal(await page.textContent("#play"), "Pause");
+  assert.equal(urlTime(page), undefined, page.url());
+  assert.match(page.url(), /eps=0\.00001/);
+  // A reload of that URL plays again.
+  await page.reload();
+  await page.waitForFunction(() => document.querySelector("#load-status").hidden);
+  await page.waitForTimeout(300);
+  assert.equal(await page.textContent("#play"), "Pause");
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test("a long slider drag writes the URL a few times, not once per move", async () => {
+  const { page, context } = await open("?t=0");
+  await page.evaluate(() => {
+    window.__urlWrites = 0;
+    const replace = history.replaceState.bind(history);
+    history.replaceState = (...args) => {
+      window.__urlWrites++;
+      return replace(...args);
+    };
+  });
+  // 4 s of dragging at 60 moves a second.
+  const moves = await page.evaluate(async () => {
+    const slider = document.querySelector("#time");
+    let count = 0;
+    for (const start = performance.now(); performance.now() - start < 4000; count++) {
+      slider.value = String((11.66 * count) / 240);
+      slider.dispatchEvent(new Event("input", { bubbles: true }));
+      await new Promise((resolve) => setTimeout(resolve, 16));
+    }
+    return count;
+  });
+  await page.waitForTimeout(500);
+  const writes = await page.evaluate(() => window.__urlWrites);
+  assert.ok(moves > 150, `${moves} moves`);
+  assert.ok(writes <= 4000 / 400 + 2, `${writes} URL writes for ${moves} moves`);
+  assert.ok(writes >= 5, `${writes} URL writes: the URL still follows`);
+  await context.close();
+});
+
+test("a step too large is blamed on the step, and ε = 2 says nothing false about −p", async () => {
+  const { page, context, problems } = await open("?t=1");
+  await page.fill("[name=step]", "5");
+  assert.match(await page.textContent("#step-error"), /^step 5 is too large for integrator rk4: q left the sphere S³/);
+  assert.equal(await page.textContent("#shortestPath-error"), "");
+  assert.equal(await page.getAttribute("[name=step]", "aria-invalid"), "true");
+  await page.fill("[name=step]", "0.01");
+  assert.equal(await page.textContent("#step-error"), "");
+  await page.fill("[name=tolerance]", "2");
+  assert.equal(await page.textContent("#note"), "p is already within ε of the target: nothing to interpolate.");
+  // With r = −p (the antipodal preset) the parenthesis is true, and said.
+  await page.selectOption("[name=preset]", "antipodal");
+  assert.match(await page.textContent("#note"), /nothing to interpolate \(r ≈ −p is the same rotation as p\)/);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test("only the bad field is marked, and a corrected axis is unmarked", async () => {
+  const { page, context, problems } = await open("?t=1");
+  const invalid = async (names) => (await Promise.all(names.map((n) => page.getAttribute(`[name=${n}]`, "aria-invalid")))).map((v) => v === "true");
+  await page.fill("[name=p-y]", "oops");
+  assert.deepEqual(await invalid(["p-w", "p-x", "p-y", "p-z"]), [false, false, true, false]);
+  await page.fill("[name=p-y]", "0");
+  await page.fill("[name=r-ay]", "why");
+  assert.equal(await page.getAttribute("[name=r-ay]", "aria-invalid"), "true");
+  assert.notEqual(await page.getAttribute("[name=r-ax]", "aria-invalid"), "true");
+  assert.match(await page.textContent("#r-error"), /^r: axis must be 3 finite numbers \[x, y, z\], not all zero: its y component is NaN/);
+  await page.fill("[name=r-ay]", "1");
+  assert.deepEqual(await invalid(["r-ax", "r-ay", "r-az", "r-angle"]), [false, false, false, false]);
+  assert.equal(await page.textContent("#r-error"), "");
+  // Every field points to its message.
+  const described = await page.$$eval("#inputs input, #inputs select", (fields) =>
+    fields.filter((f) => f.name !== "preset").map((f) => [f.name, document.getElementById(f.getAttribute("aria-describedby") ?? "") !== null]));
+  assert.deepEqual(described.filter(([, ok]) => !ok), []);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test("the checkbox and the integrator select each rebuild once", async () => {
+  const { page, context, problems } = await open("?t=1");
+  const rebuilds = async (action) => {
+    await page.evaluate(() => {
+      window.__rebuilds = 0;
+      window.__observer?.disconnect();
+      window.__observer = new MutationObserver((records) => (window.__rebuilds += records.filter((r) => r.removedNodes.length > 0).length));
+      window.__observer.observe(document.querySelector("#moments tbody"), { childList: true });
+    });
+    await action();
+    await page.waitForTimeout(100);
+    return page.evaluate(() => window.__rebuilds);
+  };
+  assert.equal(await rebuilds(() => page.uncheck("[name=shortestPath]")), 1);
+  assert.equal(await rebuilds(() => page.selectOption("[name=integrator]", "geodesic")), 1);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test("at 390 px the filmstrip's labels do not overlap and the page fits", async () => {
+  const { page, context, problems } = await open("?t=1", { viewport: { width: 390, height: 844 } });
+  await page.waitForTimeout(300);
+  // Columns of the label band that hold ink, in runs separated by at least 5 blank columns (the
+  // renderer keeps labels 6 px apart; a space inside "T 11.66" is narrower).
+  const runs = await page.evaluate(() => {
+    const canvas = document.querySelector("#filmstrip-canvas");
+    const ratio = canvas.width / canvas.clientWidth;
+    const ctx = canvas.getContext("2d");
+    const top = Math.round(canvas.height - 16 * ratio);
+    const band = ctx.getImageData(0, top, canvas.width, Math.round(14 * ratio)).data;
+    const inked = Array.from({ length: canvas.width }, (_, x) => {
+      for (let y = 0; y < band.length / 4 / canvas.width; y++) {
+        const i = 4 * (y * canvas.width + x);
+        if (band[i] < 200 || band[i + 1] < 200 || band[i + 2] < 200) return true;
+      }
+      return false;
+    });
+    const found = [];
+    let gap = Infinity;
+    inked.forEach((ink, x) => {
+      if (ink) {
+        if (gap >= 5 * ratio) found.push([x, x]);
+        else found[found.length - 1][1] = x;
+        gap = 0;
+      } else gap++;
+    });
+    return { found, width: canvas.width, ratio };
+  });
+  assert.equal(runs.found.length, 8, JSON.stringify(runs));
+  assert.ok(runs.found[0][0] > 0 && runs.found[7][1] < runs.width - 1, "labels inside the canvas");
+  assert.ok(await page.evaluate(() => document.documentElement.scrollWidth <= 390), "no horizontal scrolling");
+  await page.screenshot({ path: join(artifacts, "390px.png"), fullPage: true });
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+const AXE = readFileSync(join(root, "node_modules/axe-core/axe.min.js"), "utf8");
+
+/** axe-core's WCAG 2.2 AA violations on the page as it stands. */
+async function axeViolations(page) {
+  await page.addScriptTag({ content: AXE });
+  const result = await page.evaluate(() =>
+    window.axe.run(document, { runOnly: { type: "tag", values: ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa", "wcag22aa"] } }));
+  return result.violations.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(" ")).join(", ")}`);
+}
+
+test("WCAG 2.2 AA: axe finds nothing on the page, with errors showing, and embedded", async () => {
+  const { page, context } = await open("?t=1");
+  assert.deepEqual(await axeViolations(page), []);
+  await page.fill("[name=p-x]", "abc");
+  await page.fill("[name=step]", "0");
+  assert.deepEqual(await axeViolations(page), []);
+  // Empty error outputs are rendered (in the accessibility tree), so that new text is announced.
+  assert.equal(await page.$eval("#r-error", (o) => getComputedStyle(o).display !== "none"), true);
+  // The sphere says what it does with keys: not a still picture.
+  assert.notEqual(await page.getAttribute("#sphere-canvas", "role"), "img");
+  await context.close();
+
+  const embed = await open("?embed=1&t=1", { viewport: { width: 640, height: 360 } });
+  assert.deepEqual(await axeViolations(embed.page), []);
+  assert.equal(await embed.page.$$eval("h1", (h) => h.length), 1);
+  await embed.context.close();
+});
+
+test("memory, wasm memory and the DOM stay flat over rebuilds and playing", async () => {
+  const { page, context, problems } = await open("?t=1");
+  const cdp = await context.newCDPSession(page);
+  const measure = async () => {
+    await cdp.send("HeapProfiler.collectGarbage");
+    return page.evaluate(() => ({
+      heap: performance.memory.usedJSHeapSize,
+      nodes: document.getElementsByTagName("*").length,
+      wasm: window.__kliMemory(),
+    }));
+  };
+  // The module's memory, read through an empty Float64Buffer's view of it (the page's module
+  // instance: the same URL imports the same module).
+  await page.evaluate(async () => {
+    const { Float64Buffer } = await import("./pkg/kli_demo.js");
+    window.__kliMemory = () => {
+      const probe = new Float64Buffer(0);
+      const bytes = probe.view.buffer.byteLength;
+      probe.free();
+      return bytes;
+    };
+  });
+  const rebuild = (n) => page.evaluate(async (n) => {
+    const field = document.querySelector("[name=step]");
+    for (let k = 0; k < n; k++) {
+      field.value = k % 2 ? "0.01" : "0.02";
+      field.dispatchEvent(new Event("input", { bubbles: true }));
+      if (k % 50 === 0) await new Promise((resolve) => requestAnimationFrame(resolve));
+    }
+  }, n);
+  await rebuild(300);
+  const before = await measure();
+  await rebuild(1200);
+  await page.selectOption("#speed", "4");
+  await page.click("#play");
+  await page.waitForTimeout(3000);
+  const after = await measure();
+  assert.equal(after.nodes, before.nodes, "DOM nodes");
+  assert.equal(after.wasm, before.wasm, "wasm memory");
+  assert.ok(after.heap < before.heap * 1.25 + 1e6, `JS heap ${before.heap} → ${after.heap}`);
+  assert.deepEqual(problems, []);
   await context.close();
 });

@@ -64,16 +64,21 @@ test("errors thrown through the generated glue are Errors, and the module keeps 
       () => kli("abcd", r),
       () => kli(p, r, { step: undefined, tolerence: 1 }),
     ];
-    const messages = attempts.map((attempt) => {
-      try { attempt(); return "no error"; } catch (e) { return (e instanceof Error ? "" : "not an Error: ") + e.message; }
+    const thrown = attempts.map((attempt) => {
+      try { attempt(); return { message: "no error" }; } catch (e) { return { message: (e instanceof Error ? "" : "not an Error: ") + e.message, argument: e.argument, kind: e.kind }; }
     });
-    console.log(JSON.stringify({ messages, T: kli(p, r, undefined).finalTime, T2: kli(p, r, null).finalTime }));
+    const messages = thrown.map((t) => t.message);
+    const arguments_ = thrown.map((t) => [t.argument, t.kind]);
+    console.log(JSON.stringify({ messages, arguments_, T: kli(p, r, undefined).finalTime, T2: kli(p, r, null).finalTime }));
   `);
-  const { messages, T, T2 } = run("errors.mjs");
+  const { messages, arguments_, T, T2 } = run("errors.mjs");
   const starts = ["r must be a quaternion", "tolerance must be a finite number > 0 (got -1)", "integrator must be",
     "t must be a finite number ≥ 0 (got -1)", "p and r are antipodal", "p must be an array of 4 numbers",
     'options has an unknown key "tolerence"'];
   messages.forEach((message, i) => assert.ok(message.startsWith(starts[i]), `${message} !~ ${starts[i]}`));
+  // The same facts as properties, for code: the argument (in JavaScript's names) and the kind.
+  assert.deepEqual(arguments_, [["r", "zero-length"], ["tolerance", "out-of-range"], ["integrator", "unknown-name"],
+    ["t", "out-of-range"], ["shortestPath", "antipodal"], ["p", "invalid"], ["options", "invalid"]]);
   assert.equal(T, 11.66);
   assert.equal(T2, 11.66);
 });
@@ -92,11 +97,22 @@ test("bundles with esbuild and runs", () => {
 
 test("the TypeScript types are precise: right use compiles, wrong use does not", () => {
   writeFileSync(join(project, "use.ts"), `
-    import { kli, slerp, hopf, axisAngle, type KliOptions, type KliPath, type Integrator } from "kli";
+    import { kli, slerp, hopf, axisAngle, type KliOptions, type KliPath, type Integrator, type KliError, type KliErrorKind } from "kli";
     const options: KliOptions = { tolerance: 1e-5, step: 0.01, maxTime: 100, integrator: "geodesic", shortestPath: true };
     const path: KliPath = kli([0, 0, 0, 1], new Float64Array([0.5, 0.5, 0.5, 0.5]), options);
     const T: number = path.finalTime;
-    const q: Float64Array = path.at(T);
+    const q: Float64Array = path.exactAt(T);
+    try {
+      kli([0, 0, 0, 1], [0, 0, 0, 0]);
+    } catch (e) {
+      const error = e as KliError;
+      const argument: string = error.argument;
+      const kind: KliErrorKind = error.kind;
+      const component: number | undefined = error.component;
+      // @ts-expect-error: not a kind
+      const wrong: KliErrorKind = "bad";
+      void [argument, kind, component, wrong];
+    }
     const which: Integrator = path.integrator;
     const s: Float64Array = slerp([1, 0, 0, 0], [0, 1, 0, 0], 0.5);
     const h: Float64Array = hopf(q);

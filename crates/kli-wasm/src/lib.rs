@@ -35,6 +35,39 @@ pub use read::{QuaternionLike, Vector3Like};
 
 use wasm_bindgen::prelude::*;
 
+#[cfg(all(target_arch = "wasm32", feature = "small-allocator"))]
+mod allocator {
+    use std::alloc::{GlobalAlloc, Layout};
+
+    use lol_alloc::{AssumeSingleThreaded, FreeListAllocator};
+
+    /// The package's allocator: a free list kept in address order that coalesces neighbours, so
+    /// memory stays flat under repeated large allocations (paths, batch scratch). Its calls are
+    /// kept out of line: inlined into every allocating function, it would cost more than
+    /// std's allocator it replaces.
+    pub struct Allocator(AssumeSingleThreaded<FreeListAllocator>);
+
+    // SAFETY: delegates to lol_alloc's allocator, which upholds GlobalAlloc's contract.
+    unsafe impl GlobalAlloc for Allocator {
+        #[inline(never)]
+        unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+            // SAFETY: the caller's obligations are passed on unchanged.
+            unsafe { self.0.alloc(layout) }
+        }
+
+        #[inline(never)]
+        unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+            // SAFETY: as above.
+            unsafe { self.0.dealloc(ptr, layout) }
+        }
+    }
+
+    #[global_allocator]
+    // SAFETY: the module is single-threaded: it is built without wasm threads (no `atomics`).
+    static ALLOCATOR: Allocator =
+        Allocator(unsafe { AssumeSingleThreaded::new(FreeListAllocator::new()) });
+}
+
 #[wasm_bindgen(typescript_custom_section)]
 const TYPES: &'static str = r#"
 /** A quaternion as 4 finite numbers, scalar first: `[w, x, y, z]` (the paper's a + bi + cj + dk).
