@@ -229,11 +229,21 @@ impl KliError {
 
 /// `"a", "b" or "c"`.
 fn one_of(names: &[&str]) -> String {
-    let quoted: Vec<String> = names.iter().map(|a| format!("\"{a}\"")).collect();
-    match quoted.split_last() {
-        Some((last, rest)) if !rest.is_empty() => format!("{} or {last}", rest.join(", ")),
-        _ => quoted.concat(),
+    let mut list = String::new();
+    for (i, name) in names.iter().enumerate() {
+        let separator = if i == 0 {
+            ""
+        } else if i + 1 == names.len() {
+            " or "
+        } else {
+            ", "
+        };
+        list.push_str(separator);
+        list.push('"');
+        list.push_str(name);
+        list.push('"');
     }
+    list
 }
 
 /// Rust's way of writing a number in a message: exponent form for the very small and large.

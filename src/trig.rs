@@ -12,8 +12,8 @@ use crate::lanes::Lanes;
 
 /// `π/2` in two parts, `PIO2_HI` with 33 significant bits (so `k·PIO2_HI` is exact for
 /// `|k| < 2^20`) and the rest (fdlibm's `pio2_1` and `pio2_1t`); `2π` is four times each.
-const PIO2_HI: f64 = 1.570_796_326_734_125_614_17;
-const PIO2_LO: f64 = 6.077_100_506_506_192_249_32e-11;
+const PIO2_HI: f64 = f64::from_bits(0x3ff9_21fb_5440_0000);
+const PIO2_LO: f64 = f64::from_bits(0x3dd0_b461_1a62_6331);
 
 /// `x` minus the nearest multiple of `2π`, in `[-π, π]` up to rounding. Angles beyond `2^20·2π`
 /// (only absurd inputs) take a few more rounds and lose the digits their size has no room for.
@@ -114,6 +114,15 @@ mod tests {
             check(x);
         }
         assert!(worst <= 1.0);
+    }
+
+    #[test]
+    fn the_two_parts_of_pi_over_2() {
+        // fdlibm's pio2_1 = 1.57079632673412561417e+00, pio2_1t = 6.07710050650619224932e-11.
+        assert!((PIO2_HI - 1.570_796_326_734_125_6).abs() < 1e-16);
+        assert_eq!(PIO2_HI.to_bits() & 0x1f_ffff, 0, "k·PIO2_HI must be exact for |k| < 2^20");
+        assert!((PIO2_HI + PIO2_LO - std::f64::consts::FRAC_PI_2).abs() < 1e-16);
+        assert!((PIO2_LO - 6.077_100_506_506_192e-11).abs() < 1e-26);
     }
 
     #[test]

@@ -139,7 +139,7 @@ pub fn kli_sample(
     r: &QuaternionLike,
     #[wasm_bindgen(unchecked_param_type = "Float64Array | ArrayLike<number>")] times: &JsValue,
     options: Option<KliOptionsObject>,
-) -> JsResult<Vec<f64>> {
+) -> JsResult<Float64Array> {
     let shortest_path = read_options(options).map_err(throw)?.shortest_path;
     let (p, r) = (quaternion("p", p).map_err(throw)?, quaternion("r", r).map_err(throw)?);
     let times: Vec<f64> = if let Some(array) = times.dyn_ref::<Float64Array>() {
@@ -153,5 +153,5 @@ pub fn kli_sample(
     };
     let mut out = vec![0.0; 4 * times.len()];
     kli_sample_into(p, r, &times, &mut out, shortest_path).map_err(throw)?;
-    Ok(out)
+    Ok(Float64Array::from(&out[..]))
 }

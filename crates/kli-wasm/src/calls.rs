@@ -1,6 +1,7 @@
 //! The single calls: one pair of rotations (or one rotation) in, one answer out.
 
 use glam::DQuat;
+use js_sys::Float64Array;
 use kli::KliOptions;
 use kli::quaternion::to_wxyz;
 use wasm_bindgen::prelude::*;
@@ -10,8 +11,8 @@ use crate::options::{KliOptionsObject, read_options};
 use crate::path::JsKliPath;
 use crate::read::{QuaternionLike, Vector3Like, quaternion, vector3};
 
-fn to_array(q: DQuat) -> Vec<f64> {
-    to_wxyz(q).to_vec()
+fn to_array(q: DQuat) -> Float64Array {
+    Float64Array::from(&to_wxyz(q)[..])
 }
 
 /// The options, then `p` and `r`, read and checked in that order.
@@ -45,7 +46,7 @@ pub fn kli_exact(
     r: &QuaternionLike,
     t: f64,
     options: Option<KliOptionsObject>,
-) -> JsResult<Vec<f64>> {
+) -> JsResult<Float64Array> {
     let (p, r, options) = pair_and_options(p, r, options)?;
     kli::kli_exact(p, r, t, options.shortest_path).map(to_array).map_err(throw)
 }
@@ -82,29 +83,29 @@ pub fn slerp(
     r: &QuaternionLike,
     s: f64,
     options: Option<KliOptionsObject>,
-) -> JsResult<Vec<f64>> {
+) -> JsResult<Float64Array> {
     let (p, r, options) = pair_and_options(p, r, options)?;
     kli::slerp(p, r, s, options.shortest_path).map(to_array).map_err(throw)
 }
 
 /// The Hopf map of paper eq. 5: the point (x, y, z) of S² where q sends the body x-axis.
 #[wasm_bindgen]
-pub fn hopf(q: &QuaternionLike) -> JsResult<Vec<f64>> {
+pub fn hopf(q: &QuaternionLike) -> JsResult<Float64Array> {
     let q = quaternion("q", q).map_err(throw)?;
-    Ok(kli::hopf(q).to_array().to_vec())
+    Ok(Float64Array::from(&kli::hopf(q).to_array()[..]))
 }
 
 /// The polar form q = cos(θ/2) + U sin(θ/2) as [Ux, Uy, Uz, θ], θ ∈ [0, 2π].
 #[wasm_bindgen(js_name = axisAngle)]
-pub fn axis_angle(q: &QuaternionLike) -> JsResult<Vec<f64>> {
+pub fn axis_angle(q: &QuaternionLike) -> JsResult<Float64Array> {
     let q = quaternion("q", q).map_err(throw)?;
     let (axis, angle) = kli::axis_angle(q).map_err(throw)?;
-    Ok(vec![axis.x, axis.y, axis.z, angle])
+    Ok(Float64Array::from(&[axis.x, axis.y, axis.z, angle][..]))
 }
 
 /// The unit quaternion [w, x, y, z] of a rotation by `angle` radians about `axis` ([x, y, z]).
 #[wasm_bindgen(js_name = fromAxisAngle)]
-pub fn from_axis_angle(axis: &Vector3Like, angle: f64) -> JsResult<Vec<f64>> {
+pub fn from_axis_angle(axis: &Vector3Like, angle: f64) -> JsResult<Float64Array> {
     let axis = vector3("axis", axis).map_err(throw)?;
     kli::from_axis_angle(axis, angle).map(to_array).map_err(throw)
 }

@@ -65,8 +65,11 @@ fn check_keys(object: &JsValue) -> Result<(), KliError> {
     for key in Object::keys(object.unchecked_ref::<Object>()).iter() {
         let key = key.as_string().unwrap_or_default();
         if !KEYS.iter().any(|k| js_name(k) == key) {
-            let keys: Vec<String> = KEYS.iter().map(|k| js_name(k)).collect();
-            let problem = format!("has an unknown key \"{key}\"; the keys are {}", keys.join(", "));
+            let mut problem = format!("has an unknown key \"{key}\"; the keys are ");
+            for (i, k) in KEYS.iter().enumerate() {
+                problem.push_str(if i == 0 { "" } else { ", " });
+                problem.push_str(&js_name(k));
+            }
             return Err(KliError::invalid("options", problem));
         }
     }

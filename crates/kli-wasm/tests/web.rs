@@ -52,8 +52,8 @@ fn paper_example_reaches_at_11_66() {
     assert_eq!(times.len(), 1167);
     assert_eq!(times[0], 0.0);
     assert!((times[1166] - 11.66).abs() < 1e-9);
-    assert_eq!(path.quaternions().len(), 4 * 1167);
-    assert_eq!(path.hopf_curve().len(), 3 * 1167);
+    assert_eq!(path.quaternions().length(), 4 * 1167);
+    assert_eq!(path.hopf_curve().length(), 3 * 1167);
     assert!(close(&path.target().to_vec(), &R, 0.0));
     assert_eq!(path.integrator(), "rk4");
 }
@@ -401,7 +401,7 @@ fn kli_exact_batch_matches_the_plain_formula_to_1e_12() {
     )
     .unwrap()
     .to_vec();
-    let sampled = api::kli_sample(&quat(&p), &quat(&r), &f64s(&times), None).unwrap();
+    let sampled = api::kli_sample(&quat(&p), &quat(&r), &f64s(&times), None).unwrap().to_vec();
     for (k, &t) in times.iter().enumerate() {
         let phi = 2.0 * ((phi0 / 2.0).tan() * (-t).exp()).atan();
         let expected: Vec<f64> =
@@ -419,7 +419,8 @@ fn kli_sample_near_plus_and_minus_r() {
         for shortest in [true, false] {
             let o = || options(&[("shortestPath", shortest.into())]);
             let times: Vec<f64> = (0..300).map(|k| k as f64 * 0.1).collect();
-            let sampled = api::kli_sample(&quat(&p), &quat(&r), &f64s(&times), o()).unwrap();
+            let sampled =
+                api::kli_sample(&quat(&p), &quat(&r), &f64s(&times), o()).unwrap().to_vec();
             for (k, &t) in times.iter().enumerate() {
                 let single = api::kli_exact(&quat(&p), &quat(&r), t, o()).unwrap().to_vec();
                 assert!(
