@@ -103,27 +103,33 @@ pub fn time_axis_end(scene: &Scene) -> f64 {
 
 /// Draws the three plots into `(width, height)`; [`draw_plot_cursors`] marks a time on them.
 pub fn draw_plots(pen: &Pen, width: f64, height: f64, scene: &Scene) {
-    let cell = |i: usize, x_max: f64, y_min: f64, y_max: f64| {
+    let x_max = time_axis_end(scene);
+    let cell = |i: usize, y_min: f64, y_max: f64| {
         let (left, top, width, height) = plot_area(i, width, height);
         Panel { left, top, width, height, x_max, y_min, y_max }
     };
-    let times = scene.path().times();
-    let final_time = scene.final_time();
-    let x_max = time_axis_end(scene);
-    let tolerance = scene.path().options().tolerance;
+    draw_distance(pen, scene, |low| cell(0, low, 0.5));
+    draw_warp(pen, scene, &cell(1, 0.0, 1.0));
+    draw_drift(pen, scene, |high| cell(2, -17.0, high));
+}
 
-    // 1. Distance to the target, log scale.
+/// The distance to the target on a log scale, with ε, the measured `T` and the predicted `T*`;
+/// `panel` makes the frame once the lowest decade `low` is known.
+fn draw_distance(pen: &Pen, scene: &Scene, panel: impl Fn(f64) -> Panel) {
+    let (times, final_time) = (scene.path().times(), scene.final_time());
+    let tolerance = scene.path().options().tolerance;
     let smallest = scene.distances().iter().copied().filter(|&d| d > 0.0).fold(tolerance, f64::min);
     let low = (smallest.log10().floor() as i32 - 1).max(-17);
-    let panel = cell(0, x_max, low as f64, 0.5);
+    let panel = panel(low as f64);
     let every = ((1 - low) / 6).max(1);
     panel.frame(pen, "distance ||r − q(t)|| (log)", &decade_ticks(low, 0, every));
     panel.series(pen, times, log10_floor(scene.distances(), low as f64), KLI, 2.0, &[]);
     let (x0, ty) = panel.at(0.0, tolerance.log10());
-    pen.line((x0, ty), (panel.left + panel.width, ty), MUTED, 1.0, &[4.0, 3.0]);
+    let right = panel.left + panel.width;
+    pen.line((x0, ty), (right, ty), MUTED, 1.0, &[4.0, 3.0]);
     pen.text(
         &format!("ε = {}", exponential(tolerance, 0)),
-        (panel.left + panel.width, ty - 8.0),
+        (right, ty - 8.0),
         MUTED,
         10.5,
         "right",
@@ -132,49 +138,37 @@ pub fn draw_plots(pen: &Pen, width: f64, height: f64, scene: &Scene) {
     pen.line((tx, panel.top), (tx, panel.top + panel.height), KLI, 1.0, &[]);
     let (sx, _) = panel.at(scene.predicted_time(), 0.0);
     pen.line((sx, panel.top), (sx, panel.top + panel.height), INK, 1.0, &[3.0, 3.0]);
-    pen.text(
-        &format!("T = {}  T* = {}", fixed(final_time, 2), fixed(scene.predicted_time(), 4)),
-        (panel.left + panel.width, panel.top + 8.0),
-        INK,
-        10.5,
-        "right",
-    );
+    let times_label =
+        format!("T = {}  T* = {}", fixed(final_time, 2), fixed(scene.predicted_time(), 4));
+    pen.text(&times_label, (right, panel.top + 8.0), INK, 10.5, "right");
+}
 
-    // 2. The time warp s(t) of KLI against SLERP's linear clock.
-    let panel = cell(1, x_max, 0.0, 1.0);
+/// The time warp `s(t)` of KLI against SLERP's linear clock `t / T`.
+fn draw_warp(pen: &Pen, scene: &Scene, panel: &Panel) {
+    let times = scene.path().times();
     let ticks: Vec<(f64, String)> =
         [0.0, 0.25, 0.5, 0.75, 1.0].iter().map(|&y| (y, trim(y))).collect();
     panel.frame(pen, "SLERP parameter s(t)", &ticks);
-    panel.series(
-        pen,
-        times,
-        times.iter().map(|&x| scene.slerp_parameter(x)),
-        SLERP,
-        1.5,
-        &[5.0, 4.0],
-    );
+    let slerp = times.iter().map(|&x| scene.slerp_parameter(x));
+    panel.series(pen, times, slerp, SLERP, 1.5, &[5.0, 4.0]);
     panel.series(pen, times, scene.warp().iter().copied(), KLI, 2.0, &[]);
-    pen.text("KLI", panel.at(x_max * 0.08, 0.93), KLI, 11.0, "left");
-    pen.text("SLERP, s = t/T", panel.at(x_max * 0.55, 0.3), SLERP, 11.0, "left");
+    pen.text("KLI", panel.at(panel.x_max * 0.08, 0.93), KLI, 11.0, "left");
+    pen.text("SLERP, s = t/T", panel.at(panel.x_max * 0.55, 0.3), SLERP, 11.0, "left");
+}
 
-    // 3. Drift of |q| from 1 for the chosen integrator.
+/// How far the chosen integrator lets `|q|` drift from 1, on a log scale; `panel` makes the
+/// frame once the highest decade `high` is known.
+fn draw_drift(pen: &Pen, scene: &Scene, panel: impl Fn(f64) -> Panel) {
     let largest = scene.norm_drift().iter().copied().fold(0.0_f64, f64::max);
     let high = if largest > 0.0 { (largest.log10().ceil() as i32).clamp(-15, 0) } else { -15 };
-    let panel = cell(2, x_max, -17.0, high as f64);
+    let panel = panel(high as f64);
     let integrator = scene.path().options().integrator;
-    panel.frame(
-        pen,
-        &format!("| |q| − 1 |, {} (log)", integrator.name()),
-        &decade_ticks(-17, high, (high + 17) / 5),
-    );
-    panel.series(pen, times, log10_floor(scene.norm_drift(), -17.0), KLI, 2.0, &[]);
-    pen.text(
-        &format!("max {}", exponential(largest, 1)),
-        (panel.left + panel.width, panel.top + 8.0),
-        INK,
-        10.5,
-        "right",
-    );
+    let title = format!("| |q| − 1 |, {} (log)", integrator.name());
+    panel.frame(pen, &title, &decade_ticks(-17, high, (high + 17) / 5));
+    let drift = log10_floor(scene.norm_drift(), -17.0);
+    panel.series(pen, scene.path().times(), drift, KLI, 2.0, &[]);
+    let label = format!("max {}", exponential(largest, 1));
+    pen.text(&label, (panel.left + panel.width, panel.top + 8.0), INK, 10.5, "right");
 }
 
 /// The current time `t` as a dotted vertical line on each plot, over [`draw_plots`]' drawing.

@@ -23,32 +23,44 @@ enum Side {
     Front,
 }
 
-/// Draws the runs of `points` that lie on `side`.
 /// `(colour, width, dash)` of a line.
 type Stroke<'a> = (&'a str, f64, &'a [f64]);
 
-fn polyline_on(
-    pen: &Pen,
-    viewport: &Viewport,
-    camera: &Camera,
-    points: &[DVec3],
-    side: Side,
-    (color, width, dash): Stroke,
-) {
-    let mut run: Vec<(f64, f64)> = Vec::new();
-    for &p in points {
-        let projected = camera.project(p);
-        if (projected.depth >= 0.0) == (side == Side::Front) {
-            run.push(viewport.pixel(projected));
-        } else if !run.is_empty() {
-            // End the run exactly on the rim so front and back halves meet.
-            run.push(viewport.pixel(projected));
-            pen.polyline(&run, color, width, dash);
-            run.clear();
-        }
-    }
-    pen.polyline(&run, color, width, dash);
+/// The sphere as seen: where a point of S² lands on the canvas, and which side it is on.
+struct View<'a> {
+    pen: &'a Pen<'a>,
+    viewport: &'a Viewport,
+    camera: &'a Camera,
 }
+
+impl View<'_> {
+    fn at(&self, p: DVec3) -> (f64, f64) {
+        self.viewport.pixel(self.camera.project(p))
+    }
+
+    fn in_front(&self, p: DVec3) -> bool {
+        self.camera.project(p).depth >= 0.0
+    }
+
+    /// Draws the runs of `points` that lie on `side`.
+    fn polyline_on(&self, points: &[DVec3], side: Side, (color, width, dash): Stroke) {
+        let mut run: Vec<(f64, f64)> = Vec::new();
+        for &p in points {
+            let projected = self.camera.project(p);
+            if (projected.depth >= 0.0) == (side == Side::Front) {
+                run.push(self.viewport.pixel(projected));
+            } else if !run.is_empty() {
+                // End the run exactly on the rim so front and back halves meet.
+                run.push(self.viewport.pixel(projected));
+                self.pen.polyline(&run, color, width, dash);
+                run.clear();
+            }
+        }
+        self.pen.polyline(&run, color, width, dash);
+    }
+}
+
+const SLERP_STROKE: Stroke = (SLERP, 1.5, &[5.0, 4.0]);
 
 fn circle(f: impl Fn(f64) -> DVec3) -> Vec<DVec3> {
     (0..=96).map(|i| f(i as f64 / 96.0 * std::f64::consts::TAU)).collect()
@@ -68,67 +80,79 @@ fn grid() -> Vec<Vec<DVec3>> {
 }
 
 /// Draws the sphere view of `scene` into `viewport`: everything but the current time, which
-/// [`draw_sphere_cursor`] adds on top.
+/// [`draw_sphere_cursor`] adds on top. Back to front: what lies behind, faintly; the globe; the
+/// grid, axes and curves in front; Table 1's moments; the ends.
 pub fn draw_sphere(pen: &Pen, viewport: &Viewport, camera: &Camera, scene: &Scene) {
+    let view = View { pen, viewport, camera };
     let grid = grid();
-    let moments = scene.moments();
-    let kli_moments: Vec<DVec3> = moments.iter().map(|&m| hopf(scene.integrated_at(m))).collect();
-    let slerp_moments: Vec<DVec3> = moments.iter().map(|&m| hopf(scene.slerp_at(m))).collect();
-    let start = hopf(scene.path().arc().start());
-    let end = hopf(scene.path().target());
-    let at = |p: DVec3| viewport.pixel(camera.project(p));
-    let in_front = |p: DVec3| camera.project(p).depth >= 0.0;
+    draw_back(&view, &grid, scene);
+    draw_globe(&view);
+    draw_front(&view, &grid, scene);
+    draw_moments(&view, scene);
+    draw_ends(&view, scene);
+}
 
-    // Behind the sphere, faint.
-    pen.alpha(0.35);
-    for line in &grid {
-        polyline_on(pen, viewport, camera, line, Side::Back, (GRID, 1.0, &[]));
+fn draw_back(view: &View, grid: &[Vec<DVec3>], scene: &Scene) {
+    view.pen.alpha(0.35);
+    for line in grid {
+        view.polyline_on(line, Side::Back, (GRID, 1.0, &[]));
     }
-    polyline_on(pen, viewport, camera, scene.slerp_curve(), Side::Back, (SLERP, 1.5, &[5.0, 4.0]));
-    polyline_on(pen, viewport, camera, scene.kli_curve(), Side::Back, (KLI, 3.0, &[]));
-    pen.alpha(1.0);
+    view.polyline_on(scene.slerp_curve(), Side::Back, SLERP_STROKE);
+    view.polyline_on(scene.kli_curve(), Side::Back, (KLI, 3.0, &[]));
+    view.pen.alpha(1.0);
+}
 
-    // The sphere itself, translucent enough to show what lies behind.
-    let centre = at(DVec3::ZERO);
-    pen.alpha(0.82);
-    pen.shaded_disc(centre, viewport.scale, "#ffffff", "#bac8d3");
-    pen.alpha(1.0);
-    pen.disc(centre, viewport.scale, None, Some(("#adb5bd", 1.0)));
+/// The sphere itself, translucent enough to show what lies behind.
+fn draw_globe(view: &View) {
+    let centre = view.at(DVec3::ZERO);
+    view.pen.alpha(0.82);
+    view.pen.shaded_disc(centre, view.viewport.scale, "#ffffff", "#bac8d3");
+    view.pen.alpha(1.0);
+    view.pen.disc(centre, view.viewport.scale, None, Some(("#adb5bd", 1.0)));
+}
 
-    // In front.
-    for line in &grid {
-        polyline_on(pen, viewport, camera, line, Side::Front, ("#c3ccd5", 1.0, &[]));
+fn draw_front(view: &View, grid: &[Vec<DVec3>], scene: &Scene) {
+    for line in grid {
+        view.polyline_on(line, Side::Front, ("#c3ccd5", 1.0, &[]));
     }
     for (axis, color, label) in
         [(DVec3::X, AXIS_X, "x"), (DVec3::Y, AXIS_Y, "y"), (DVec3::Z, AXIS_Z, "z")]
     {
-        let alpha = if in_front(axis) { 1.0 } else { 0.35 };
-        pen.alpha(alpha);
-        pen.line(at(axis * 0.94), at(axis * 1.1), color, 2.0, &[]);
-        pen.text(label, at(axis * 1.2), color, 13.0, "center");
+        view.pen.alpha(if view.in_front(axis) { 1.0 } else { 0.35 });
+        view.pen.line(view.at(axis * 0.94), view.at(axis * 1.1), color, 2.0, &[]);
+        view.pen.text(label, view.at(axis * 1.2), color, 13.0, "center");
     }
-    pen.alpha(1.0);
-    polyline_on(pen, viewport, camera, scene.kli_curve(), Side::Front, (KLI, 3.5, &[]));
-    polyline_on(pen, viewport, camera, scene.slerp_curve(), Side::Front, (SLERP, 1.5, &[5.0, 4.0]));
+    view.pen.alpha(1.0);
+    view.polyline_on(scene.kli_curve(), Side::Front, (KLI, 3.5, &[]));
+    view.polyline_on(scene.slerp_curve(), Side::Front, SLERP_STROKE);
+}
 
-    for (&k, &s) in kli_moments.iter().zip(&slerp_moments) {
-        pen.alpha(if in_front(s) { 1.0 } else { 0.4 });
-        pen.disc(at(s), 3.5, Some("#ffffff"), Some((SLERP, 1.5)));
-        pen.alpha(if in_front(k) { 1.0 } else { 0.4 });
-        pen.disc(at(k), 5.5, Some(KLI), Some(("#ffffff", 1.0)));
+/// Table 1's moments on both curves, fainter behind the sphere.
+fn draw_moments(view: &View, scene: &Scene) {
+    for m in scene.moments() {
+        let (k, s) = (hopf(scene.integrated_at(m)), hopf(scene.slerp_at(m)));
+        view.pen.alpha(if view.in_front(s) { 1.0 } else { 0.4 });
+        view.pen.disc(view.at(s), 3.5, Some("#ffffff"), Some((SLERP, 1.5)));
+        view.pen.alpha(if view.in_front(k) { 1.0 } else { 0.4 });
+        view.pen.disc(view.at(k), 5.5, Some(KLI), Some(("#ffffff", 1.0)));
     }
-    pen.alpha(1.0);
-    pen.disc(at(start), 6.0, Some("#ffffff"), Some((INK, 2.0)));
-    pen.text("h(p)", offset(at(start), 0.0, -14.0), INK, 12.0, "center");
-    pen.disc(at(end), 6.0, Some(INK), Some(("#ffffff", 1.5)));
-    pen.text("h(r)", offset(at(end), 0.0, -14.0), INK, 12.0, "center");
+    view.pen.alpha(1.0);
+}
+
+fn draw_ends(view: &View, scene: &Scene) {
+    let (start, end) =
+        (view.at(hopf(scene.path().arc().start())), view.at(hopf(scene.path().target())));
+    view.pen.disc(start, 6.0, Some("#ffffff"), Some((INK, 2.0)));
+    view.pen.text("h(p)", offset(start, 0.0, -14.0), INK, 12.0, "center");
+    view.pen.disc(end, 6.0, Some(INK), Some(("#ffffff", 1.5)));
+    view.pen.text("h(r)", offset(end, 0.0, -14.0), INK, 12.0, "center");
 }
 
 /// The KLI and SLERP points at time `t`, over [`draw_sphere`]'s drawing.
 pub fn draw_sphere_cursor(pen: &Pen, viewport: &Viewport, camera: &Camera, scene: &Scene, t: f64) {
-    let at = |p: DVec3| viewport.pixel(camera.project(p));
-    pen.disc(at(hopf(scene.slerp_at(t))), 7.0, None, Some((SLERP, 2.5)));
-    pen.disc(at(hopf(scene.integrated_at(t))), 7.5, Some(KLI), Some((INK, 2.0)));
+    let view = View { pen, viewport, camera };
+    pen.disc(view.at(hopf(scene.slerp_at(t))), 7.0, None, Some((SLERP, 2.5)));
+    pen.disc(view.at(hopf(scene.integrated_at(t))), 7.5, Some(KLI), Some((INK, 2.0)));
     pen.text(
         &format!("t = {}", fixed(t, 2)),
         (viewport.left + 8.0, viewport.top + 12.0),
