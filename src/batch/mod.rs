@@ -256,25 +256,8 @@ mod tests {
         from_wxyz([1.0, 0.0, 0.0, 0.0])
     }
 
-    /// Unit quaternions with `|q|² = 1` exactly in f64, from a fixed seed.
     fn exact_units(count: usize) -> Vec<[f64; 4]> {
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
-        let mut out = Vec::new();
-        while out.len() < count {
-            let q = [next(), next(), next(), next()];
-            let n = q.iter().map(|c| c * c).sum::<f64>().sqrt();
-            let q = q.map(|c| c / n);
-            if from_wxyz(q).length_squared() == 1.0 {
-                out.push(q);
-            }
-        }
-        out
+        crate::quaternion::exact_units(0x9e37_79b9_7f4a_7c15, count)
     }
 
     #[test]
