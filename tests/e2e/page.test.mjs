@@ -502,6 +502,18 @@ test("WCAG 2.2 AA: axe finds nothing on the page, with errors showing, and embed
   assert.equal(await page.$eval("#r-error", (o) => getComputedStyle(o).display !== "none"), true);
   // The sphere says what it does with keys: not a still picture.
   assert.notEqual(await page.getAttribute("#sphere-canvas", "role"), "img");
+  // The focus ring stands out from the white controls' background by at least 3:1 (WCAG 1.4.11).
+  await page.focus("#play");
+  const ring = await page.$eval("#play", (b) => getComputedStyle(b).outlineColor);
+  const luminance = (rgb) => {
+    const [r, g, b] = rgb.match(/\d+/g).slice(0, 3).map((c) => {
+      const v = Number(c) / 255;
+      return v <= 0.04045 ? v / 12.92 : ((v + 0.055) / 1.055) ** 2.4;
+    });
+    return 0.2126 * r + 0.7152 * g + 0.0722 * b;
+  };
+  const contrast = (1 + 0.05) / (luminance(ring) + 0.05);
+  assert.ok(contrast >= 3, `focus ring ${ring}: ${contrast.toFixed(2)}:1`);
   await context.close();
 
   const embed = await open("?embed=1&t=1", { viewport: { width: 640, height: 360 } });
