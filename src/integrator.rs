@@ -59,7 +59,7 @@ fn rk4_increment(q: DQuat, r: DQuat, h: f64) -> DQuat {
 /// `exp_q` of the increment: rotate `q` towards the increment's tangential part by the angle
 /// between `q` and `q + increment`, i.e. `cos α q + sin α u` with `u ⟂ q`, `|u| = 1`.
 #[inline]
-fn along_great_circle(q: DQuat, increment: DQuat) -> DQuat {
+pub(crate) fn along_great_circle(q: DQuat, increment: DQuat) -> DQuat {
     let tangential = increment - q * increment.dot(q);
     let length = tangential.length();
     if length == 0.0 {

@@ -29,7 +29,8 @@
 //! Modules, one concept each: [`model`] (the vector field), [`integrator`] (RK4, Euler, geodesic),
 //! [`algorithm`] (Algorithm 1), [`great_arc`] (the circle from `p` to the target),
 //! [`closed_form`] (the exact solution), [`slerp`](mod@slerp), [`hopf`](mod@hopf),
-//! [`axis_angle`](mod@axis_angle) (polar form), [`batch`] (many pairs at once), [`error`].
+//! [`axis_angle`](mod@axis_angle) (polar form), [`batch`] (many pairs at once), [`swarm`] (the
+//! many-oscillator model the paper is named after), [`error`].
 //!
 //! This crate knows nothing of WebAssembly: the JavaScript package is the `kli-wasm` crate beside
 //! it, and the demo page's renderer the `kli-demo` crate.
@@ -47,6 +48,7 @@ mod lanes;
 pub mod model;
 pub mod quaternion;
 pub mod slerp;
+pub mod swarm;
 mod trig;
 
 pub use algorithm::{KliOptions, KliPath, kli};
