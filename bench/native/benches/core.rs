@@ -1,5 +1,5 @@
 //! `cargo bench -p kli-bench`: kli's SLERP and closed form against glam's and nalgebra's SLERP on
-//! the same pairs, and Algorithm 1 on the paper's example with each integrator.
+//! the same pairs, Algorithm 1 on the paper's example with each integrator, and a swarm step.
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use kli::batch::{kli_exact_batch, slerp_batch};
@@ -66,5 +66,20 @@ fn algorithm_1(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, interpolation, algorithm_1);
+/// One geodesic RK4 step of the swarm (issue 9's target is ≤ 1 ms for 10⁴ all-to-all in wasm).
+fn swarm(c: &mut Criterion) {
+    use kli::swarm::{Graph, Swarm, SwarmOptions};
+    let mut group = c.benchmark_group("swarm step");
+    for (graph, count) in [(Graph::All, 10_000), (Graph::Ring, 10_000), (Graph::All, 2_000)] {
+        let options = SwarmOptions { count, graph, frequency_spread: 0.5, ..Default::default() };
+        let mut s = Swarm::new(&options).unwrap();
+        group.throughput(Throughput::Elements(count as u64));
+        group.bench_function(format!("{} oscillators, {}", count, graph.name()), |b| {
+            b.iter(|| s.step(black_box(0.01), 1).unwrap())
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, interpolation, algorithm_1, swarm);
 criterion_main!(benches);
