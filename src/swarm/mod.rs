@@ -13,6 +13,15 @@
 //! Steps are geodesic RK4: the classical RK4 increment of every oscillator, taken along its great
 //! circle, so each `|q_i| = 1` to rounding (Euler plus renormalising would turn about the wrong
 //! axis).
+//!
+//! ```
+//! use kli::swarm::{Graph, Swarm, SwarmOptions};
+//!
+//! let mut swarm = Swarm::new(&SwarmOptions { count: 500, coupling: 1.0, graph: Graph::All, seed: 7, ..Default::default() })?;
+//! swarm.step(0.05, 400)?;
+//! assert!(swarm.order_parameter() > 0.999); // identical oscillators, K > 0: they synchronise
+//! # Ok::<(), kli::KliError>(())
+//! ```
 
 mod order;
 mod random;
