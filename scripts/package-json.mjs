@@ -11,7 +11,9 @@ const field = (toml, name) => {
 const workspace = manifest("Cargo.toml").split("[workspace.package]")[1];
 const crate = manifest("crates/kli-wasm/Cargo.toml");
 
-const files = ["kli.js", "kli.d.ts", "kli_bg.wasm", "kli_bg.wasm.d.ts", "README.md"];
+// Two entries, a module each: `kli` (the two-rotation API) and `kli/swarm` (LoheSwarm).
+const files = ["kli.js", "kli.d.ts", "kli_bg.wasm", "kli_bg.wasm.d.ts", "swarm.js", "swarm.d.ts", "swarm_bg.wasm",
+  "swarm_bg.wasm.d.ts", "README.md"];
 for (const file of files) {
   if (!existsSync(new URL(`../pkg/${file}`, import.meta.url))) throw new Error(`pkg/${file} is missing`);
 }
@@ -28,6 +30,8 @@ const json = {
   exports: {
     ".": { types: "./kli.d.ts", default: "./kli.js" },
     "./kli_bg.wasm": "./kli_bg.wasm",
+    "./swarm": { types: "./swarm.d.ts", default: "./swarm.js" },
+    "./swarm_bg.wasm": "./swarm_bg.wasm",
     "./package.json": "./package.json",
   },
   files,

@@ -26,7 +26,8 @@ before(() => {
 
 test("the tarball holds every file the package needs, and only those", () => {
   const installed = readdirSync(join(project, "node_modules/kli")).sort();
-  assert.deepEqual(installed, ["README.md", "kli.d.ts", "kli.js", "kli_bg.wasm", "kli_bg.wasm.d.ts", "package.json"]);
+  assert.deepEqual(installed, ["README.md", "kli.d.ts", "kli.js", "kli_bg.wasm", "kli_bg.wasm.d.ts", "package.json",
+    "swarm.d.ts", "swarm.js", "swarm_bg.wasm", "swarm_bg.wasm.d.ts"]);
   const manifest = JSON.parse(readFileSync(join(project, "node_modules/kli/package.json"), "utf8"));
   const cargo = readFileSync(join(root, "Cargo.toml"), "utf8");
   assert.equal(manifest.version, cargo.match(/^version = "(.*)"/m)[1]);
@@ -47,6 +48,29 @@ test("imports by name in Node with initSync and gives T = 11.66", () => {
   assert.ok(Math.abs(T - 11.66) < 1e-9, `T = ${T}`);
   assert.equal(steps, 1166);
   assert.ok(Math.abs(star - 11.6568) < 5e-5, `T* = ${star}`);
+});
+
+test("the kli/swarm entry loads its own module and synchronises a swarm", () => {
+  writeFileSync(join(project, "swarm.mjs"), `
+    import { readFileSync } from "node:fs";
+    import { initSync, LoheSwarm } from "kli/swarm";
+    import * as api from "kli";
+    initSync({ module: readFileSync(new URL(import.meta.resolve("kli/swarm_bg.wasm"))) });
+    const swarm = new LoheSwarm({ count: 300, coupling: 1, seed: 3 });
+    const start = swarm.orderParameter;
+    swarm.step(0.05, 600);
+    let error;
+    try { new LoheSwarm({ graph: "star" }); } catch (e) { error = { argument: e.argument, kind: e.kind }; }
+    console.log(JSON.stringify({ start, end: swarm.orderParameter, time: swarm.time, points: swarm.hopfPoints().length,
+      error, separate: !("LoheSwarm" in api) && !("kli" in (await import("kli/swarm"))) }));
+  `);
+  const { start, end, time, points, error, separate } = run("swarm.mjs");
+  assert.ok(start < 0.3, `a uniform start: R = ${start}`);
+  assert.ok(end > 1 - 1e-9, `synchronised: R = ${end}`);
+  assert.ok(Math.abs(time - 30) < 1e-9, `time ${time}`);
+  assert.equal(points, 900);
+  assert.deepEqual(error, { argument: "graph", kind: "unknown-name" });
+  assert.ok(separate, "each entry holds only its own API");
 });
 
 test("errors thrown through the generated glue are Errors, and the module keeps working", () => {
@@ -98,6 +122,7 @@ test("bundles with esbuild and runs", () => {
 test("the TypeScript types are precise: right use compiles, wrong use does not", () => {
   writeFileSync(join(project, "use.ts"), `
     import { kli, slerp, hopf, axisAngle, type KliOptions, type KliPath, type Integrator, type KliError, type KliErrorKind } from "kli";
+    import { LoheSwarm, type SwarmOptions } from "kli/swarm";
     const options: KliOptions = { tolerance: 1e-5, step: 0.01, maxTime: 100, integrator: "geodesic", shortestPath: true };
     const path: KliPath = kli([0, 0, 0, 1], new Float64Array([0.5, 0.5, 0.5, 0.5]), options);
     const T: number = path.finalTime;
@@ -127,6 +152,14 @@ test("the TypeScript types are precise: right use compiles, wrong use does not",
     kli("abcd", [1, 0, 0, 0]);
     // @ts-expect-error: finalTime is read-only
     path.finalTime = 3;
+    const swarm: LoheSwarm = new LoheSwarm({ count: 10, graph: "ring", startSpread: 0.3 } satisfies SwarmOptions);
+    swarm.step(0.1, 5);
+    const r: number = swarm.orderParameter;
+    // @ts-expect-error: not a graph
+    new LoheSwarm({ graph: "star" });
+    // @ts-expect-error: unknown option
+    new LoheSwarm({ colour: 1 });
+    void r;
     export { T, q, which, h, a };
   `);
   writeFileSync(join(project, "tsconfig.json"), JSON.stringify({

@@ -10,28 +10,41 @@
 //! Names are the Rust names in camelCase (`max_time` is `maxTime`), everywhere.
 //!
 //! Files: [`error`] (errors and number formatting), [`read`] (JavaScript values in), [`options`]
-//! (the options object), [`calls`] (the single calls), [`path`] (the `KliPath` class), [`batch`]
-//! (many pairs a call), [`buffer`] (`Float64Buffer`, arrays in the module's memory). Crates that
-//! add to the module (the demo page's `kli-demo`) use [`error`], [`read`] and [`options`] too.
+//! (options objects); with the `api` feature (the `kli` entry) `calls` (the single calls), `path`
+//! (the `KliPath` class), `batch` (many pairs a call), `buffer` (`Float64Buffer`); with `swarm`
+//! (the `kli/swarm` entry) `swarm` (`LoheSwarm`). Crates that add to the module (the demo page's
+//! `kli-demo`) use [`error`], [`read`] and [`options`] too.
 
+#[cfg(feature = "api")]
 pub mod batch;
+#[cfg(feature = "api")]
 pub mod buffer;
+#[cfg(feature = "api")]
 pub mod calls;
 pub mod error;
 pub mod options;
+#[cfg(feature = "api")]
 pub mod path;
 pub mod read;
+#[cfg(feature = "swarm")]
+pub mod swarm;
 
+#[cfg(feature = "api")]
 pub use batch::{kli_exact_batch, kli_sample, nlerp_batch, slerp_batch};
+#[cfg(feature = "api")]
 pub use buffer::Float64Buffer;
+#[cfg(feature = "api")]
 pub use calls::{
     axis_angle, from_axis_angle, hopf, kli, kli_exact, kli_reach_time, kli_to_slerp_parameter,
     slerp,
 };
 pub use error::JsResult;
 pub use options::KliOptionsObject;
+#[cfg(feature = "api")]
 pub use path::JsKliPath;
 pub use read::{QuaternionLike, Vector3Like};
+#[cfg(feature = "swarm")]
+pub use swarm::{JsLoheSwarm, SwarmOptionsObject};
 
 use wasm_bindgen::prelude::*;
 

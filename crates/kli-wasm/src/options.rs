@@ -7,7 +7,7 @@ use kli::{Integrator, KliError, KliOptions};
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
-use crate::error::js_name;
+use crate::error::{js_name, number};
 use crate::read::describe;
 
 #[wasm_bindgen]
@@ -23,64 +23,102 @@ const KEYS: [&str; 5] = ["tolerance", "step", "max_time", "integrator", "shortes
 /// Reads the options object into checked [`KliOptions`].
 pub fn read_options(value: Option<KliOptionsObject>) -> Result<KliOptions, KliError> {
     let mut options = KliOptions::default();
-    let Some(object) = value.map(JsValue::from).filter(|v| !v.is_undefined() && !v.is_null())
-    else {
+    let Some(fields) = Fields::new(value.map(JsValue::from), &KEYS, "{ tolerance: 1e-5 }")? else {
         return Ok(options);
     };
-    check_keys(&object)?;
-    let field =
-        |key: &str| Reflect::get(&object, &js_name(key).into()).unwrap_or(JsValue::UNDEFINED);
-    if let Some(v) = read_number("tolerance", field("tolerance"))? {
+    if let Some(v) = fields.number("tolerance")? {
         options.tolerance = v;
     }
-    if let Some(v) = read_number("step", field("step"))? {
+    if let Some(v) = fields.number("step")? {
         options.step = v;
     }
-    if let Some(v) = read_number("max_time", field("max_time"))? {
+    if let Some(v) = fields.number("max_time")? {
         options.max_time = v;
     }
-    let integrator = field("integrator");
-    if !integrator.is_undefined() {
-        let name = integrator.as_string().unwrap_or_else(|| describe(&integrator));
+    if let Some(name) = fields.name("integrator") {
         options.integrator = name.parse::<Integrator>()?;
     }
-    let shortest_path = field("shortest_path");
-    if !shortest_path.is_undefined() {
-        options.shortest_path = shortest_path.as_bool().ok_or_else(|| {
-            let problem = format!("must be true or false (got {})", describe(&shortest_path));
-            KliError::invalid("shortest_path", problem)
-        })?;
+    if let Some(v) = fields.boolean("shortest_path")? {
+        options.shortest_path = v;
     }
     options.validate()?;
     Ok(options)
 }
 
-/// Only the keys of [`KEYS`], on a plain object.
-fn check_keys(object: &JsValue) -> Result<(), KliError> {
-    if !object.is_object() || Array::is_array(object) {
-        let problem =
-            format!("must be an object like {{ tolerance: 1e-5 }} (got {})", describe(object));
-        return Err(KliError::invalid("options", problem));
-    }
-    for key in Object::keys(object.unchecked_ref::<Object>()).iter() {
-        let key = key.as_string().unwrap_or_default();
-        if !KEYS.iter().any(|k| js_name(k) == key) {
-            let mut problem = format!("has an unknown key \"{key}\"; the keys are ");
-            for (i, k) in KEYS.iter().enumerate() {
-                problem.push_str(if i == 0 { "" } else { ", " });
-                problem.push_str(&js_name(k));
-            }
-            return Err(KliError::invalid("options", problem));
-        }
-    }
-    Ok(())
+/// An options object being read: a plain object whose keys are all among `keys` (Rust names;
+/// JavaScript's are their camelCase), each read by its type here and checked by the core.
+pub struct Fields {
+    object: JsValue,
 }
 
-/// A number option, or `None` when it is `undefined`.
-fn read_number(name: &str, value: JsValue) -> Result<Option<f64>, KliError> {
-    if value.is_undefined() {
-        return Ok(None);
+impl Fields {
+    /// `None` when `value` is absent, `undefined` or `null` (the defaults); `example` shows a
+    /// right value in the message about a wrong one.
+    pub fn new(
+        value: Option<JsValue>,
+        keys: &[&str],
+        example: &str,
+    ) -> Result<Option<Self>, KliError> {
+        let Some(object) = value.filter(|v| !v.is_undefined() && !v.is_null()) else {
+            return Ok(None);
+        };
+        if !object.is_object() || Array::is_array(&object) {
+            let problem = format!("must be an object like {example} (got {})", describe(&object));
+            return Err(KliError::invalid("options", problem));
+        }
+        for key in Object::keys(object.unchecked_ref::<Object>()).iter() {
+            let key = key.as_string().unwrap_or_default();
+            if !keys.iter().any(|k| js_name(k) == key) {
+                let mut problem = format!("has an unknown key \"{key}\"; the keys are ");
+                for (i, k) in keys.iter().enumerate() {
+                    problem.push_str(if i == 0 { "" } else { ", " });
+                    problem.push_str(&js_name(k));
+                }
+                return Err(KliError::invalid("options", problem));
+            }
+        }
+        Ok(Some(Self { object }))
     }
-    let problem = || format!("must be a number (got {})", describe(&value));
-    value.as_f64().map(Some).ok_or_else(|| KliError::invalid(name, problem()))
+
+    fn get(&self, key: &str) -> JsValue {
+        Reflect::get(&self.object, &js_name(key).into()).unwrap_or(JsValue::UNDEFINED)
+    }
+
+    /// A number, or `None` when the key is absent.
+    pub fn number(&self, key: &str) -> Result<Option<f64>, KliError> {
+        let value = self.get(key);
+        if value.is_undefined() {
+            return Ok(None);
+        }
+        let problem = || format!("must be a number (got {})", describe(&value));
+        value.as_f64().map(Some).ok_or_else(|| KliError::invalid(key, problem()))
+    }
+
+    /// A whole number from `0` to `max`, or `None` when the key is absent.
+    pub fn whole(&self, key: &str, max: f64) -> Result<Option<f64>, KliError> {
+        let Some(value) = self.number(key)? else { return Ok(None) };
+        if (0.0..=max).contains(&value) && value.fract() == 0.0 {
+            return Ok(Some(value));
+        }
+        let problem =
+            format!("must be a whole number from 0 to {} (got {})", number(max), number(value));
+        Err(KliError::invalid(key, problem))
+    }
+
+    /// `true` or `false`, or `None` when the key is absent.
+    pub fn boolean(&self, key: &str) -> Result<Option<bool>, KliError> {
+        let value = self.get(key);
+        if value.is_undefined() {
+            return Ok(None);
+        }
+        let problem = || format!("must be true or false (got {})", describe(&value));
+        value.as_bool().map(Some).ok_or_else(|| KliError::invalid(key, problem()))
+    }
+
+    /// A name for the core to parse (a non-string is described, so the core's message names it),
+    /// or `None` when the key is absent.
+    pub fn name(&self, key: &str) -> Option<String> {
+        let value = self.get(key);
+        (!value.is_undefined()).then(|| value.as_string().unwrap_or_else(|| describe(&value)))
+    }
 }

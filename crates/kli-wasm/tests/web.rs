@@ -1,7 +1,7 @@
 //! The JavaScript API under Node (wasm-bindgen-test): the paper's numbers through the boundary,
 //! and every bad input turning into a JavaScript `Error` after which the module still works.
 //! Expected values come from MATH.md or are computed here by an independent formula.
-#![cfg(target_arch = "wasm32")]
+#![cfg(all(target_arch = "wasm32", feature = "api"))]
 
 use js_sys::{Array, Float64Array, Object, Reflect};
 use kli_wasm::{self as api, KliOptionsObject, QuaternionLike, Vector3Like};

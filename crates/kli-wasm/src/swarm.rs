@@ -1,0 +1,176 @@
+//! The `LoheSwarm` class: the many-oscillator Kuramoto–Lohe model on S³ (`kli::swarm`).
+
+use glam::DQuat;
+use js_sys::Float64Array;
+use kli::KliError;
+use kli::quaternion::{from_wxyz, to_wxyz};
+use kli::swarm::{Graph, MAX_COUNT, Swarm, SwarmOptions};
+use wasm_bindgen::prelude::*;
+
+use crate::error::{JsResult, throw};
+use crate::options::Fields;
+use crate::read::{describe, float64_array};
+
+#[wasm_bindgen(typescript_custom_section)]
+const TYPES: &'static str = r#"
+/** Who is coupled to whom in a LoheSwarm: everyone, ring neighbours, or everyone with the first
+ *  `leaders` oscillators pinned. */
+export type Graph = "all" | "ring" | "leader";
+
+/** Options of `new LoheSwarm(options)`; every key is optional and unknown keys are rejected. */
+export interface SwarmOptions {
+  /** N, a whole number from 1 to 1e6. Default 200. */
+  count?: number;
+  /** K: > 0 synchronises, < 0 balances. Finite. Default 1. */
+  coupling?: number;
+  /** Default "all". */
+  graph?: Graph;
+  /** For graph "leader": how many of the first oscillators are pinned, 1 to count. Default 1. */
+  leaders?: number;
+  /** Standard deviation of each component of the natural frequencies w_i. ≥ 0. Default 0. */
+  frequencySpread?: number;
+  /** Absent: a start uniform on S³. A number σ ≥ 0: near the identity, σ radians of spread. */
+  startSpread?: number;
+  /** A whole number from 0 to 2^53 − 1; the same seed gives the same swarm. Default 1. */
+  seed?: number;
+}
+"#;
+
+#[wasm_bindgen]
+extern "C" {
+    /// `{ count, coupling, graph, leaders, frequencySpread, startSpread, seed }`, each optional.
+    #[wasm_bindgen(typescript_type = "SwarmOptions")]
+    pub type SwarmOptionsObject;
+}
+
+/// The fields of [`SwarmOptions`], by their Rust names.
+const KEYS: [&str; 7] =
+    ["count", "coupling", "graph", "leaders", "frequency_spread", "start_spread", "seed"];
+
+/// The largest seed: every whole number below it is exact in a JavaScript number.
+const MAX_SEED: f64 = 9_007_199_254_740_991.0;
+
+fn read_swarm_options(value: Option<SwarmOptionsObject>) -> Result<SwarmOptions, KliError> {
+    let mut options = SwarmOptions::default();
+    let example = "{ count: 500, coupling: 1 }";
+    let Some(fields) = Fields::new(value.map(JsValue::from), &KEYS, example)? else {
+        return Ok(options);
+    };
+    if let Some(v) = fields.whole("count", MAX_COUNT as f64)? {
+        options.count = v as usize;
+    }
+    if let Some(v) = fields.number("coupling")? {
+        options.coupling = v;
+    }
+    if let Some(name) = fields.name("graph") {
+        options.graph = name.parse::<Graph>()?;
+    }
+    if let Some(v) = fields.whole("leaders", MAX_COUNT as f64)? {
+        options.leaders = v as usize;
+    }
+    if let Some(v) = fields.number("frequency_spread")? {
+        options.frequency_spread = v;
+    }
+    if let Some(v) = fields.number("start_spread")? {
+        options.start_spread = Some(v);
+    }
+    if let Some(v) = fields.whole("seed", MAX_SEED)? {
+        options.seed = v as u64;
+    }
+    options.validate()?;
+    Ok(options)
+}
+
+/// N oscillators on S³ under `q_i' = w_i q_i + (K/N) Σ_j a_ij (q_j − (q_i·q_j) q_i)`.
+#[wasm_bindgen(js_name = LoheSwarm)]
+pub struct JsLoheSwarm {
+    swarm: Swarm,
+}
+
+#[wasm_bindgen(js_class = LoheSwarm)]
+impl JsLoheSwarm {
+    /// A swarm from its options (all optional; the same seed gives the same swarm).
+    #[wasm_bindgen(constructor)]
+    pub fn new(options: Option<SwarmOptionsObject>) -> JsResult<JsLoheSwarm> {
+        let options = read_swarm_options(options).map_err(throw)?;
+        Ok(Self { swarm: Swarm::new(&options).map_err(throw)? })
+    }
+
+    /// `steps` (default 1, a whole number up to 1e6) geodesic RK4 steps of `dt` (finite, > 0).
+    pub fn step(&mut self, dt: f64, steps: Option<f64>) -> JsResult<()> {
+        let steps = steps.unwrap_or(1.0);
+        if !((0.0..=1e6).contains(&steps) && steps.fract() == 0.0) {
+            let problem = format!(
+                "must be a whole number from 0 to 1000000 (got {})",
+                describe(&steps.into())
+            );
+            return Err(throw(KliError::invalid("steps", problem)));
+        }
+        self.swarm.step(dt, steps as usize).map_err(throw)
+    }
+
+    /// The time run so far.
+    #[wasm_bindgen(getter)]
+    pub fn time(&self) -> f64 {
+        self.swarm.time()
+    }
+
+    /// N.
+    #[wasm_bindgen(getter)]
+    pub fn count(&self) -> usize {
+        self.swarm.len()
+    }
+
+    /// A copy of the 4N numbers `q_i`, scalar first.
+    #[wasm_bindgen(getter)]
+    pub fn quaternions(&self) -> Float64Array {
+        let flat: Vec<f64> = self.swarm.quaternions().iter().flat_map(|&q| to_wxyz(q)).collect();
+        Float64Array::from(&flat[..])
+    }
+
+    /// Replaces every `q_i` with the 4N numbers of a Float64Array (scalar first; each is
+    /// normalised, none may be all zero).
+    #[wasm_bindgen(js_name = setQuaternions)]
+    pub fn set_quaternions(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array")] values: &JsValue,
+    ) -> JsResult<()> {
+        let values = float64_array("quaternions", values).map_err(throw)?.to_vec();
+        if values.len() != 4 * self.swarm.len() {
+            let problem = format!(
+                "must hold 4 numbers per oscillator: {} (got {})",
+                4 * self.swarm.len(),
+                values.len()
+            );
+            return Err(throw(KliError::invalid("quaternions", problem)));
+        }
+        let quaternions: Vec<DQuat> =
+            values.chunks_exact(4).map(|q| from_wxyz([q[0], q[1], q[2], q[3]])).collect();
+        self.swarm.set_quaternions(&quaternions).map_err(throw)
+    }
+
+    /// `R = |m|`, the length of the mean quaternion, in [0, 1].
+    #[wasm_bindgen(getter, js_name = orderParameter)]
+    pub fn order_parameter(&self) -> f64 {
+        self.swarm.order_parameter()
+    }
+
+    /// `λ_max(Q)`, `Q = (1/N) Σ q qᵀ`: the sign-blind order, in [1/4, 1].
+    #[wasm_bindgen(getter, js_name = rotationOrder)]
+    pub fn rotation_order(&self) -> f64 {
+        self.swarm.rotation_order()
+    }
+
+    /// `(K N/2)|m|²`, which the flow of identical oscillators all-to-all never lowers.
+    #[wasm_bindgen(getter)]
+    pub fn potential(&self) -> f64 {
+        self.swarm.potential()
+    }
+
+    /// The 3N coordinates of each oscillator's Hopf image on S².
+    #[wasm_bindgen(js_name = hopfPoints)]
+    pub fn hopf_points(&self) -> Float64Array {
+        let flat: Vec<f64> = self.swarm.hopf_points().iter().flat_map(|p| p.to_array()).collect();
+        Float64Array::from(&flat[..])
+    }
+}
