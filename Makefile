@@ -116,6 +116,7 @@ test-page: www setup-browser
 bench: pkg www setup-browser
 	cargo bench -p kli-bench --bench core -- --warm-up-time 1 --measurement-time 3
 	node bench/batch.mjs
+	node bench/swarm.mjs
 	node bench/page.mjs
 
 clean:
