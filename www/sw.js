@@ -1,9 +1,9 @@
 // Offline support: every file the page needs is cached when first fetched; the network is tried
 // first so a rebuilt page is never stale, and the cache answers when the server is gone.
-const CACHE = "kli-demo-v2";
+const CACHE = "kli-demo-v3";
 const FILES = [
   "./", "index.html", "style.css", "main.js", "clock.js", "dom.js", "form.js", "input.js", "numbers.js",
-  "presets.js", "summary.js", "url.js", "views.js", "pkg/kli_demo.js", "pkg/kli_demo_bg.wasm",
+  "presets.js", "summary.js", "url.js", "views.js", "swarm.html", "swarm.js", "pkg/kli_demo.js", "pkg/kli_demo_bg.wasm",
 ];
 
 self.addEventListener("install", (event) => {

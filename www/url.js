@@ -18,6 +18,19 @@ export const URL_KEYS = Object.freeze({
   embed: "embed",
 });
 
+/** The swarm page's URL keys (`swarm.html?K=1&n=500&graph=all&w=0.5&spread=0.4&seed=3`): the
+ *  LoheSwarm options by their short keys; `spread` absent means a uniform start. */
+export const SWARM_URL_KEYS = Object.freeze({
+  coupling: "K",
+  count: "n",
+  graph: "graph",
+  leaders: "leaders",
+  frequencySpread: "w",
+  startSpread: "spread",
+  seed: "seed",
+  embed: "embed",
+});
+
 export const INTEGRATORS = /** @type {const} */ (["rk4", "euler", "geodesic"]);
 
 /**

@@ -1,67 +1,11 @@
 // End-to-end tests of the demo page (www/) in Debian's headless Chromium, driven by
 // playwright-core. Screenshots go to test-artifacts/.
-import { test, before, after } from "node:test";
+import { test } from "node:test";
 import assert from "node:assert/strict";
-import { mkdir } from "node:fs/promises";
 import { join } from "node:path";
-import { chromium } from "playwright-core";
-import { readFileSync } from "node:fs";
-import { CHROMIUM, serve } from "../../scripts/static-server.mjs";
+import { artifacts, axeViolations, canvasStats, open, setup } from "./browser.mjs";
 
-const root = new URL("../../", import.meta.url).pathname;
-const artifacts = join(root, "test-artifacts");
-
-let server;
-let origin;
-let browser;
-
-before(async () => {
-  await mkdir(artifacts, { recursive: true });
-  server = await serve(join(root, "www"));
-  origin = server.origin;
-  browser = await chromium.launch(CHROMIUM);
-});
-
-after(async () => {
-  await browser?.close();
-  server?.close();
-});
-
-/** A fresh page that records problems: console errors, page errors, failed or foreign requests. */
-async function open(query = "", options = {}) {
-  const context = await browser.newContext({ viewport: { width: 1280, height: 900 }, deviceScaleFactor: 1, ...options });
-  const page = await context.newPage();
-  const problems = [];
-  page.on("console", (message) => message.type() === "error" && problems.push(`console: ${message.text()}`));
-  page.on("pageerror", (error) => problems.push(`pageerror: ${error.message}`));
-  page.on("requestfailed", (request) => problems.push(`failed: ${request.url()}`));
-  page.on("request", (request) => {
-    if (!request.url().startsWith(origin) && !request.url().startsWith("data:")) problems.push(`foreign request: ${request.url()}`);
-  });
-  page.on("response", (response) => response.status() >= 400 && problems.push(`${response.status()}: ${response.url()}`));
-  await page.goto(`${origin}/${query}`);
-  await page.waitForFunction(() => document.querySelector("#load-status").hidden);
-  return { page, context, problems };
-}
-
-/** Pixel statistics of a canvas: how many are not white, and how many are near a colour. */
-function canvasStats(page, selector, colours = {}) {
-  return page.evaluate(([selector, colours]) => {
-    const canvas = document.querySelector(selector);
-    const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
-    const result = { drawn: 0, width: canvas.width, height: canvas.height, clientWidth: canvas.clientWidth, hash: 0 };
-    for (const name of Object.keys(colours)) result[name] = 0;
-    for (let i = 0; i < data.length; i += 4) {
-      const [r, g, b] = [data[i], data[i + 1], data[i + 2]];
-      if (r < 250 || g < 250 || b < 250) result.drawn++;
-      result.hash = (result.hash * 31 + r + 7 * g + 13 * b) % 1000000007;
-      for (const [name, [cr, cg, cb]] of Object.entries(colours)) {
-        if (Math.abs(r - cr) < 40 && Math.abs(g - cg) < 40 && Math.abs(b - cb) < 40) result[name]++;
-      }
-    }
-    return result;
-  }, [selector, colours]);
-}
+setup();
 
 const KLI_ORANGE = [194, 65, 12]; // crates/kli-demo/src/palette.rs
 const WING_RED = [224, 49, 49];
@@ -481,16 +425,6 @@ test("at 390 px the filmstrip's labels do not overlap and the page fits", async 
   assert.deepEqual(problems, []);
   await context.close();
 });
-
-const AXE = readFileSync(join(root, "node_modules/axe-core/axe.min.js"), "utf8");
-
-/** axe-core's WCAG 2.2 AA violations on the page as it stands. */
-async function axeViolations(page) {
-  await page.addScriptTag({ content: AXE });
-  const result = await page.evaluate(() =>
-    window.axe.run(document, { runOnly: { type: "tag", values: ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa", "wcag22aa"] } }));
-  return result.violations.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(" ")).join(", ")}`);
-}
 
 test("WCAG 2.2 AA: axe finds nothing on the page, with errors showing, and embedded", async () => {
   const { page, context } = await open("?t=1");

@@ -6,7 +6,8 @@
 //!
 //! Plain-Rust geometry and data ([`camera`], [`aircraft`], [`scene`], [`ticks`], [`palette`]) are
 //! apart from the files that draw ([`pen`], [`object_view`], [`sphere_view`], [`plots`]) and the
-//! class itself ([`demo`]).
+//! classes themselves ([`demo`] for the KLI page, [`swarm_demo`] for the swarm page, with
+//! [`swarm_view`] and [`swarm_plots`]).
 
 pub mod aircraft;
 pub mod camera;
@@ -18,6 +19,10 @@ pub mod pen;
 pub mod plots;
 pub mod scene;
 pub mod sphere_view;
+pub mod swarm_demo;
+pub mod swarm_plots;
+pub mod swarm_view;
 pub mod ticks;
 
 pub use demo::Demo;
+pub use swarm_demo::SwarmDemo;

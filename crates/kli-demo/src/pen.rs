@@ -109,6 +109,20 @@ impl<'a> Pen<'a> {
         }
     }
 
+    /// Discs of radius `r` at every point, filled in one path (one call for many points).
+    pub fn dots(&self, points: &[(f64, f64)], r: f64, fill: &str) {
+        if points.is_empty() {
+            return;
+        }
+        self.ctx.begin_path();
+        for &(x, y) in points {
+            self.ctx.move_to(x + r, y);
+            let _ = self.ctx.arc(x, y, r, 0.0, std::f64::consts::TAU);
+        }
+        self.ctx.set_fill_style_str(fill);
+        self.ctx.fill();
+    }
+
     /// A disc shaded as a sphere lit from the upper left.
     pub fn shaded_disc(&self, (x, y): (f64, f64), r: f64, light: &str, dark: &str) {
         if let Ok(gradient) =

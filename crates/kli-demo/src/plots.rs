@@ -8,34 +8,38 @@ use crate::scene::Scene;
 use crate::ticks::{decades, nice_step};
 
 /// A plot frame: data ranges mapped onto a rectangle of the canvas.
-struct Panel {
-    left: f64,
-    top: f64,
-    width: f64,
-    height: f64,
-    x_max: f64,
-    y_min: f64,
-    y_max: f64,
+pub(crate) struct Panel {
+    pub left: f64,
+    pub top: f64,
+    pub width: f64,
+    pub height: f64,
+    pub x_min: f64,
+    pub x_max: f64,
+    pub y_min: f64,
+    pub y_max: f64,
 }
 
 impl Panel {
-    fn at(&self, x: f64, y: f64) -> (f64, f64) {
-        let fx = if self.x_max > 0.0 { x / self.x_max } else { 0.0 };
+    pub fn at(&self, x: f64, y: f64) -> (f64, f64) {
+        let span = self.x_max - self.x_min;
+        let fx = if span > 0.0 { (x - self.x_min) / span } else { 0.0 };
         // max/min rather than clamp: clamp panics on bad bounds, and nothing here may panic.
         let fy = (y.max(self.y_min).min(self.y_max) - self.y_min) / (self.y_max - self.y_min);
         (self.left + fx * self.width, self.top + (1.0 - fy) * self.height)
     }
 
-    fn frame(&self, pen: &Pen, title: &str, y_ticks: &[(f64, String)]) {
+    /// The title, the y ticks given, x ticks at a nice step, the axes, and `x_label` at the end
+    /// of the x axis.
+    pub fn frame_with(&self, pen: &Pen, title: &str, y_ticks: &[(f64, String)], x_label: &str) {
         pen.text(title, (self.left, self.top - 14.0), INK, 12.5, "left");
         for (y, label) in y_ticks {
             let (_, py) = self.at(0.0, *y);
             pen.line((self.left, py), (self.left + self.width, py), GRID, 1.0, &[]);
             pen.text(label, (self.left - 5.0, py), MUTED, 10.5, "right");
         }
-        let step = nice_step(self.x_max);
-        let mut x = 0.0;
-        while x <= self.x_max * (1.0 + 1e-9) && step > 0.0 {
+        let step = nice_step(self.x_max - self.x_min);
+        let mut x = if step > 0.0 { (self.x_min / step).ceil() * step } else { self.x_max + 1.0 };
+        while x <= self.x_max + 1e-9 * (self.x_max - self.x_min).abs() && step > 0.0 {
             let (px, py) = self.at(x, self.y_min);
             pen.line((px, py), (px, py + 4.0), MUTED, 1.0, &[]);
             pen.text(&trim(x), (px, py + 12.0), MUTED, 10.5, "center");
@@ -49,16 +53,15 @@ impl Panel {
             &[],
         );
         pen.line((self.left, self.top), (self.left, self.top + self.height), MUTED, 1.0, &[]);
-        pen.text(
-            "t",
-            (self.left + self.width + 8.0, self.top + self.height),
-            MUTED,
-            11.0,
-            "center",
-        );
+        let end = (self.left + self.width + 8.0, self.top + self.height);
+        pen.text(x_label, end, MUTED, 11.0, "center");
     }
 
-    fn series(
+    fn frame(&self, pen: &Pen, title: &str, y_ticks: &[(f64, String)]) {
+        self.frame_with(pen, title, y_ticks, "t");
+    }
+
+    pub fn series(
         &self,
         pen: &Pen,
         xs: &[f64],
@@ -73,7 +76,7 @@ impl Panel {
 }
 
 /// A tick label: at most two decimals, trailing zeros dropped.
-fn trim(x: f64) -> String {
+pub(crate) fn trim(x: f64) -> String {
     let text = fixed(x, 2);
     text.trim_end_matches('0').trim_end_matches('.').to_string()
 }
@@ -106,7 +109,7 @@ pub fn draw_plots(pen: &Pen, width: f64, height: f64, scene: &Scene) {
     let x_max = time_axis_end(scene);
     let cell = |i: usize, y_min: f64, y_max: f64| {
         let (left, top, width, height) = plot_area(i, width, height);
-        Panel { left, top, width, height, x_max, y_min, y_max }
+        Panel { left, top, width, height, x_min: 0.0, x_max, y_min, y_max }
     };
     draw_distance(pen, scene, |low| cell(0, low, 0.5));
     draw_warp(pen, scene, &cell(1, 0.0, 1.0));

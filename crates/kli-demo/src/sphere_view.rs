@@ -18,7 +18,7 @@ pub fn sphere_camera() -> Camera {
 
 /// Which half of the sphere a pass draws.
 #[derive(Clone, Copy, PartialEq)]
-enum Side {
+pub(crate) enum Side {
     Back,
     Front,
 }
@@ -27,23 +27,23 @@ enum Side {
 type Stroke<'a> = (&'a str, f64, &'a [f64]);
 
 /// The sphere as seen: where a point of S² lands on the canvas, and which side it is on.
-struct View<'a> {
-    pen: &'a Pen<'a>,
-    viewport: &'a Viewport,
-    camera: &'a Camera,
+pub(crate) struct View<'a> {
+    pub pen: &'a Pen<'a>,
+    pub viewport: &'a Viewport,
+    pub camera: &'a Camera,
 }
 
 impl View<'_> {
-    fn at(&self, p: DVec3) -> (f64, f64) {
+    pub fn at(&self, p: DVec3) -> (f64, f64) {
         self.viewport.pixel(self.camera.project(p))
     }
 
-    fn in_front(&self, p: DVec3) -> bool {
+    pub fn in_front(&self, p: DVec3) -> bool {
         self.camera.project(p).depth >= 0.0
     }
 
     /// Draws the runs of `points` that lie on `side`.
-    fn polyline_on(&self, points: &[DVec3], side: Side, (color, width, dash): Stroke) {
+    pub fn polyline_on(&self, points: &[DVec3], side: Side, (color, width, dash): Stroke) {
         let mut run: Vec<(f64, f64)> = Vec::new();
         for &p in points {
             let projected = self.camera.project(p);
@@ -67,7 +67,7 @@ fn circle(f: impl Fn(f64) -> DVec3) -> Vec<DVec3> {
 }
 
 /// The grid: latitudes every 30° and meridians every 30°.
-fn grid() -> Vec<Vec<DVec3>> {
+pub(crate) fn grid() -> Vec<Vec<DVec3>> {
     let mut lines = Vec::new();
     for lat in [-60.0_f64, -30.0, 0.0, 30.0, 60.0] {
         let (s, c) = lat.to_radians().sin_cos();
@@ -92,26 +92,16 @@ pub fn draw_sphere(pen: &Pen, viewport: &Viewport, camera: &Camera, scene: &Scen
     draw_ends(&view, scene);
 }
 
-fn draw_back(view: &View, grid: &[Vec<DVec3>], scene: &Scene) {
+/// The half of the grid behind the sphere, faint (alpha left at 0.35 for what follows).
+pub(crate) fn draw_grid_back(view: &View, grid: &[Vec<DVec3>]) {
     view.pen.alpha(0.35);
     for line in grid {
         view.polyline_on(line, Side::Back, (GRID, 1.0, &[]));
     }
-    view.polyline_on(scene.slerp_curve(), Side::Back, SLERP_STROKE);
-    view.polyline_on(scene.kli_curve(), Side::Back, (KLI, 3.0, &[]));
-    view.pen.alpha(1.0);
 }
 
-/// The sphere itself, translucent enough to show what lies behind.
-fn draw_globe(view: &View) {
-    let centre = view.at(DVec3::ZERO);
-    view.pen.alpha(0.82);
-    view.pen.shaded_disc(centre, view.viewport.scale, "#ffffff", "#bac8d3");
-    view.pen.alpha(1.0);
-    view.pen.disc(centre, view.viewport.scale, None, Some(("#adb5bd", 1.0)));
-}
-
-fn draw_front(view: &View, grid: &[Vec<DVec3>], scene: &Scene) {
+/// The half of the grid in front and the axes x, y, z, labelled.
+pub(crate) fn draw_grid_front(view: &View, grid: &[Vec<DVec3>]) {
     for line in grid {
         view.polyline_on(line, Side::Front, ("#c3ccd5", 1.0, &[]));
     }
@@ -123,6 +113,26 @@ fn draw_front(view: &View, grid: &[Vec<DVec3>], scene: &Scene) {
         view.pen.text(label, view.at(axis * 1.2), color, 13.0, "center");
     }
     view.pen.alpha(1.0);
+}
+
+fn draw_back(view: &View, grid: &[Vec<DVec3>], scene: &Scene) {
+    draw_grid_back(view, grid);
+    view.polyline_on(scene.slerp_curve(), Side::Back, SLERP_STROKE);
+    view.polyline_on(scene.kli_curve(), Side::Back, (KLI, 3.0, &[]));
+    view.pen.alpha(1.0);
+}
+
+/// The sphere itself, translucent enough to show what lies behind.
+pub(crate) fn draw_globe(view: &View) {
+    let centre = view.at(DVec3::ZERO);
+    view.pen.alpha(0.82);
+    view.pen.shaded_disc(centre, view.viewport.scale, "#ffffff", "#bac8d3");
+    view.pen.alpha(1.0);
+    view.pen.disc(centre, view.viewport.scale, None, Some(("#adb5bd", 1.0)));
+}
+
+fn draw_front(view: &View, grid: &[Vec<DVec3>], scene: &Scene) {
+    draw_grid_front(view, grid);
     view.polyline_on(scene.kli_curve(), Side::Front, (KLI, 3.5, &[]));
     view.polyline_on(scene.slerp_curve(), Side::Front, SLERP_STROKE);
 }

@@ -50,7 +50,8 @@ const KEYS: [&str; 7] =
 /// The largest seed: every whole number below it is exact in a JavaScript number.
 const MAX_SEED: f64 = 9_007_199_254_740_991.0;
 
-fn read_swarm_options(value: Option<SwarmOptionsObject>) -> Result<SwarmOptions, KliError> {
+/// Reads the options object of `new LoheSwarm(options)` into checked [`SwarmOptions`].
+pub fn read_swarm_options(value: Option<SwarmOptionsObject>) -> Result<SwarmOptions, KliError> {
     let mut options = SwarmOptions::default();
     let example = "{ count: 500, coupling: 1 }";
     let Some(fields) = Fields::new(value.map(JsValue::from), &KEYS, example)? else {

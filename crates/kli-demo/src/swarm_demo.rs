@@ -1,0 +1,202 @@
+//! The `SwarmDemo` class: the swarm page's run, a [`Swarm`] with its history, drawing its views
+//! onto canvas contexts the page passes in.
+
+use kli::KliError;
+use kli::swarm::{Graph, Swarm, SwarmOptions};
+use kli_wasm::error::{JsResult, throw};
+use kli_wasm::swarm::{SwarmOptionsObject, read_swarm_options};
+use wasm_bindgen::prelude::*;
+use web_sys::CanvasRenderingContext2d;
+
+use crate::aircraft::{Face, aircraft};
+use crate::camera::{Camera, Viewport};
+use crate::format::fixed;
+use crate::palette::BACKGROUND;
+use crate::pen::Pen;
+use crate::swarm_plots::{History, draw_history, draw_sweep};
+use crate::swarm_view::{draw_swarm_objects, draw_swarm_sphere};
+
+/// How many oscillators the page draws as whole objects.
+const OBJECTS: usize = 3;
+
+/// The swarm behind the swarm page, and its views.
+#[wasm_bindgen]
+pub struct SwarmDemo {
+    swarm: Swarm,
+    options: SwarmOptions,
+    history: History,
+    mesh: Vec<Face>,
+}
+
+fn whole_steps(steps: f64) -> Result<usize, KliError> {
+    if (0.0..=1e6).contains(&steps) && steps.fract() == 0.0 {
+        Ok(steps as usize)
+    } else {
+        Err(KliError::invalid("steps", "must be a whole number from 0 to 1000000".to_owned()))
+    }
+}
+
+#[wasm_bindgen]
+impl SwarmDemo {
+    /// A swarm from the options of `new LoheSwarm(options)`, with the same checks and errors.
+    #[wasm_bindgen(constructor)]
+    pub fn new(options: Option<SwarmOptionsObject>) -> JsResult<SwarmDemo> {
+        let options = read_swarm_options(options).map_err(throw)?;
+        let swarm = Swarm::new(&options).map_err(throw)?;
+        let mut demo = SwarmDemo { swarm, options, history: History::default(), mesh: aircraft() };
+        demo.record();
+        Ok(demo)
+    }
+
+    fn record(&mut self) {
+        let s = &self.swarm;
+        self.history.push(s.time(), s.order_parameter(), s.rotation_order(), s.potential());
+    }
+
+    /// `steps` geodesic RK4 steps of `dt`, then one sample of the history.
+    pub fn step(&mut self, dt: f64, steps: f64) -> JsResult<()> {
+        let steps = whole_steps(steps).map_err(throw)?;
+        self.swarm.step(dt, steps).map_err(throw)?;
+        self.record();
+        Ok(())
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn time(&self) -> f64 {
+        self.swarm.time()
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn count(&self) -> usize {
+        self.swarm.len()
+    }
+
+    #[wasm_bindgen(getter, js_name = orderParameter)]
+    pub fn order_parameter(&self) -> f64 {
+        self.swarm.order_parameter()
+    }
+
+    #[wasm_bindgen(getter, js_name = rotationOrder)]
+    pub fn rotation_order(&self) -> f64 {
+        self.swarm.rotation_order()
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn potential(&self) -> f64 {
+        self.swarm.potential()
+    }
+
+    /// Whether this is KLI: one pinned leader and one follower (MATH.md, "The swarm").
+    #[wasm_bindgen(getter, js_name = isKli)]
+    pub fn is_kli(&self) -> bool {
+        self.options.graph == Graph::Leader && self.swarm.len() == 2 && self.options.leaders == 1
+    }
+
+    /// The follower's KLI clock `τ = K t / 2` (meaningful when `isKli`).
+    #[wasm_bindgen(getter, js_name = kliTime)]
+    pub fn kli_time(&self) -> f64 {
+        0.5 * self.options.coupling * self.swarm.time()
+    }
+
+    /// The oscillators' Hopf points on S², seen from (azimuth, elevation) in radians.
+    #[wasm_bindgen(js_name = drawSphere)]
+    pub fn draw_sphere(
+        &self,
+        ctx: &CanvasRenderingContext2d,
+        width: f64,
+        height: f64,
+        pixel_ratio: f64,
+        azimuth: f64,
+        elevation: f64,
+    ) {
+        let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
+        let viewport = Viewport::fitting(0.0, 0.0, width, height, 1.22);
+        draw_swarm_sphere(
+            &pen,
+            &viewport,
+            &Camera::orbit(azimuth, elevation),
+            &self.swarm.hopf_points(),
+        );
+        pen.text(
+            &format!("t = {}", fixed(self.swarm.time(), 2)),
+            (8.0, 12.0),
+            crate::palette::MUTED,
+            12.0,
+            "left",
+        );
+    }
+
+    /// The first oscillators as whole objects; in the KLI case, the leader and the follower.
+    #[wasm_bindgen(js_name = drawObjects)]
+    pub fn draw_objects(
+        &self,
+        ctx: &CanvasRenderingContext2d,
+        width: f64,
+        height: f64,
+        pixel_ratio: f64,
+    ) {
+        let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
+        let q = self.swarm.quaternions();
+        let objects: Vec<_> = if self.is_kli() {
+            let clock = format!("follower: KLI at τ = Kt/2 = {}", fixed(self.kli_time(), 2));
+            vec![(q[0], "leader r (pinned)".to_owned()), (q[1], clock)]
+        } else {
+            q.iter()
+                .take(OBJECTS)
+                .enumerate()
+                .map(|(i, &q)| (q, format!("oscillator {}", i + 1)))
+                .collect()
+        };
+        draw_swarm_objects(&pen, width, height, &self.mesh, &objects);
+    }
+
+    /// `R(t)`, `λ_max(t)` and the potential over the recent history.
+    #[wasm_bindgen(js_name = drawPlots)]
+    pub fn draw_plots(
+        &self,
+        ctx: &CanvasRenderingContext2d,
+        width: f64,
+        height: f64,
+        pixel_ratio: f64,
+    ) {
+        let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
+        draw_history(&pen, width, height, &self.history);
+    }
+
+    /// The order parameter a swarm with these options but coupling `coupling` reaches: `R`
+    /// averaged over the last fifth of a run to `time` (steps of 0.05). One point of the sweep.
+    #[wasm_bindgen(js_name = sweepOrder)]
+    pub fn sweep_order(
+        options: Option<SwarmOptionsObject>,
+        coupling: f64,
+        time: f64,
+    ) -> JsResult<f64> {
+        let options = SwarmOptions { coupling, ..read_swarm_options(options).map_err(throw)? };
+        let mut swarm = Swarm::new(&options).map_err(throw)?;
+        let steps = whole_steps((time / 0.05).round()).map_err(throw)?;
+        let settle = steps - steps / 5;
+        swarm.step(0.05, settle).map_err(throw)?;
+        let mut sum = 0.0;
+        for _ in settle..steps {
+            swarm.step(0.05, 1).map_err(throw)?;
+            sum += swarm.order_parameter();
+        }
+        Ok(if steps > settle { sum / (steps - settle) as f64 } else { swarm.order_parameter() })
+    }
+
+    /// The sweep so far: final `R` at each coupling, and the current coupling marked.
+    #[wasm_bindgen(js_name = drawSweep)]
+    #[allow(clippy::too_many_arguments)]
+    pub fn draw_sweep(
+        ctx: &CanvasRenderingContext2d,
+        width: f64,
+        height: f64,
+        pixel_ratio: f64,
+        couplings: &[f64],
+        orders: &[f64],
+        current: f64,
+    ) {
+        let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
+        draw_sweep(&pen, width, height, couplings, orders, current);
+    }
+}

@@ -1,0 +1,307 @@
+// @ts-check
+// The swarm page, wiring only: the form and the URL to the module's SwarmDemo, the animation,
+// the canvases and the sweep. The model, its checks and all drawing are the module's
+// (crates/kli-demo/src/swarm_demo.rs).
+import init, { SwarmDemo, Demo } from "./pkg/kli_demo.js";
+import { $ } from "./dom.js";
+import { wireDragging, wireKeyboard } from "./input.js";
+import { parseNumber } from "./numbers.js";
+import { SWARM_URL_KEYS as KEYS, throttledUrl } from "./url.js";
+
+/** @typedef {import("./pkg/kli_demo.js").SwarmOptions} SwarmOptions */
+/** @typedef {Required<Omit<SwarmOptions, "startSpread">> & { startSpread?: number }} SwarmState */
+
+/** @type {Record<string, SwarmState>} */
+const PRESETS = {
+  synchronise: { coupling: 1, count: 500, graph: "all", leaders: 1, frequencySpread: 0, seed: 1 },
+  balance: { coupling: -1, count: 500, graph: "all", leaders: 1, frequencySpread: 0, seed: 1 },
+  frequencies: { coupling: 2, count: 500, graph: "all", leaders: 1, frequencySpread: 1, seed: 1 },
+  kli: { coupling: 2, count: 2, graph: "leader", leaders: 1, frequencySpread: 0, startSpread: 1.5, seed: 3 },
+};
+const DT = 0.02;
+const STEPS_PER_FRAME = 2;
+const SWEEP = Array.from({ length: 19 }, (_, i) => -1 + i / 2);
+
+const form = $("#swarm-inputs", HTMLFormElement);
+const field = (/** @type {string} */ name) => {
+  const element = form.elements.namedItem(name);
+  if (!(element instanceof HTMLInputElement || element instanceof HTMLSelectElement)) throw new Error(`no field ${name}`);
+  return element;
+};
+const canvases = {
+  sphere: $("#swarm-sphere", HTMLCanvasElement),
+  objects: $("#swarm-objects", HTMLCanvasElement),
+  plots: $("#swarm-plots", HTMLCanvasElement),
+  sweep: $("#swarm-sweep", HTMLCanvasElement),
+};
+const ui = {
+  play: $("#play", HTMLButtonElement),
+  readout: $("#readout", HTMLOutputElement),
+  status: $("#status", HTMLElement),
+  note: $("#note", HTMLElement),
+  share: $("#share", HTMLAnchorElement),
+  load: $("#load-status", HTMLElement),
+  sweepStatus: $("#sweep-status", HTMLOutputElement),
+};
+const query = new URLSearchParams(location.search);
+const embed = query.get(KEYS.embed) === "1";
+const writeUrl = throttledUrl(400, (search) => (ui.share.href = search));
+
+/** The page's run: the module's SwarmDemo, the state it was built from, the view, the sweep. */
+const run = {
+  demo: /** @type {SwarmDemo | null} */ (null),
+  state: /** @type {SwarmState} */ (PRESETS.synchronise),
+  playing: false,
+  view: [0, 0],
+  sweep: { couplings: /** @type {number[]} */ ([]), orders: /** @type {number[]} */ ([]), timer: 0 },
+  sizes: /** @type {Record<string, { width: number, height: number }>} */ ({}),
+};
+
+// ---- State: form, URL -----------------------------------------------------------------------
+
+/** The form as a state; numbers only turned from text (the module checks them). */
+function readForm() {
+  const number = (/** @type {string} */ name) => parseNumber(field(name).value);
+  /** @type {SwarmState} */
+  const state = {
+    coupling: number("coupling"),
+    count: number("count"),
+    graph: /** @type {SwarmState["graph"]} */ (field("graph").value),
+    leaders: number("leaders"),
+    frequencySpread: number("frequencySpread"),
+    seed: number("seed"),
+  };
+  if (!(/** @type {HTMLInputElement} */ (field("uniform")).checked)) state.startSpread = number("startSpread");
+  return state;
+}
+
+function fillForm(/** @type {SwarmState} */ state) {
+  for (const name of /** @type {const} */ (["coupling", "count", "graph", "leaders", "frequencySpread", "seed"])) {
+    field(name).value = String(state[name]);
+  }
+  /** @type {HTMLInputElement} */ (field("uniform")).checked = state.startSpread === undefined;
+  field("startSpread").value = String(state.startSpread ?? 0.5);
+  showValues();
+}
+
+/** The sliders' values beside them. */
+function showValues() {
+  for (const name of ["coupling", "count", "frequencySpread", "startSpread"]) {
+    $(`#${name}-value`, HTMLOutputElement).textContent = field(name).value;
+  }
+  field("startSpread").disabled = /** @type {HTMLInputElement} */ (field("uniform")).checked;
+}
+
+/** The URL's state over a preset; values are read as numbers or one of three words only. */
+function stateFromUrl() {
+  const state = { ...PRESETS.synchronise };
+  const number = (/** @type {keyof typeof KEYS} */ key) => (query.has(KEYS[key]) ? parseNumber(query.get(KEYS[key]) ?? "") : undefined);
+  for (const key of /** @type {const} */ (["coupling", "count", "leaders", "frequencySpread", "seed"])) {
+    const value = number(key);
+    if (value !== undefined) state[key] = value;
+  }
+  const graph = query.get(KEYS.graph);
+  if (graph === "all" || graph === "ring" || graph === "leader") state.graph = graph;
+  const spread = number("startSpread");
+  if (spread !== undefined) state.startSpread = spread;
+  return state;
+}
+
+function urlOf(/** @type {SwarmState} */ state) {
+  const search = new URLSearchParams();
+  for (const key of /** @type {const} */ (["coupling", "count", "graph", "leaders", "frequencySpread", "seed"])) {
+    search.set(KEYS[key], String(state[key]));
+  }
+  if (state.startSpread !== undefined) search.set(KEYS.startSpread, String(state.startSpread));
+  if (embed) search.set(KEYS.embed, "1");
+  return "?" + search.toString();
+}
+
+// ---- Runs -----------------------------------------------------------------------------------
+
+/** Builds the swarm for `state`; on an Error, shows it beside its field and keeps the run. */
+function rebuild(/** @type {SwarmState} */ state) {
+  let demo;
+  try {
+    demo = new SwarmDemo(state);
+  } catch (error) {
+    showError(error);
+    return false;
+  }
+  for (const output of form.querySelectorAll(".field-error")) output.textContent = "";
+  for (const marked of form.querySelectorAll("[aria-invalid=true]")) marked.setAttribute("aria-invalid", "false");
+  run.demo?.free();
+  run.demo = demo;
+  run.state = state;
+  const preset = Object.entries(PRESETS).find(([, p]) => JSON.stringify(p) === JSON.stringify(state));
+  field("preset").value = preset ? preset[0] : "custom";
+  ui.note.textContent = demo.isKli
+    ? "One pinned leader and one follower: the follower obeys q′ = (K/2)(r − (q·r) q), the KLI flow at the clock τ = Kt/2."
+    : "";
+  writeUrl(urlOf(state));
+  draw();
+  return true;
+}
+
+function showError(/** @type {unknown} */ error) {
+  const { argument, message } = /** @type {{ argument?: string, message?: string }} */ (error ?? {});
+  const name = argument === "options" || !argument ? "coupling" : argument;
+  const box = form.querySelector(`#${name}-error`);
+  if (box) box.textContent = String(message ?? error);
+  form.querySelector(`[name=${name}]`)?.setAttribute("aria-invalid", "true");
+}
+
+// ---- Frames ---------------------------------------------------------------------------------
+
+let pending = false;
+function requestDraw() {
+  if (pending) return;
+  pending = true;
+  requestAnimationFrame(() => {
+    pending = false;
+    if (run.playing && run.demo) run.demo.step(DT, STEPS_PER_FRAME);
+    draw();
+    if (run.playing) requestDraw();
+  });
+}
+
+function draw() {
+  const demo = run.demo;
+  if (!demo) return;
+  const ratio = devicePixelRatio || 1;
+  const size = (/** @type {keyof typeof canvases} */ name) => run.sizes[name];
+  const ctx = (/** @type {keyof typeof canvases} */ name) => /** @type {CanvasRenderingContext2D} */ (canvases[name].getContext("2d"));
+  if (size("sphere")) demo.drawSphere(ctx("sphere"), size("sphere").width, size("sphere").height, ratio, run.view[0], run.view[1]);
+  if (size("objects")) demo.drawObjects(ctx("objects"), size("objects").width, size("objects").height, ratio);
+  if (size("plots")) demo.drawPlots(ctx("plots"), size("plots").width, size("plots").height, ratio);
+  ui.readout.textContent = `t = ${demo.time.toFixed(2)}   R = ${demo.orderParameter.toFixed(3)}   λmax = ${demo.rotationOrder.toFixed(3)}` +
+    (demo.isKli ? `   τ = Kt/2 = ${demo.kliTime.toFixed(2)}` : "");
+  if (!run.playing) ui.status.textContent = ui.readout.textContent ?? "";
+  drawSweep();
+}
+
+function drawSweep() {
+  const size = run.sizes.sweep;
+  const ctx = canvases.sweep.getContext("2d");
+  if (!size || !ctx) return;
+  SwarmDemo.drawSweep(ctx, size.width, size.height, devicePixelRatio || 1,
+    new Float64Array(run.sweep.couplings), new Float64Array(run.sweep.orders), run.state.coupling);
+}
+
+/** One sweep point per task, so the page stays responsive. */
+function sweep() {
+  clearTimeout(run.sweep.timer);
+  run.sweep.couplings = [];
+  run.sweep.orders = [];
+  const table = $("#sweep-table tbody", HTMLTableSectionElement);
+  table.replaceChildren();
+  const options = { ...run.state, count: Math.min(run.state.count, 200) };
+  const next = (/** @type {number} */ i) => {
+    if (i === SWEEP.length) {
+      ui.sweepStatus.textContent = `Done: R at t = 30 for ${SWEEP.length} couplings.`;
+      return;
+    }
+    run.sweep.couplings.push(SWEEP[i]);
+    run.sweep.orders.push(SwarmDemo.sweepOrder(options, SWEEP[i], 30));
+    const row = table.insertRow();
+    row.insertCell().textContent = String(Number(SWEEP[i].toFixed(4)));
+    row.insertCell().textContent = run.sweep.orders[i].toFixed(3);
+    ui.sweepStatus.textContent = `Sweeping: ${i + 1} of ${SWEEP.length}`;
+    drawSweep();
+    run.sweep.timer = setTimeout(() => next(i + 1));
+  };
+  next(0);
+}
+
+function play() {
+  run.playing = true;
+  ui.play.textContent = "Pause";
+  requestDraw();
+}
+
+function pause() {
+  run.playing = false;
+  ui.play.textContent = "Play";
+  draw();
+}
+
+// ---- Start ----------------------------------------------------------------------------------
+
+function observeSizes() {
+  const observer = new ResizeObserver((entries) => {
+    const ratio = devicePixelRatio || 1;
+    for (const entry of entries) {
+      const name = Object.keys(canvases).find((key) => canvases[/** @type {keyof typeof canvases} */ (key)] === entry.target);
+      if (!name) continue;
+      const { width, height } = entry.contentRect;
+      run.sizes[name] = { width, height };
+      const canvas = /** @type {HTMLCanvasElement} */ (entry.target);
+      canvas.width = Math.max(1, Math.round(width * ratio));
+      canvas.height = Math.max(1, Math.round(height * ratio));
+    }
+    draw();
+  });
+  for (const canvas of Object.values(canvases)) observer.observe(canvas);
+}
+
+function wire() {
+  form.addEventListener("submit", (event) => event.preventDefault());
+  form.addEventListener("input", (event) => {
+    const name = /** @type {HTMLInputElement} */ (event.target).name;
+    showValues();
+    if (name === "preset") {
+      const preset = PRESETS[field("preset").value];
+      if (preset) fillForm(preset);
+      if (preset) rebuild(preset);
+      return;
+    }
+    rebuild(readForm());
+  });
+  ui.play.addEventListener("click", () => (run.playing ? pause() : play()));
+  $("#step", HTMLButtonElement).addEventListener("click", () => {
+    pause();
+    run.demo?.step(DT, 10);
+    draw();
+  });
+  $("#reseed", HTMLButtonElement).addEventListener("click", () => {
+    field("seed").value = String((run.state.seed + 1) % 1e9);
+    rebuild(readForm());
+  });
+  $("#sweep", HTMLButtonElement).addEventListener("click", sweep);
+  const turn = (/** @type {number} */ azimuth, /** @type {number} */ elevation) => {
+    run.view[0] += azimuth;
+    run.view[1] = Math.min(Math.max(run.view[1] + elevation, -1.55), 1.55);
+    if (!run.playing) draw();
+  };
+  wireDragging(canvases.sphere, turn);
+  wireKeyboard(canvases.sphere, {
+    togglePlay: () => (run.playing ? pause() : play()),
+    step: () => {},
+    toStart: () => rebuild(run.state),
+    toEnd: () => {},
+    speed: () => {},
+    turn,
+  });
+}
+
+async function start() {
+  try {
+    await init();
+  } catch (error) {
+    ui.load.textContent = `The WebAssembly module could not be loaded: ${error instanceof Error ? error.message : error}`;
+    ui.load.classList.add("error");
+    return;
+  }
+  if (embed) document.body.classList.add("embed");
+  run.view = Array.from(Demo.defaultSphereView());
+  wire();
+  const state = stateFromUrl();
+  fillForm(state);
+  if (!rebuild(state)) rebuild(PRESETS.synchronise);
+  ui.load.textContent = "";
+  ui.load.hidden = true;
+  observeSizes();
+  if (!matchMedia("(prefers-reduced-motion: reduce)").matches) play();
+}
+
+start();
