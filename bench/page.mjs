@@ -65,6 +65,27 @@ try {
   const perFrame = ((script1 - script0) * 1000) / (frames1 - frames0);
   console.log(`script per animation frame: ${perFrame.toFixed(2)} ms over ${frames1 - frames0} frames (${playing ? "playing" : "NOT playing"}; target ≤ 2 ms)`);
   await context.close();
+
+  // The swarm page with 2,000 oscillators all-to-all, playing (two steps a frame).
+  const swarmContext = await browser.newContext({ viewport: { width: 1280, height: 900 } });
+  const swarmPage = await swarmContext.newPage();
+  const swarmCdp = await swarmContext.newCDPSession(swarmPage);
+  await swarmCdp.send("Performance.enable");
+  await swarmPage.goto(`${www.origin}/swarm.html?K=1&n=2000&graph=all&w=0.5&seed=1`);
+  await swarmPage.waitForFunction(() => document.querySelector("#load-status").hidden);
+  await swarmPage.evaluate(() => {
+    window.__frames = 0;
+    const count = () => { window.__frames++; requestAnimationFrame(count); };
+    requestAnimationFrame(count);
+  });
+  const swarmMetric = async () => (await swarmCdp.send("Performance.getMetrics")).metrics.find((m) => m.name === "ScriptDuration").value;
+  await swarmPage.waitForTimeout(500);
+  const [s0, f0] = [await swarmMetric(), await swarmPage.evaluate(() => window.__frames)];
+  await swarmPage.waitForTimeout(3000);
+  const [s1, f1] = [await swarmMetric(), await swarmPage.evaluate(() => window.__frames)];
+  const swarmPlaying = (await swarmPage.textContent("#play")) === "Pause";
+  console.log(`swarm page, 2,000 oscillators: ${(((s1 - s0) * 1000) / (f1 - f0)).toFixed(2)} ms of script per frame over ${f1 - f0} frames (${swarmPlaying ? "playing" : "NOT playing"}; target ≤ 4 ms)`);
+  await swarmContext.close();
 } finally {
   await browser.close();
   www.close();

@@ -129,14 +129,18 @@ impl JsLoheSwarm {
         Float64Array::from(&flat[..])
     }
 
-    /// Replaces every `q_i` with the 4N numbers of a Float64Array (scalar first; each is
-    /// normalised, none may be all zero).
+    /// Replaces every `q_i` with 4N numbers, a Float64Array or an array (scalar first; each is
+    /// normalised, none may be all zero). The time is kept.
     #[wasm_bindgen(js_name = setQuaternions)]
     pub fn set_quaternions(
         &mut self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array")] values: &JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | ArrayLike<number>")] values: &JsValue,
     ) -> JsResult<()> {
-        let values = float64_array("quaternions", values).map_err(throw)?.to_vec();
+        let values = match float64_array("quaternions", values) {
+            Ok(array) => array.to_vec(),
+            Err(_) if values.is_object() => Float64Array::new(values).to_vec(),
+            Err(e) => return Err(throw(e)),
+        };
         if values.len() != 4 * self.swarm.len() {
             let problem = format!(
                 "must hold 4 numbers per oscillator: {} (got {})",

@@ -53,7 +53,10 @@ fn a_pinned_leader_pulls_one_follower_as_kli_does() {
     let mut swarm = LoheSwarm::new(o).unwrap();
     let (r, p) = ([0.5, 0.5, 0.5, 0.5], [0.0, 0.0, 0.0, 1.0]);
     let start: Vec<f64> = r.iter().chain(&p).copied().collect();
-    swarm.set_quaternions(&Float64Array::from(&start[..]).into()).unwrap();
+    // A plain array works as a Float64Array does.
+    let plain: js_sys::Array = start.iter().map(|&c| JsValue::from(c)).collect();
+    swarm.set_quaternions(&plain.into()).unwrap();
+    assert_eq!(swarm.quaternions().to_vec(), start);
     swarm.step(0.005, Some(240.0)).unwrap();
     let q = swarm.quaternions().to_vec();
     assert_eq!(&q[..4], &r, "the leader stays");
@@ -105,6 +108,7 @@ fn bad_options_and_arguments_name_themselves() {
     assert_eq!(refused(swarm.step(0.1, Some(-1.0))).0, "steps");
     let short = Float64Array::from(&[1.0, 0.0, 0.0, 0.0][..]);
     assert_eq!(refused(swarm.set_quaternions(&short.into())).0, "quaternions");
+    assert_eq!(refused(swarm.set_quaternions(&"1,0,0,0".into())).0, "quaternions");
     let zero = Float64Array::from(&[1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0][..]);
     assert_eq!(refused(swarm.set_quaternions(&zero.into())).0, "quaternions[1]");
     // Still working after every refusal.
