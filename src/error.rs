@@ -25,6 +25,8 @@ pub enum Requirement {
     NonNegative,
     /// Finite with `|x| ≤` the bound.
     AtMost(f64),
+    /// Finite, from the first bound to the second.
+    Between(f64, f64),
 }
 
 /// The shape of a vector argument, for messages about its components.
@@ -164,6 +166,9 @@ impl KliError {
                     Requirement::AtMost(bound) => {
                         format!("a finite number from -{} to {}", n(*bound), n(*bound))
                     }
+                    Requirement::Between(low, high) => {
+                        format!("a finite number from {} to {}", n(*low), n(*high))
+                    }
                 };
                 format!("{arg} must be {requirement} (got {})", n(*value))
             }
@@ -275,6 +280,7 @@ pub(crate) fn require(
             Requirement::Positive => value > 0.0,
             Requirement::NonNegative => value >= 0.0,
             Requirement::AtMost(bound) => value.abs() <= bound,
+            Requirement::Between(low, high) => (low..=high).contains(&value),
         };
     if ok {
         Ok(value)

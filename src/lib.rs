@@ -48,6 +48,7 @@ mod lanes;
 pub mod model;
 pub mod quaternion;
 pub mod slerp;
+pub mod spline;
 pub mod swarm;
 mod trig;
 

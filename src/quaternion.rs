@@ -2,7 +2,7 @@
 //! `[w, x, y, z]`; glam stores `(x, y, z, w)`. This is the one place that converts between them,
 //! and the one place that turns user input into a unit quaternion.
 
-use glam::DQuat;
+use glam::{DQuat, DVec3};
 
 use crate::error::{ErrorKind, KliError, Shape};
 
@@ -59,6 +59,33 @@ pub fn norm(q: DQuat) -> f64 {
         return largest;
     }
     largest * (q / largest).length()
+}
+
+/// `exp(v) = cos|v| + sin|v| v/|v|` of a pure quaternion `v` (given as its vector part): the
+/// point of S³ at angle `|v|` from 1 in the direction `v`.
+pub fn exp(v: DVec3) -> DQuat {
+    let angle = v.length();
+    if angle == 0.0 {
+        return DQuat::IDENTITY;
+    }
+    let (sin, cos) = crate::trig::sin_cos(angle);
+    let axis = v * (sin / angle);
+    DQuat::from_xyzw(axis.x, axis.y, axis.z, cos)
+}
+
+/// `log(q)` of a unit quaternion, the inverse of [`exp`] on `w > -1`: `atan2(|v|, w) v/|v|` for
+/// `q = w + v`, and `v/w` to first order near 1, so repeated keys (`q = 1`) give 0, not 0/0.
+pub fn log(q: DQuat) -> DVec3 {
+    let v = DVec3::new(q.x, q.y, q.z);
+    let s = v.length();
+    if s < 1e-8 && q.w > 0.0 {
+        // atan2(s, w)/s = (1/w)(1 - s²/(3w²) + …): the second term is below 1e-16 here.
+        return v / q.w;
+    }
+    if s == 0.0 {
+        return DVec3::ZERO;
+    }
+    v * (s.atan2(q.w) / s)
 }
 
 /// Normalised quaternions whose `|q|²` is 1 exactly in f64 (glam's order of summation), from a
@@ -126,6 +153,22 @@ mod tests {
             let q = from_wxyz(q);
             assert_eq!(unit("q", q).unwrap(), q);
         }
+    }
+
+    #[test]
+    fn exp_and_log_invert_each_other() {
+        let q = exp(DVec3::new(0.0, 0.0, std::f64::consts::FRAC_PI_2));
+        assert!((q - from_wxyz([0.0, 0.0, 0.0, 1.0])).length() < 1e-15);
+        assert_eq!(exp(DVec3::ZERO), DQuat::IDENTITY);
+        for v in
+            [DVec3::new(0.3, -1.2, 0.5), DVec3::new(1e-10, 0.0, -2e-10), DVec3::new(0.0, 3.0, 0.0)]
+        {
+            assert!((log(exp(v)) - v).length() < 1e-15 * (1.0 + v.length()), "{v:?}");
+        }
+        // glam's own: the rotation by 1.2 rad about z is exp of (0, 0, 0.6).
+        let rotation = DQuat::from_rotation_z(1.2);
+        assert!((log(rotation) - DVec3::new(0.0, 0.0, 0.6)).length() < 1e-15);
+        assert_eq!(log(DQuat::IDENTITY), DVec3::ZERO);
     }
 
     #[test]

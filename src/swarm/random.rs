@@ -3,6 +3,7 @@
 
 use glam::{DQuat, DVec3};
 
+use crate::quaternion::exp;
 use crate::trig::sin_cos;
 
 /// SplitMix64 (Steele, Lea and Flood 2014): a 64-bit state, one multiply-xorshift output.
@@ -60,18 +61,6 @@ impl Random {
     }
 }
 
-/// `exp(v) = cos|v| + sin|v| v/|v|` of a pure quaternion `v`: the point of S³ at angle `|v|`
-/// from 1 in the direction `v`.
-pub fn exp(v: DVec3) -> DQuat {
-    let angle = v.length();
-    if angle == 0.0 {
-        return DQuat::IDENTITY;
-    }
-    let (sin, cos) = sin_cos(angle);
-    let axis = v * (sin / angle);
-    DQuat::from_xyzw(axis.x, axis.y, axis.z, cos)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -115,12 +104,5 @@ mod tests {
         for s in squares {
             assert!((s / n as f64 - 0.25).abs() < 0.005, "{s}");
         }
-    }
-
-    #[test]
-    fn exp_is_the_geodesic_from_1() {
-        let q = exp(DVec3::new(0.0, 0.0, std::f64::consts::FRAC_PI_2));
-        assert!((q - DQuat::from_xyzw(0.0, 0.0, 1.0, 0.0)).length() < 1e-15);
-        assert_eq!(exp(DVec3::ZERO), DQuat::IDENTITY);
     }
 }

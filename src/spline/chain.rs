@@ -1,0 +1,346 @@
+//! The Kuramoto–Lohe chain through keyframes (MATH.md, "Many rotations"): samples `x_0 … x_N` on
+//! S³, `S` to a segment (so `h_j = (t_{i+1} − t_i)/S` on segment `i`), the samples at key times
+//! pinned to the keys, the others at an equilibrium of the projected gradient flow of
+//!
+//! ```text
+//! E(x) = (α/2) Σ_j |x_{j+1} − x_j|²/h_j + (β/2) Σ_j w_j |D²x_j|²,   α = 1 − smoothness, β = smoothness
+//! D²x_j = [(x_{j+1} − x_j)/h_j − (x_j − x_{j−1})/h_{j−1}] / w_j,    w_j = (h_{j−1} + h_j)/2
+//! ```
+//!
+//! (for even spacing, MATH.md's `(α/2h) Σ |Δx|² + (β/2h³) Σ |Δ²x|²`). `E = ½ xᵀ L x` with a
+//! pentadiagonal `L` shared by the four components. The solve is Riemannian Newton: at a free
+//! sample the tangent basis `B_j = [x_j i, x_j j, x_j k]`, the gradient `g_j = B_jᵀ(Lx)_j`, the
+//! multiplier `μ_j = x_j·(Lx)_j`, the Hessian blocks `H_ab = L_ab B_aᵀB_b − δ_ab μ_a I₃`
+//! (block-pentadiagonal, factorised banded); the step `x_j ← normalise(x_j + s B_j d_j)`, with
+//! `−g` when `H` is not positive definite and `s` halved until `E` drops (Armijo). It starts
+//! from piecewise SLERP, the exact equilibrium for `smoothness = 0`.
+
+use glam::{DQuat, DVec3};
+
+use super::{Curve, Keys, Squad, slerp};
+use crate::error::{KliError, Requirement, require};
+
+/// The knobs of [`KliSpline::new`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ChainOptions {
+    /// From 0 (neighbour coupling only: piecewise SLERP) to 1 (bending only). Default 1.
+    pub smoothness: f64,
+    /// Samples a segment, from 2 to 4096. Default 32.
+    pub samples_per_segment: usize,
+}
+
+impl Default for ChainOptions {
+    fn default() -> Self {
+        Self { smoothness: 1.0, samples_per_segment: 32 }
+    }
+}
+
+/// The residual the solve aims at, free of `E`'s scale: `max_j |g_j| / max_j |(Lx)_j|`.
+pub const TOLERANCE: f64 = 1e-12;
+const MAX_ITERATIONS: usize = 100;
+
+/// The chain's equilibrium through the keys, evaluated between its samples by Squad through
+/// them (continuous angular velocity).
+#[derive(Debug, Clone)]
+pub struct KliSpline {
+    keys: Keys,
+    curve: Squad,
+    residual: f64,
+    iterations: usize,
+}
+
+impl KliSpline {
+    pub fn new(keys: Keys, options: &ChainOptions) -> Result<Self, KliError> {
+        let smoothness = require("smoothness", options.smoothness, Requirement::Between(0.0, 1.0))?;
+        let per = options.samples_per_segment;
+        if !(2..=4096).contains(&per) {
+            let problem = format!("must be a whole number from 2 to 4096 (got {per})");
+            return Err(KliError::invalid("samples_per_segment", problem));
+        }
+        let (k, t) = (keys.quaternions(), keys.times());
+        let mut times = Vec::with_capacity((k.len() - 1) * per + 1);
+        let mut samples = Vec::with_capacity(times.capacity());
+        let mut pinned = Vec::with_capacity(times.capacity());
+        for i in 0..k.len() - 1 {
+            for s in 0..per {
+                let u = s as f64 / per as f64;
+                times.push(t[i] + u * (t[i + 1] - t[i]));
+                samples.push(slerp(k[i], k[i + 1], u));
+                pinned.push(s == 0);
+            }
+        }
+        times.push(t[t.len() - 1]);
+        samples.push(k[k.len() - 1]);
+        pinned.push(true);
+        let chain = Chain::new(&times, 1.0 - smoothness, smoothness, pinned);
+        let (iterations, residual) = chain.solve(&mut samples);
+        let curve = Squad::new(Keys::new(&samples, Some(&times))?);
+        Ok(Self { keys, curve, residual, iterations })
+    }
+
+    /// The keys as used (signs consistent).
+    pub fn keys(&self) -> &Keys {
+        &self.keys
+    }
+
+    /// The chain's samples and their times (the keys among them).
+    pub fn samples(&self) -> &Keys {
+        self.curve.keys()
+    }
+
+    /// The relative residual reached, `max_j |g_j| / max_j |(Lx)_j|`.
+    pub fn residual(&self) -> f64 {
+        self.residual
+    }
+
+    /// Newton iterations taken.
+    pub fn iterations(&self) -> usize {
+        self.iterations
+    }
+}
+
+impl Curve for KliSpline {
+    fn at(&self, t: f64) -> DQuat {
+        self.curve.at(t)
+    }
+
+    fn start_time(&self) -> f64 {
+        self.curve.start_time()
+    }
+
+    fn end_time(&self) -> f64 {
+        self.curve.end_time()
+    }
+}
+
+/// `L` as three bands (`L[a][a]`, `L[a][a+1]`, `L[a][a+2]`), and which samples are pinned.
+struct Chain {
+    bands: [Vec<f64>; 3],
+    pinned: Vec<bool>,
+}
+
+/// The unit quaternions `i`, `j`, `k`.
+const UNITS: [DQuat; 3] = [
+    DQuat::from_xyzw(1.0, 0.0, 0.0, 0.0),
+    DQuat::from_xyzw(0.0, 1.0, 0.0, 0.0),
+    DQuat::from_xyzw(0.0, 0.0, 1.0, 0.0),
+];
+
+fn pure(v: DVec3) -> DQuat {
+    DQuat::from_xyzw(v.x, v.y, v.z, 0.0)
+}
+
+fn vector(q: DQuat) -> DVec3 {
+    DVec3::new(q.x, q.y, q.z)
+}
+
+impl Chain {
+    fn new(times: &[f64], alpha: f64, beta: f64, pinned: Vec<bool>) -> Self {
+        let n = times.len();
+        let mut bands = [vec![0.0; n], vec![0.0; n], vec![0.0; n]];
+        let mut add = |a: usize, b: usize, v: f64| bands[b - a][a] += v;
+        for j in 0..n - 1 {
+            let w = alpha / (times[j + 1] - times[j]);
+            add(j, j, w);
+            add(j + 1, j + 1, w);
+            add(j, j + 1, -w);
+        }
+        for j in 1..n - 1 {
+            let (h0, h1) = (times[j] - times[j - 1], times[j + 1] - times[j]);
+            let c = [1.0 / h0, -(1.0 / h0 + 1.0 / h1), 1.0 / h1];
+            let f = beta / (0.5 * (h0 + h1));
+            for a in 0..3 {
+                for b in a..3 {
+                    add(j - 1 + a, j - 1 + b, f * c[a] * c[b]);
+                }
+            }
+        }
+        Self { bands, pinned }
+    }
+
+    fn l(&self, a: usize, b: usize) -> f64 {
+        let (a, b) = (a.min(b), a.max(b));
+        if b - a > 2 { 0.0 } else { self.bands[b - a][a] }
+    }
+
+    fn apply(&self, x: &[DQuat]) -> Vec<DQuat> {
+        let n = x.len();
+        (0..n)
+            .map(|a| {
+                let (from, to) = (a.saturating_sub(2), (a + 2).min(n - 1));
+                (from..=to).fold(pure(DVec3::ZERO), |sum, b| sum + x[b] * self.l(a, b))
+            })
+            .collect()
+    }
+
+    fn energy(&self, x: &[DQuat]) -> f64 {
+        0.5 * x.iter().zip(self.apply(x)).map(|(a, la)| a.dot(la)).sum::<f64>()
+    }
+
+    /// The gradients `g_j` at the free samples, and the relative residual.
+    fn gradient(&self, x: &[DQuat], lx: &[DQuat], free: &[usize]) -> (Vec<DVec3>, f64) {
+        let g: Vec<DVec3> = free.iter().map(|&a| vector(x[a].conjugate() * lx[a])).collect();
+        let scale = free.iter().map(|&a| lx[a].length()).fold(0.0, f64::max);
+        let largest = g.iter().map(|v| v.length()).fold(0.0, f64::max);
+        (g, if scale > 0.0 { largest / scale } else { 0.0 })
+    }
+
+    /// Runs Newton to [`TOLERANCE`] (or until rounding stops progress); returns the iterations
+    /// and the residual reached.
+    fn solve(&self, x: &mut [DQuat]) -> (usize, f64) {
+        let free: Vec<usize> = (0..x.len()).filter(|&a| !self.pinned[a]).collect();
+        if free.is_empty() {
+            return (0, 0.0);
+        }
+        let mut lx = self.apply(x);
+        let (mut g, mut residual) = self.gradient(x, &lx, &free);
+        for iteration in 0..MAX_ITERATIONS {
+            if residual <= TOLERANCE {
+                return (iteration, residual);
+            }
+            let hessian = self.hessian(x, &lx, &free);
+            let minus_g: Vec<f64> = g.iter().flat_map(|v| (-*v).to_array()).collect();
+            let mut d = hessian.solve(&minus_g).unwrap_or_else(|| minus_g.clone());
+            let mut slope: f64 = d.iter().zip(&minus_g).map(|(a, b)| -a * b).sum();
+            if slope >= 0.0 || slope.is_nan() {
+                d = minus_g.clone();
+                slope = -d.iter().map(|v| v * v).sum::<f64>();
+            }
+            let trial = self.step(x, &free, &d, slope, residual);
+            let trial_lx = self.apply(&trial);
+            let (trial_g, trial_residual) = self.gradient(&trial, &trial_lx, &free);
+            // At the rounding floor (Newton has converged quadratically to ~1e-12), steps stop
+            // halving the residual: keep the better state and stop.
+            let floor = residual < 1e-8 && trial_residual > 0.5 * residual;
+            if floor && trial_residual >= residual {
+                return (iteration, residual);
+            }
+            x.copy_from_slice(&trial);
+            (lx, g, residual) = (trial_lx, trial_g, trial_residual);
+            if floor {
+                return (iteration + 1, residual);
+            }
+        }
+        (MAX_ITERATIONS, residual)
+    }
+
+    /// The next state along `d`: near the equilibrium (residual below 1e-6) the full Newton step
+    /// when it lowers the residual, since there `E` changes less than its own rounding; else the
+    /// Armijo step on `E` (halved until `E` drops by `1e-4 · step · slope`), or the full step if
+    /// even that fails.
+    fn step(
+        &self,
+        x: &[DQuat],
+        free: &[usize],
+        d: &[f64],
+        slope: f64,
+        residual: f64,
+    ) -> Vec<DQuat> {
+        let full = retract(x, free, d, 1.0);
+        if residual < 1e-6 && self.gradient(&full, &self.apply(&full), free).1 < residual {
+            return full;
+        }
+        let energy = self.energy(x);
+        let mut step = 1.0;
+        while step >= 1e-12 {
+            let trial = retract(x, free, d, step);
+            if self.energy(&trial) <= energy + 1e-4 * step * slope {
+                return trial;
+            }
+            step *= 0.5;
+        }
+        full
+    }
+
+    /// The tangent Hessian, block-pentadiagonal in the order of the free samples.
+    fn hessian(&self, x: &[DQuat], lx: &[DQuat], free: &[usize]) -> Band {
+        let mut band = Band::new(3 * free.len(), 8);
+        for (p, &a) in free.iter().enumerate() {
+            let mu = x[a].dot(lx[a]);
+            for (q, &b) in free.iter().enumerate().take(p + 1).skip(p.saturating_sub(2)) {
+                if a - b > 2 {
+                    continue;
+                }
+                let lab = self.l(a, b);
+                let y = x[a].conjugate() * x[b];
+                // M = B_aᵀ B_b: column c is the vector part of y e_c.
+                for (c, e) in UNITS.iter().enumerate() {
+                    let column = vector(y * *e);
+                    for (r, value) in column.to_array().into_iter().enumerate() {
+                        let (i, j) = (3 * p + r, 3 * q + c);
+                        if j <= i {
+                            let diagonal = if i == j { mu } else { 0.0 };
+                            band.set(i, j, lab * value - diagonal);
+                        }
+                    }
+                }
+            }
+        }
+        band
+    }
+}
+
+/// `x_j ← normalise(x_j + s x_j (d_j as a pure quaternion))` at the free samples.
+fn retract(x: &[DQuat], free: &[usize], d: &[f64], s: f64) -> Vec<DQuat> {
+    let mut out = x.to_vec();
+    for (p, &a) in free.iter().enumerate() {
+        let step = pure(DVec3::new(d[3 * p], d[3 * p + 1], d[3 * p + 2]) * s);
+        let moved = x[a] + x[a] * step;
+        out[a] = moved / moved.length();
+    }
+    out
+}
+
+/// A symmetric band matrix (the lower band, `w` below the diagonal) and its Cholesky solve.
+struct Band {
+    n: usize,
+    w: usize,
+    /// `rows[i][k] = A[i][i − k]`.
+    rows: Vec<[f64; 9]>,
+}
+
+impl Band {
+    fn new(n: usize, w: usize) -> Self {
+        Self { n, w, rows: vec![[0.0; 9]; n] }
+    }
+
+    fn set(&mut self, i: usize, j: usize, value: f64) {
+        self.rows[i][i - j] = value;
+    }
+
+    /// `A⁻¹ b` by Cholesky, or `None` when `A` is not positive definite.
+    fn solve(&self, b: &[f64]) -> Option<Vec<f64>> {
+        let (n, w) = (self.n, self.w);
+        let mut l = vec![[0.0; 9]; n];
+        for i in 0..n {
+            for j in i.saturating_sub(w)..=i {
+                let mut sum = self.rows[i][i - j];
+                for p in i.saturating_sub(w).max(j.saturating_sub(w))..j {
+                    sum -= l[i][i - p] * l[j][j - p];
+                }
+                if i == j {
+                    if sum <= 0.0 || sum.is_nan() {
+                        return None;
+                    }
+                    l[i][0] = sum.sqrt();
+                } else {
+                    l[i][i - j] = sum / l[j][0];
+                }
+            }
+        }
+        let mut y = b.to_vec();
+        for i in 0..n {
+            for p in i.saturating_sub(w)..i {
+                y[i] -= l[i][i - p] * y[p];
+            }
+            y[i] /= l[i][0];
+        }
+        for i in (0..n).rev() {
+            for p in i + 1..(i + w + 1).min(n) {
+                y[i] -= l[p][p - i] * y[p];
+            }
+            y[i] /= l[i][0];
+        }
+        Some(y)
+    }
+}

@@ -1,0 +1,189 @@
+//! The curves through keyframes against MATH.md, "Many rotations", and against each other. The
+//! angular quantities are measured here from samples of `at`, independently of the code under
+//! test.
+
+use glam::{DQuat, DVec3};
+
+use super::*;
+use crate::quaternion::{exp, from_wxyz};
+use crate::swarm::Random;
+
+/// `m` random keys, each within `max_angle` (radians of rotation) of the previous, at times
+/// `times` (`None`: 0, 1, …).
+fn random_keys(seed: u64, m: usize, max_angle: f64) -> Vec<DQuat> {
+    let mut random = Random::new(seed);
+    let mut keys = vec![random.unit_quaternion()];
+    while keys.len() < m {
+        let axis = random.gaussian3().normalize();
+        let angle = max_angle * random.uniform();
+        // A rotation by `angle` is a step of angle/2 on S³.
+        let last = *keys.last().unwrap();
+        keys.push(last * exp(axis * (0.5 * angle)));
+    }
+    keys
+}
+
+/// `∫|ω̇|² dt` over the curve, from `q` sampled `per_unit` times a unit of time: `ω` by central
+/// differences of the samples, `ω̇` by differences of `ω`.
+fn angular_acceleration_energy(curve: &dyn Curve, per_unit: usize) -> f64 {
+    let (start, end) = (curve.start_time(), curve.end_time());
+    let n = ((end - start) * per_unit as f64).round() as usize;
+    let dt = (end - start) / n as f64;
+    let mut q: Vec<DQuat> = (0..=n).map(|k| curve.at(start + k as f64 * dt)).collect();
+    for k in 1..q.len() {
+        if q[k].dot(q[k - 1]) < 0.0 {
+            q[k] = -q[k];
+        }
+    }
+    let omega: Vec<DVec3> = (1..n)
+        .map(|k| {
+            let w = (q[k + 1] - q[k - 1]) * (1.0 / dt) * q[k].conjugate();
+            DVec3::new(w.x, w.y, w.z)
+        })
+        .collect();
+    (1..omega.len()).map(|k| ((omega[k] - omega[k - 1]) / dt).length_squared() * dt).sum()
+}
+
+fn keys(quaternions: &[DQuat], times: Option<&[f64]>) -> Keys {
+    Keys::new(quaternions, times).unwrap()
+}
+
+fn chain(keys: Keys, smoothness: f64) -> KliSpline {
+    KliSpline::new(keys, &ChainOptions { smoothness, ..Default::default() }).unwrap()
+}
+
+#[test]
+fn smoothness_0_is_piecewise_slerp_at_every_sample() {
+    let q = random_keys(1, 6, 2.0);
+    let times = [0.0, 0.7, 1.9, 2.4, 4.0, 5.1];
+    let spline = chain(keys(&q, Some(&times)), 0.0);
+    let slerp = PiecewiseSlerp::new(keys(&q, Some(&times)));
+    let samples = spline.samples();
+    for (&x, &t) in samples.quaternions().iter().zip(samples.times()) {
+        assert!((x - slerp.at(t)).length() < 1e-12, "t = {t}");
+    }
+    // Piecewise SLERP is the equilibrium: Newton only polishes its rounding.
+    assert!(
+        spline.iterations() <= 2 && spline.residual() <= 1e-10,
+        "{} {:e}",
+        spline.iterations(),
+        spline.residual()
+    );
+}
+
+#[test]
+fn the_keys_are_hit() {
+    for smoothness in [0.0, 0.3, 1.0] {
+        let q = random_keys(2, 7, 2.0);
+        let spline = chain(keys(&q, None), smoothness);
+        for (i, &k) in spline.keys().quaternions().iter().enumerate() {
+            assert!((spline.at(i as f64) - k).length() < 1e-12, "key {i}, smoothness {smoothness}");
+        }
+    }
+}
+
+#[test]
+fn two_keys_stay_on_their_great_circle_at_any_smoothness() {
+    let (p, r) = (from_wxyz([0.0, 0.0, 0.0, 1.0]), from_wxyz([0.5; 4]));
+    for smoothness in [0.0, 0.5, 1.0] {
+        let spline = chain(keys(&[p, r], Some(&[0.0, 2.0])), smoothness);
+        // The circle's plane is spanned by p and the unit tangent from p towards r.
+        let tangent = (r - p * p.dot(r)).normalize();
+        for k in 0..=40 {
+            let q = spline.at(k as f64 * 0.05);
+            let off_plane = q - p * q.dot(p) - tangent * q.dot(tangent);
+            assert!(off_plane.length() < 1e-12, "smoothness {smoothness}: {off_plane:?}");
+        }
+    }
+}
+
+#[test]
+fn the_solve_reaches_its_residual_in_a_few_newton_steps() {
+    for seed in 0..10 {
+        let q = random_keys(10 + seed, 10, 2.0);
+        let spline = chain(keys(&q, None), 1.0);
+        assert!(spline.residual() <= 1e-10, "seed {seed}: residual {:e}", spline.residual());
+        assert!(spline.iterations() <= 12, "seed {seed}: {} iterations", spline.iterations());
+    }
+}
+
+#[test]
+fn the_smooth_end_bends_less_than_squad() {
+    // MATH.md: about 0.78 of Squad's ∫|ω̇|² on the same keys (6 random keys, consecutive ones up
+    // to 120° apart, even times), with ω continuous so the measure does not depend on density.
+    let mut ratios = Vec::new();
+    for seed in 0..20 {
+        let q = random_keys(100 + seed, 6, 120f64.to_radians());
+        let smooth = angular_acceleration_energy(&chain(keys(&q, None), 1.0), 256);
+        let squad = angular_acceleration_energy(&Squad::new(keys(&q, None)), 256);
+        ratios.push(smooth / squad);
+    }
+    let mean = ratios.iter().sum::<f64>() / ratios.len() as f64;
+    assert!(ratios.iter().all(|&r| r < 1.0), "{ratios:?}");
+    assert!(mean <= 0.85, "mean ratio {mean}: {ratios:?}");
+}
+
+#[test]
+fn squad_with_uneven_times_has_continuous_angular_velocity() {
+    let q = random_keys(5, 5, 1.5);
+    let times = [0.0, 0.4, 2.0, 2.3, 4.0];
+    let squad = Squad::new(keys(&q, Some(&times)));
+    for &t in &times[1..4] {
+        let (before, after) = (squad.angular_velocity(t - 1e-4), squad.angular_velocity(t + 1e-4));
+        assert!(
+            (before - after).length() < 1e-2 * (1.0 + before.length()),
+            "t = {t}: {before:?} vs {after:?}"
+        );
+    }
+    // Piecewise SLERP jumps there: the measure above would see it.
+    let slerp = PiecewiseSlerp::new(keys(&q, Some(&times)));
+    let t = times[2];
+    assert!((slerp.angular_velocity(t - 1e-4) - slerp.angular_velocity(t + 1e-4)).length() > 0.05);
+}
+
+#[test]
+fn hard_keys_work_repeated_opposite_and_half_turns() {
+    let a = from_wxyz([1.0, 0.0, 0.0, 0.0]);
+    let b = from_wxyz([0.0, 1.0, 0.0, 0.0]); // a half turn from a: a·b = 0
+    let c = from_wxyz([0.6, 0.0, 0.8, 0.0]);
+    let q = [a, a, b, -c, c * 3.0, a];
+    for smoothness in [0.0, 1.0] {
+        let spline = chain(keys(&q, None), smoothness);
+        let squad = Squad::new(keys(&q, None));
+        for curve in [&spline as &dyn Curve, &squad] {
+            for k in 0..=250 {
+                let t = k as f64 * 0.02;
+                let x = curve.at(t);
+                assert!(x.is_finite() && (x.length() - 1.0).abs() < 1e-12, "t = {t}: {x:?}");
+            }
+            // The keys, signs made consistent, are hit.
+            for (i, &k) in spline.keys().quaternions().iter().enumerate() {
+                assert!((curve.at(i as f64) - k).length() < 1e-12, "key {i}");
+            }
+        }
+    }
+}
+
+#[test]
+fn bad_keys_and_options_name_themselves() {
+    let q = random_keys(7, 3, 1.0);
+    let argument = |e: crate::KliError| e.argument().to_owned();
+    assert_eq!(argument(Keys::new(&q[..1], None).unwrap_err()), "keys");
+    let mut bad = q.clone();
+    bad[2] = DQuat::from_xyzw(f64::NAN, 0.0, 0.0, 1.0);
+    assert_eq!(argument(Keys::new(&bad, None).unwrap_err()), "keys[2]");
+    bad[2] = DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0);
+    assert_eq!(argument(Keys::new(&bad, None).unwrap_err()), "keys[2]");
+    assert_eq!(argument(Keys::new(&q, Some(&[0.0, 1.0])).unwrap_err()), "times");
+    assert_eq!(argument(Keys::new(&q, Some(&[0.0, 1.0, 1.0])).unwrap_err()), "times[2]");
+    assert_eq!(argument(Keys::new(&q, Some(&[0.0, f64::NAN, 2.0])).unwrap_err()), "times[1]");
+    let options =
+        |smoothness, samples_per_segment| ChainOptions { smoothness, samples_per_segment };
+    for (o, name) in [
+        (options(1.5, 32), "smoothness"),
+        (options(-0.1, 32), "smoothness"),
+        (options(0.5, 1), "samples_per_segment"),
+    ] {
+        assert_eq!(argument(KliSpline::new(keys(&q, None), &o).unwrap_err()), name);
+    }
+}
