@@ -48,23 +48,27 @@ setup-browser:
 	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium chromium-driver >/dev/null; \
 	fi
 
-# The npm package: crates/kli-wasm, the JavaScript API only, in two entries with a module each:
-# `kli` (kli.js, the default features) and `kli/swarm` (swarm.js, the swarm feature alone; its
-# own target directory keeps both builds cached).
-SWARM_RELEASE := target/swarm-entry/$(TARGET)/release
+# The npm package: crates/kli-wasm, the JavaScript API only, in entries with a module each:
+# `kli` (kli.js, the default features), `kli/swarm` (swarm.js) and `kli/spline` (spline.js), each
+# built with its feature alone, in a target directory of its own so every build stays cached.
+ENTRIES := swarm spline
 pkg: setup-rust setup-node
 	cargo build --release -p kli-wasm --lib --target $(TARGET)
-	cargo build --release -p kli-wasm --lib --target $(TARGET) --target-dir target/swarm-entry \
-	  --no-default-features --features swarm,small-allocator
+	for entry in $(ENTRIES); do \
+	  cargo build --release -p kli-wasm --lib --target $(TARGET) --target-dir target/$$entry-entry \
+	    --no-default-features --features $$entry,small-allocator; \
+	done
 	rm -rf pkg
 	wasm-bindgen --target web --out-dir pkg --out-name kli $(RELEASE)/kli_wasm.wasm
-	wasm-bindgen --target web --out-dir pkg --out-name swarm $(SWARM_RELEASE)/kli_wasm.wasm
-	wasm-opt -O3 $(WASM_FEATURES) pkg/kli_bg.wasm -o pkg/kli_bg.wasm
-	wasm-opt -O3 $(WASM_FEATURES) pkg/swarm_bg.wasm -o pkg/swarm_bg.wasm
+	for entry in $(ENTRIES); do \
+	  wasm-bindgen --target web --out-dir pkg --out-name $$entry target/$$entry-entry/$(TARGET)/release/kli_wasm.wasm; \
+	done
+	for module in kli $(ENTRIES); do wasm-opt -O3 $(WASM_FEATURES) pkg/$${module}_bg.wasm -o pkg/$${module}_bg.wasm; done
 	cp README.md pkg/
 	node scripts/package-json.mjs
-	@echo "pkg/kli_bg.wasm: $$(stat -c %s pkg/kli_bg.wasm) bytes, $$(gzip -9c pkg/kli_bg.wasm | wc -c) gzipped"
-	@echo "pkg/swarm_bg.wasm: $$(stat -c %s pkg/swarm_bg.wasm) bytes, $$(gzip -9c pkg/swarm_bg.wasm | wc -c) gzipped"
+	@for module in kli $(ENTRIES); do \
+	  echo "pkg/$${module}_bg.wasm: $$(stat -c %s pkg/$${module}_bg.wasm) bytes, $$(gzip -9c pkg/$${module}_bg.wasm | wc -c) gzipped"; \
+	done
 
 # The page's one module: crates/kli-demo, the package's API and the renderer.
 www: setup-rust setup-node
@@ -86,7 +90,9 @@ lint: setup-rust www
 	cargo fmt --all --check
 	cargo clippy --workspace --all-targets --all-features -- -D warnings
 	cargo clippy --workspace --exclude kli-bench --all-targets --all-features --target $(TARGET) -- -D warnings
-	cargo clippy -p kli-wasm --all-targets --no-default-features --features swarm --target $(TARGET) -- -D warnings
+	for entry in $(ENTRIES); do \
+	  cargo clippy -p kli-wasm --all-targets --no-default-features --features $$entry --target $(TARGET) -- -D warnings; \
+	done
 	RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --all-features --exclude kli-bench
 	tsc -p www/jsconfig.json
 
@@ -94,14 +100,14 @@ test-native:
 	cargo test --workspace
 
 test-wasm-node: setup-rust
-	WASM_BINDGEN_TEST_ONLY_NODE=1 cargo test -p kli-wasm --features swarm --target $(TARGET) --tests
+	WASM_BINDGEN_TEST_ONLY_NODE=1 cargo test -p kli-wasm --all-features --target $(TARGET) --tests
 
 # The same suite built without simd128, so the plain [f64; 2] lanes run too (its own target
 # directory keeps the two builds from invalidating each other).
 test-wasm-portable: setup-rust
 	KLI_LANES=portable CARGO_TARGET_DIR=target/portable \
 	CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-C target-feature=-simd128" \
-	WASM_BINDGEN_TEST_ONLY_NODE=1 cargo test -p kli-wasm --features swarm --target $(TARGET) --tests
+	WASM_BINDGEN_TEST_ONLY_NODE=1 cargo test -p kli-wasm --all-features --target $(TARGET) --tests
 
 test-wasm-browser: setup-rust setup-browser
 	WASM_BINDGEN_TEST_ONLY_WEB=1 cargo test -p kli-demo --target $(TARGET) --tests

@@ -11,9 +11,10 @@ const field = (toml, name) => {
 const workspace = manifest("Cargo.toml").split("[workspace.package]")[1];
 const crate = manifest("crates/kli-wasm/Cargo.toml");
 
-// Two entries, a module each: `kli` (the two-rotation API) and `kli/swarm` (LoheSwarm).
-const files = ["kli.js", "kli.d.ts", "kli_bg.wasm", "kli_bg.wasm.d.ts", "swarm.js", "swarm.d.ts", "swarm_bg.wasm",
-  "swarm_bg.wasm.d.ts", "README.md"];
+// Entries with a module each: `kli` (two rotations), `kli/swarm` (LoheSwarm), `kli/spline` (many
+// keyframes).
+const modules = ["kli", "swarm", "spline"];
+const files = [...modules.flatMap((m) => [`${m}.js`, `${m}.d.ts`, `${m}_bg.wasm`, `${m}_bg.wasm.d.ts`]), "README.md"];
 for (const file of files) {
   if (!existsSync(new URL(`../pkg/${file}`, import.meta.url))) throw new Error(`pkg/${file} is missing`);
 }
@@ -32,6 +33,8 @@ const json = {
     "./kli_bg.wasm": "./kli_bg.wasm",
     "./swarm": { types: "./swarm.d.ts", default: "./swarm.js" },
     "./swarm_bg.wasm": "./swarm_bg.wasm",
+    "./spline": { types: "./spline.d.ts", default: "./spline.js" },
+    "./spline_bg.wasm": "./spline_bg.wasm",
     "./package.json": "./package.json",
   },
   files,

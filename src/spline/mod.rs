@@ -35,6 +35,13 @@ pub trait Curve {
     /// The last key time.
     fn end_time(&self) -> f64;
 
+    /// `q` at each of `times` into `out` (`4·times.len()` numbers, scalar first).
+    fn sample_into(&self, times: &[f64], out: &mut [f64]) {
+        for (t, slot) in times.iter().zip(out.chunks_exact_mut(4)) {
+            slot.copy_from_slice(&crate::quaternion::to_wxyz(self.at(*t)));
+        }
+    }
+
     /// The world-frame angular velocity `ω = 2 q' q̄` (so `q' = ½ ω q`), by a central difference
     /// of `q` (one-sided at the ends) over a step of 1e-6 of the curve's span.
     fn angular_velocity(&self, t: f64) -> DVec3 {

@@ -27,7 +27,8 @@ before(() => {
 test("the tarball holds every file the package needs, and only those", () => {
   const installed = readdirSync(join(project, "node_modules/kli")).sort();
   assert.deepEqual(installed, ["README.md", "kli.d.ts", "kli.js", "kli_bg.wasm", "kli_bg.wasm.d.ts", "package.json",
-    "swarm.d.ts", "swarm.js", "swarm_bg.wasm", "swarm_bg.wasm.d.ts"]);
+    "spline.d.ts", "spline.js", "spline_bg.wasm", "spline_bg.wasm.d.ts", "swarm.d.ts", "swarm.js", "swarm_bg.wasm",
+    "swarm_bg.wasm.d.ts"]);
   const manifest = JSON.parse(readFileSync(join(project, "node_modules/kli/package.json"), "utf8"));
   const cargo = readFileSync(join(root, "Cargo.toml"), "utf8");
   assert.equal(manifest.version, cargo.match(/^version = "(.*)"/m)[1]);
@@ -71,6 +72,24 @@ test("the kli/swarm entry loads its own module and synchronises a swarm", () => 
   assert.equal(points, 900);
   assert.deepEqual(error, { argument: "graph", kind: "unknown-name" });
   assert.ok(separate, "each entry holds only its own API");
+});
+
+test("the kli/spline entry: the chain, Squad and piecewise SLERP through the same keys", () => {
+  writeFileSync(join(project, "spline.mjs"), `
+    import { readFileSync } from "node:fs";
+    import { initSync, kliSpline, squadSpline, slerpSpline } from "kli/spline";
+    initSync({ module: readFileSync(new URL(import.meta.resolve("kli/spline_bg.wasm"))) });
+    const keys = [[1, 0, 0, 0], [0.8, 0.6, 0, 0], [0.6, 0, 0.8, 0], [0, 0, 0.6, 0.8]];
+    const curves = [kliSpline(keys), squadSpline(keys), slerpSpline(keys)];
+    const hit = curves.map((c) => keys.every((k, i) => Array.from(c.at(i)).every((x, j) => Math.abs(x - k[j]) < 1e-12)));
+    const samples = curves[0].sample([0, 1.5, 3]).length;
+    console.log(JSON.stringify({ hit, samples, residual: curves[0].residual, squadResidual: curves[1].residual ?? null }));
+  `);
+  const { hit, samples, residual, squadResidual } = run("spline.mjs");
+  assert.deepEqual(hit, [true, true, true]);
+  assert.equal(samples, 12);
+  assert.ok(residual <= 1e-10, `residual ${residual}`);
+  assert.equal(squadResidual, null);
 });
 
 test("errors thrown through the generated glue are Errors, and the module keeps working", () => {
@@ -123,6 +142,7 @@ test("the TypeScript types are precise: right use compiles, wrong use does not",
   writeFileSync(join(project, "use.ts"), `
     import { kli, slerp, hopf, axisAngle, type KliOptions, type KliPath, type Integrator, type KliError, type KliErrorKind } from "kli";
     import { LoheSwarm, type SwarmOptions } from "kli/swarm";
+    import { kliSpline, type KliSpline } from "kli/spline";
     const options: KliOptions = { tolerance: 1e-5, step: 0.01, maxTime: 100, integrator: "geodesic", shortestPath: true };
     const path: KliPath = kli([0, 0, 0, 1], new Float64Array([0.5, 0.5, 0.5, 0.5]), options);
     const T: number = path.finalTime;
@@ -152,6 +172,12 @@ test("the TypeScript types are precise: right use compiles, wrong use does not",
     kli("abcd", [1, 0, 0, 0]);
     // @ts-expect-error: finalTime is read-only
     path.finalTime = 3;
+    const spline: KliSpline = kliSpline([[1, 0, 0, 0], [0, 1, 0, 0]], { smoothness: 0.5, times: [0, 2] });
+    const w: Float64Array = spline.angularVelocity(1);
+    const residual: number | undefined = spline.residual;
+    // @ts-expect-error: smoothness is a number
+    kliSpline([[1, 0, 0, 0], [0, 1, 0, 0]], { smoothness: "high" });
+    void [w, residual];
     const swarm: LoheSwarm = new LoheSwarm({ count: 10, graph: "ring", startSpread: 0.3 } satisfies SwarmOptions);
     swarm.step(0.1, 5);
     const r: number = swarm.orderParameter;

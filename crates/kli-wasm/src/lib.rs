@@ -26,6 +26,8 @@ pub mod options;
 #[cfg(feature = "api")]
 pub mod path;
 pub mod read;
+#[cfg(feature = "spline")]
+pub mod spline;
 #[cfg(feature = "swarm")]
 pub mod swarm;
 

@@ -84,6 +84,11 @@ impl Fields {
         Reflect::get(&self.object, &js_name(key).into()).unwrap_or(JsValue::UNDEFINED)
     }
 
+    /// The raw value, or `None` when the key is absent.
+    pub fn value(&self, key: &str) -> Option<JsValue> {
+        Some(self.get(key)).filter(|v| !v.is_undefined())
+    }
+
     /// A number, or `None` when the key is absent.
     pub fn number(&self, key: &str) -> Result<Option<f64>, KliError> {
         let value = self.get(key);

@@ -1,0 +1,120 @@
+//! The `kli/spline` entry under Node: the three curves through the boundary, call for call,
+//! and bad input naming the argument and the element. The curves' mathematics is tested
+//! natively (`src/spline/tests.rs`).
+#![cfg(all(target_arch = "wasm32", feature = "spline"))]
+
+use js_sys::{Array, Float64Array, Object, Reflect};
+use kli_wasm::spline::{
+    KeysLike, KliSplineOptionsObject, RotationSpline, kli_spline, slerp_spline, squad_spline,
+};
+use wasm_bindgen::{JsCast, JsValue};
+use wasm_bindgen_test::wasm_bindgen_test;
+
+/// Four keys, the second with the opposite sign (the same rotation).
+const KEYS: [f64; 16] = [
+    1.0, 0.0, 0.0, 0.0, //
+    -0.8, -0.6, 0.0, 0.0, //
+    0.6, 0.0, 0.8, 0.0, //
+    0.0, 0.0, 0.6, 0.8,
+];
+
+fn flat() -> KeysLike {
+    Float64Array::from(&KEYS[..]).unchecked_into()
+}
+
+fn options(entries: &[(&str, JsValue)]) -> Option<KliSplineOptionsObject> {
+    let object = Object::new();
+    for (key, value) in entries {
+        Reflect::set(&object, &(*key).into(), value).unwrap();
+    }
+    Some(object.unchecked_into())
+}
+
+fn argument(result: Result<RotationSpline, JsValue>) -> String {
+    let Err(error) = result else { panic!("expected an Error") };
+    Reflect::get(&error, &"argument".into()).unwrap().as_string().unwrap()
+}
+
+#[wasm_bindgen_test]
+fn the_three_curves_hit_the_keys_as_made_consistent() {
+    let times = || Float64Array::from(&[0.0, 0.5, 2.0, 3.0][..]);
+    let kli = kli_spline(&flat(), options(&[("times", times().into())])).unwrap();
+    let squad = squad_spline(
+        &flat(),
+        options(&[("times", times().into())]).map(JsValue::from).map(JsCast::unchecked_into),
+    )
+    .unwrap();
+    let slerp = slerp_spline(&flat(), None).unwrap();
+    // The second key flipped to (0.8, 0.6, 0, 0): k1·k0 ≥ 0.
+    let used = kli.keys().to_vec();
+    assert_eq!(&used[4..8], &[0.8, 0.6, 0.0, 0.0]);
+    for (i, &t) in [0.0, 0.5, 2.0, 3.0].iter().enumerate() {
+        for curve in [&kli, &squad] {
+            let q = curve.at(t).unwrap().to_vec();
+            let gap: f64 = (0..4).map(|c| (q[c] - used[4 * i + c]).abs()).fold(0.0, f64::max);
+            assert!(gap < 1e-12, "key {i}: {q:?}");
+        }
+    }
+    // slerpSpline uses the default times 0, 1, 2, 3; t outside is clamped.
+    assert_eq!(slerp.at(-5.0).unwrap().to_vec(), used[..4].to_vec());
+    assert_eq!((slerp.start_time(), slerp.end_time()), (0.0, 3.0));
+    assert!(kli.residual().unwrap() <= 1e-10 && kli.iterations().is_some());
+    assert!(squad.residual().is_none() && squad.iterations().is_none());
+}
+
+#[wasm_bindgen_test]
+fn sample_matches_at_and_fills_out() {
+    let kli = kli_spline(&flat(), options(&[("smoothness", 0.5.into())])).unwrap();
+    let times: Vec<f64> = (0..31).map(|k| k as f64 * 0.1).collect();
+    let out = Float64Array::new_with_length(4 * 31);
+    let returned = kli.sample(&Float64Array::from(&times[..]).into(), Some(out.clone())).unwrap();
+    assert!(JsValue::from(returned) == JsValue::from(out.clone()));
+    for (k, &t) in times.iter().enumerate() {
+        assert_eq!(
+            out.subarray(4 * k as u32, 4 * k as u32 + 4).to_vec(),
+            kli.at(t).unwrap().to_vec()
+        );
+    }
+    // ω: q' = ½ ω q; piecewise SLERP turns at constant speed on a segment: |ω| = the rotation
+    // angle between the keys (2·acos(k0·k1) = 2·acos(0.8)) over the segment's time (1).
+    let slerp = slerp_spline(&flat(), None).unwrap();
+    let omega = slerp.angular_velocity(0.5).unwrap().to_vec();
+    let speed = omega.iter().map(|c| c * c).sum::<f64>().sqrt();
+    assert!((speed - 2.0 * 0.8_f64.acos()).abs() < 1e-6, "{speed}");
+}
+
+#[wasm_bindgen_test]
+fn bad_input_names_the_argument_and_element() {
+    assert_eq!(
+        argument(kli_spline(&Float64Array::from(&KEYS[..4]).unchecked_into(), None)),
+        "keys"
+    );
+    assert_eq!(
+        argument(kli_spline(&Float64Array::from(&KEYS[..6]).unchecked_into(), None)),
+        "keys"
+    );
+    let nested: Array = [
+        JsValue::from(Array::of4(&1.into(), &0.into(), &0.into(), &0.into())),
+        JsValue::from("abcd"),
+    ]
+    .into_iter()
+    .collect();
+    assert_eq!(argument(kli_spline(nested.unchecked_ref(), None)), "keys[1]");
+    let mut zero = KEYS;
+    zero[8..12].copy_from_slice(&[0.0; 4]);
+    assert_eq!(
+        argument(kli_spline(&Float64Array::from(&zero[..]).unchecked_into(), None)),
+        "keys[2]"
+    );
+    let uneven = Float64Array::from(&[0.0, 1.0, 1.0, 2.0][..]);
+    assert_eq!(argument(kli_spline(&flat(), options(&[("times", uneven.into())]))), "times[2]");
+    assert_eq!(argument(kli_spline(&flat(), options(&[("smoothness", 2.into())]))), "smoothness");
+    assert_eq!(
+        argument(kli_spline(&flat(), options(&[("samplesPerSegment", 1.5.into())]))),
+        "samplesPerSegment"
+    );
+    assert_eq!(argument(kli_spline(&flat(), options(&[("tension", 1.into())]))), "options");
+    let spline = slerp_spline(&flat(), None).unwrap();
+    let Err(error) = spline.at(f64::NAN) else { panic!() };
+    assert_eq!(Reflect::get(&error, &"argument".into()).unwrap(), "t");
+}
