@@ -123,6 +123,7 @@ bench: pkg www setup-browser
 	cargo bench -p kli-bench --bench core -- --warm-up-time 1 --measurement-time 3
 	node bench/batch.mjs
 	node bench/swarm.mjs
+	node bench/spline.mjs
 	node bench/page.mjs
 
 clean:

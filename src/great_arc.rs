@@ -47,8 +47,7 @@ impl GreatArc {
             return Err(KliError::new("shortest_path", kind));
         }
         if d <= ROUNDING_NOISE {
-            let zero = DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0);
-            return Ok(Self { start: p, target, tangent: zero, angle: 0.0, half_angle_tan: 0.0 });
+            return Ok(Self { target, ..Self::at_point(p) });
         }
         // p - (p·t) t, written so the cancelling part is an exact difference or sum.
         let raw = if p.dot(target) >= 0.0 {
@@ -64,6 +63,12 @@ impl GreatArc {
             angle: 2.0 * d.atan2(s),
             half_angle_tan: d / s,
         })
+    }
+
+    /// The arc of no length at `p` (every point of it is `p`).
+    pub fn at_point(p: DQuat) -> Self {
+        let zero = DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0);
+        Self { start: p, target: p, tangent: zero, angle: 0.0, half_angle_tan: 0.0 }
     }
 
     /// The start `p`.

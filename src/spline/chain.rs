@@ -17,7 +17,7 @@
 
 use glam::{DQuat, DVec3};
 
-use super::{Curve, Keys, Squad, slerp};
+use super::{Curve, Keys, Squad, locate, slerp};
 use crate::error::{KliError, Requirement, require};
 
 /// The knobs of [`KliSpline::new`].
@@ -45,6 +45,8 @@ const MAX_ITERATIONS: usize = 100;
 pub struct KliSpline {
     keys: Keys,
     curve: Squad,
+    /// Samples a segment: sample interval `i·S + j` is the `j`-th of segment `i`.
+    per: usize,
     residual: f64,
     iterations: usize,
 }
@@ -75,7 +77,7 @@ impl KliSpline {
         let chain = Chain::new(&times, 1.0 - smoothness, smoothness, pinned);
         let (iterations, residual) = chain.solve(&mut samples);
         let curve = Squad::new(Keys::new(&samples, Some(&times))?);
-        Ok(Self { keys, curve, residual, iterations })
+        Ok(Self { keys, curve, per, residual, iterations })
     }
 
     /// The keys as used (signs consistent).
@@ -101,7 +103,11 @@ impl KliSpline {
 
 impl Curve for KliSpline {
     fn at(&self, t: f64) -> DQuat {
-        self.curve.at(t)
+        // The samples are even within a segment: find the segment, then the sample interval.
+        let (segment, u) = locate(self.keys.times(), t);
+        let position = u * self.per as f64;
+        let j = (position.floor() as usize).min(self.per - 1);
+        self.curve.at_interval(segment * self.per + j, position - j as f64)
     }
 
     fn start_time(&self) -> f64 {

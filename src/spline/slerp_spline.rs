@@ -3,17 +3,25 @@
 
 use glam::DQuat;
 
-use super::{Curve, Keys, locate, slerp};
+use super::{Curve, Keys, locate};
+use crate::great_arc::GreatArc;
 
 /// SLERP from key to key.
 #[derive(Debug, Clone)]
 pub struct PiecewiseSlerp {
     keys: Keys,
+    /// The arc of each segment, built once.
+    arcs: Vec<GreatArc>,
 }
 
 impl PiecewiseSlerp {
     pub fn new(keys: Keys) -> Self {
-        Self { keys }
+        let q = keys.quaternions();
+        let arcs = q
+            .windows(2)
+            .map(|w| GreatArc::new(w[0], w[1], false).unwrap_or_else(|_| GreatArc::at_point(w[0])))
+            .collect();
+        Self { keys, arcs }
     }
 
     pub fn keys(&self) -> &Keys {
@@ -24,8 +32,7 @@ impl PiecewiseSlerp {
 impl Curve for PiecewiseSlerp {
     fn at(&self, t: f64) -> DQuat {
         let (i, u) = locate(self.keys.times(), t);
-        let q = self.keys.quaternions();
-        slerp(q[i], q[i + 1], u)
+        crate::slerp::point_at(&self.arcs[i], u)
     }
 
     fn start_time(&self) -> f64 {

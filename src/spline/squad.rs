@@ -12,16 +12,22 @@
 use glam::{DQuat, DVec3};
 
 use super::{Curve, Keys, locate, slerp};
+use crate::great_arc::GreatArc;
 use crate::quaternion::{exp, log};
 
 /// Squad through the keys.
 #[derive(Debug, Clone)]
 pub struct Squad {
     keys: Keys,
-    /// `a_i`, leaving key `i`.
-    out: Vec<DQuat>,
-    /// `b_i`, arriving at key `i`.
-    into: Vec<DQuat>,
+    /// Per interval, the arcs `q_i → q_{i+1}` and `a_i → b_{i+1}`, built once: evaluating then
+    /// needs one arc (between their points) rather than three.
+    arcs: Vec<(GreatArc, GreatArc)>,
+}
+
+/// The arc from `p` to `r` without choosing a sign; the point `p` if `r = -p` (never asked:
+/// the keys' signs are consistent and the helpers lie near them).
+fn arc(p: DQuat, r: DQuat) -> GreatArc {
+    GreatArc::new(p, r, false).unwrap_or_else(|_| GreatArc::at_point(p))
 }
 
 impl Squad {
@@ -38,7 +44,8 @@ impl Squad {
             out[i] = q[i] * exp((tangent * h1 - plus) * 0.5);
             into[i] = q[i] * exp(-(tangent * h0 + minus) * 0.5);
         }
-        Self { keys, out, into }
+        let arcs = (0..m - 1).map(|i| (arc(q[i], q[i + 1]), arc(out[i], into[i + 1]))).collect();
+        Self { keys, arcs }
     }
 
     pub fn keys(&self) -> &Keys {
@@ -46,13 +53,19 @@ impl Squad {
     }
 }
 
+impl Squad {
+    /// The point at `u ∈ [0, 1]` of interval `i` (between keys `i` and `i + 1`).
+    pub(crate) fn at_interval(&self, i: usize, u: f64) -> DQuat {
+        let (outer, inner) = &self.arcs[i];
+        let point = |arc: &GreatArc| crate::slerp::point_at(arc, u);
+        slerp(point(outer), point(inner), 2.0 * u * (1.0 - u))
+    }
+}
+
 impl Curve for Squad {
     fn at(&self, t: f64) -> DQuat {
         let (i, u) = locate(self.keys.times(), t);
-        let q = self.keys.quaternions();
-        let outer = slerp(q[i], q[i + 1], u);
-        let inner = slerp(self.out[i], self.into[i + 1], u);
-        slerp(outer, inner, 2.0 * u * (1.0 - u))
+        self.at_interval(i, u)
     }
 
     fn start_time(&self) -> f64 {

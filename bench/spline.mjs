@@ -1,0 +1,143 @@
+// The spline benchmark (issue 8's targets): how much the chain's smooth end bends against Squad
+// (∫|ω̇|², measured from samples), the solve time for 10 keys, and the throughput of `.sample`
+// against gl-matrix's quat.sqlerp (helper points computed once) and three.js's
+// QuaternionKeyframeTrack interpolant, on the same keys.
+//   node bench/spline.mjs [rounds]
+import { readFileSync } from "node:fs";
+import { performance } from "node:perf_hooks";
+import { QuaternionKeyframeTrack } from "three";
+import { quat } from "gl-matrix";
+import { initSync, kliSpline, slerpSpline, squadSpline } from "../pkg/spline.js";
+
+initSync({ module: readFileSync(new URL("../pkg/spline_bg.wasm", import.meta.url)) });
+const rounds = Number(process.argv[2] ?? 9);
+const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
+
+// xorshift128+ and Gaussians: the same keys on every run.
+let s0 = 0x9e3779b9, s1 = 0x243f6a88;
+const uniform = () => {
+  let x = s0; const y = s1;
+  s0 = y; x ^= x << 23; x ^= x >>> 17; x ^= y ^ (y >>> 26); s1 = x;
+  return ((s0 + s1) >>> 0) / 4294967296;
+};
+const gaussian = () => Math.sqrt(-2 * Math.log(1 - uniform())) * Math.cos(2 * Math.PI * uniform());
+const multiply = ([aw, ax, ay, az], [bw, bx, by, bz]) => [
+  aw * bw - ax * bx - ay * by - az * bz, aw * bx + ax * bw + ay * bz - az * by,
+  aw * by - ax * bz + ay * bw + az * bx, aw * bz + ax * by - ay * bx + az * bw,
+];
+/** m keys, [w, x, y, z], consecutive ones up to `maxDegrees` of rotation apart. */
+function randomKeys(m, maxDegrees) {
+  const g = [gaussian(), gaussian(), gaussian(), gaussian()];
+  const keys = [g.map((c) => c / Math.hypot(...g))];
+  while (keys.length < m) {
+    const axis = [gaussian(), gaussian(), gaussian()];
+    const n = Math.hypot(...axis);
+    const half = ((maxDegrees * Math.PI) / 180) * uniform() / 2;
+    const step = [Math.cos(half), ...axis.map((c) => (Math.sin(half) * c) / n)];
+    keys.push(multiply(keys[keys.length - 1], step));
+  }
+  return keys;
+}
+
+/** ∫|ω̇|² from 256 samples a unit of time: ω = 2 q' q̄ by central differences, then ω̇. */
+function bending(curve) {
+  const [start, end] = [curve.startTime, curve.endTime];
+  const n = Math.round((end - start) * 256), dt = (end - start) / n;
+  const times = Float64Array.from({ length: n + 1 }, (_, k) => start + k * dt);
+  const q = curve.sample(times);
+  for (let k = 1; k <= n; k++) {
+    let dot = 0;
+    for (let c = 0; c < 4; c++) dot += q[4 * k + c] * q[4 * k - 4 + c];
+    if (dot < 0) for (let c = 0; c < 4; c++) q[4 * k + c] = -q[4 * k + c];
+  }
+  const omega = [];
+  for (let k = 1; k < n; k++) {
+    const d = [0, 1, 2, 3].map((c) => (q[4 * k + 4 + c] - q[4 * k - 4 + c]) / dt);
+    const conj = [q[4 * k], -q[4 * k + 1], -q[4 * k + 2], -q[4 * k + 3]];
+    omega.push(multiply(d, conj).slice(1));
+  }
+  let sum = 0;
+  for (let k = 1; k < omega.length; k++) sum += [0, 1, 2].reduce((s, c) => s + ((omega[k][c] - omega[k - 1][c]) / dt) ** 2, 0) * dt;
+  return sum;
+}
+
+// 1. The smooth end against Squad: 20 random sets of 6 keys, up to 120° apart, even times.
+const ratios = [];
+let worstKey = 0;
+for (let set = 0; set < 20; set++) {
+  const keys = randomKeys(6, 120);
+  const [chain, squad] = [kliSpline(keys), squadSpline(keys)];
+  ratios.push(bending(chain) / bending(squad));
+  const used = chain.keys;
+  for (let i = 0; i < 6; i++) {
+    const q = chain.at(i);
+    for (let c = 0; c < 4; c++) worstKey = Math.max(worstKey, Math.abs(q[c] - used[4 * i + c]));
+  }
+  chain.free(); squad.free();
+}
+const mean = ratios.reduce((a, b) => a + b, 0) / ratios.length;
+console.log(`∫|ω̇|² of kliSpline (smoothness 1) / Squad's, 20 sets of 6 keys: mean ${mean.toFixed(3)} ` +
+  `(${Math.min(...ratios).toFixed(3)}–${Math.max(...ratios).toFixed(3)}; target ≤ 0.85); keys hit to ${worstKey.toExponential(1)}`);
+
+// 2. The solve: 10 keys at the default density (32 samples a segment).
+const ten = randomKeys(10, 120);
+const solves = [], iterations = [];
+let residual = 0;
+for (let k = 0; k < 50; k++) {
+  const start = performance.now();
+  const spline = kliSpline(ten);
+  solves.push(performance.now() - start);
+  residual = Math.max(residual, spline.residual);
+  iterations.push(spline.iterations);
+  spline.free();
+}
+console.log(`kliSpline of 10 keys: median ${median(solves).toFixed(2)} ms per solve (${iterations[0]} Newton steps, ` +
+  `residual ≤ ${residual.toExponential(1)}; target ≤ 2 ms, ≤ 1e-10)`);
+
+// 3. .sample of 10⁶ times on the same 10 keys, against gl-matrix's sqlerp and three.js.
+const n = 1e6;
+const times = Float64Array.from({ length: n }, () => 9 * uniform());
+const out = new Float64Array(4 * n);
+const xyzw = ten.map(([w, x, y, z]) => [x, y, z, w]);
+// Shoemake's helper points (even times) for gl-matrix: a_i = q_i exp(−(log(q_i⁻¹q_{i+1}) + log(q_i⁻¹q_{i−1}))/4).
+const helpers = xyzw.map((q, i) => {
+  if (i === 0 || i === xyzw.length - 1) return quat.clone(q);
+  const inverse = quat.invert(quat.create(), q);
+  const log = (other) => quat.ln(quat.create(), quat.multiply(quat.create(), inverse, other));
+  const [a, b] = [log(xyzw[i + 1]), log(xyzw[i - 1])];
+  const sum = quat.scale(quat.create(), quat.add(quat.create(), a, b), -0.25);
+  return quat.multiply(quat.create(), q, quat.exp(quat.create(), sum));
+});
+const glOut = quat.create();
+const track = new QuaternionKeyframeTrack(".quaternion", [0, 1, 2, 3, 4, 5, 6, 7, 8, 9], xyzw.flat());
+const interpolant = track.createInterpolant();
+const curves = { kli: kliSpline(ten), squad: squadSpline(ten), slerp: slerpSpline(ten) };
+const methods = {
+  "kliSpline .sample (wasm)": () => curves.kli.sample(times, out),
+  "squadSpline .sample (wasm)": () => curves.squad.sample(times, out),
+  "slerpSpline .sample (wasm)": () => curves.slerp.sample(times, out),
+  "gl-matrix quat.sqlerp (helpers once)": () => {
+    for (let k = 0; k < n; k++) {
+      const t = times[k], i = Math.min(Math.floor(t), 8);
+      quat.sqlerp(glOut, xyzw[i], helpers[i], helpers[i + 1], xyzw[i + 1], t - i);
+      out[4 * k] = glOut[3];
+    }
+  },
+  "three.js QuaternionKeyframeTrack interpolant": () => {
+    for (let k = 0; k < n; k++) out[4 * k] = interpolant.evaluate(times[k])[3];
+  },
+};
+const results = Object.fromEntries(Object.keys(methods).map((name) => [name, []]));
+for (let round = 0; round < rounds; round++) {
+  for (const [name, run] of Object.entries(methods)) {
+    const start = performance.now();
+    run();
+    results[name].push(performance.now() - start);
+  }
+}
+console.log(`\n.sample of 10⁶ random times on 10 keys, median of ${rounds} alternating rounds, Node ${process.version}:`);
+console.log("| method | ms | ns per time |");
+console.log("| --- | ---: | ---: |");
+for (const [name, times] of Object.entries(results)) {
+  console.log(`| ${name} | ${median(times).toFixed(1)} | ${(median(times) * 1e6 / n).toFixed(1)} |`);
+}
