@@ -7,18 +7,21 @@
 //!   neighbours repel), found by Riemannian Newton; `smoothness = β` runs from piecewise SLERP
 //!   (`0`) to the smoothest curve through the keys (`1`).
 //! - [`Squad`]: Shoemake's spherical quadrangle, with helper points for uneven times, the usual
-//!   smooth baseline; [`PiecewiseSlerp`], the other baseline.
+//!   smooth baseline; [`PiecewiseSlerp`], the other baseline; [`SequentialKli`], the paper's
+//!   Algorithm 1 run key to key, its literal reading.
 //!
 //! Every curve is a [`Curve`]: `at(t)` clamps `t` to the key times, and the angular velocity is
 //! the world-frame `ω` with `q' = ½ ω q`.
 
 mod chain;
 mod keys;
+mod sequential;
 mod slerp_spline;
 mod squad;
 
 pub use chain::{ChainOptions, KliSpline};
 pub use keys::Keys;
+pub use sequential::SequentialKli;
 pub use slerp_spline::PiecewiseSlerp;
 pub use squad::Squad;
 
