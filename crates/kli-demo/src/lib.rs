@@ -7,7 +7,7 @@
 //! Plain-Rust geometry and data ([`camera`], [`aircraft`], [`scene`], [`ticks`], [`palette`]) are
 //! apart from the files that draw ([`pen`], [`object_view`], [`sphere_view`], [`plots`]) and the
 //! classes themselves ([`demo`] for the KLI page, [`swarm_demo`] for the swarm page, with
-//! [`swarm_view`] and [`swarm_plots`]).
+//! [`swarm_view`] and [`swarm_plots`], [`spline_demo`] for the keyframes page).
 
 pub mod aircraft;
 pub mod camera;
@@ -19,10 +19,12 @@ pub mod pen;
 pub mod plots;
 pub mod scene;
 pub mod sphere_view;
+pub mod spline_demo;
 pub mod swarm_demo;
 pub mod swarm_plots;
 pub mod swarm_view;
 pub mod ticks;
 
 pub use demo::Demo;
+pub use spline_demo::SplineDemo;
 pub use swarm_demo::SwarmDemo;

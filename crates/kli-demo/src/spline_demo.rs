@@ -1,0 +1,285 @@
+//! The `SplineDemo` class: the keyframes page's three curves through the same keys (the
+//! Kuramoto–Lohe chain, Squad, piecewise SLERP), their measured figures, and their views.
+
+use glam::{DQuat, DVec3};
+use js_sys::Float64Array;
+use kli::KliError;
+use kli::hopf::hopf;
+use kli::quaternion::{from_wxyz, to_wxyz};
+use kli::spline::{ChainOptions, Curve, Keys, KliSpline, PiecewiseSlerp, Squad};
+use kli_wasm::error::{JsResult, throw};
+use wasm_bindgen::prelude::*;
+use web_sys::CanvasRenderingContext2d;
+
+use crate::aircraft::{Face, aircraft};
+use crate::camera::{Camera, Viewport};
+use crate::object_view::{draw_object, object_camera};
+use crate::palette::{BACKGROUND, INK, KLI, MUTED, SLERP};
+use crate::pen::Pen;
+use crate::plots::{Panel, trim};
+use crate::sphere_view::{Side, View, draw_globe, draw_grid_back, draw_grid_front, grid};
+
+/// Samples a unit of time for the series and the figures (as in MATH.md's measurements).
+const PER_UNIT: f64 = 256.0;
+const NAMES: [&str; 3] = ["Kuramoto–Lohe chain", "Squad", "piecewise SLERP"];
+const COLOURS: [&str; 3] = [KLI, SLERP, INK];
+
+/// One curve's precomputed views: sample times, Hopf points, |ω| and |ω̇|.
+struct Series {
+    hopf: Vec<DVec3>,
+    speed: Vec<f64>,
+    acceleration: Vec<f64>,
+}
+
+/// The three curves through one set of keys.
+#[wasm_bindgen]
+pub struct SplineDemo {
+    keys: Keys,
+    chain: KliSpline,
+    squad: Squad,
+    slerp: PiecewiseSlerp,
+    times: Vec<f64>,
+    series: Vec<Series>,
+    figures: Vec<f64>,
+    mesh: Vec<Face>,
+}
+
+fn series(curve: &dyn Curve, times: &[f64]) -> Series {
+    let dt = times[1] - times[0];
+    let omega: Vec<DVec3> = times.iter().map(|&t| curve.angular_velocity(t)).collect();
+    let acceleration = (0..omega.len())
+        .map(|k| {
+            let (a, b) = (k.saturating_sub(1), (k + 1).min(omega.len() - 1));
+            ((omega[b] - omega[a]) / ((b - a) as f64 * dt)).length()
+        })
+        .collect();
+    Series {
+        hopf: times.iter().map(|&t| hopf(curve.at(t))).collect(),
+        speed: omega.iter().map(|w| w.length()).collect(),
+        acceleration,
+    }
+}
+
+/// `[key error, largest jump of ω at a key, ∫|ω̇|², total rotation angle ∫|ω|]` of a curve.
+fn figures(curve: &dyn Curve, keys: &Keys, s: &Series, dt: f64) -> [f64; 4] {
+    let key_error = keys
+        .quaternions()
+        .iter()
+        .zip(keys.times())
+        .map(|(&k, &t)| (curve.at(t) - k).length().min((curve.at(t) + k).length()))
+        .fold(0.0, f64::max);
+    let h = 1e-4;
+    let jump = keys.times()[1..keys.len() - 1]
+        .iter()
+        .map(|&t| (curve.angular_velocity(t + h) - curve.angular_velocity(t - h)).length())
+        .fold(0.0, f64::max);
+    let bending = s.acceleration.iter().map(|a| a * a * dt).sum();
+    let angle = s.speed.iter().map(|w| w * dt).sum();
+    [key_error, jump, bending, angle]
+}
+
+#[wasm_bindgen]
+impl SplineDemo {
+    /// The three curves through `keys` (4m numbers, scalar first) at `times` (m numbers, or
+    /// empty for 0, 1, …), the chain with `smoothness`; errors as kliSpline's.
+    #[wasm_bindgen(constructor)]
+    pub fn new(keys: &[f64], times: &[f64], smoothness: f64) -> JsResult<SplineDemo> {
+        Self::build(keys, times, smoothness).map_err(throw)
+    }
+
+    fn build(flat: &[f64], times: &[f64], smoothness: f64) -> Result<SplineDemo, KliError> {
+        if flat.len() % 4 != 0 {
+            return Err(KliError::invalid(
+                "keys",
+                format!("must hold 4 numbers per key (got {})", flat.len()),
+            ));
+        }
+        let q: Vec<DQuat> =
+            flat.chunks_exact(4).map(|c| from_wxyz([c[0], c[1], c[2], c[3]])).collect();
+        let keys = Keys::new(&q, (!times.is_empty()).then_some(times))?;
+        let chain =
+            KliSpline::new(keys.clone(), &ChainOptions { smoothness, ..Default::default() })?;
+        let (squad, slerp) = (Squad::new(keys.clone()), PiecewiseSlerp::new(keys.clone()));
+        let (start, end) = (keys.times()[0], keys.times()[keys.len() - 1]);
+        let n = ((end - start) * PER_UNIT).ceil().max(16.0) as usize;
+        let sample_times: Vec<f64> =
+            (0..=n).map(|k| start + (end - start) * k as f64 / n as f64).collect();
+        let dt = sample_times[1] - sample_times[0];
+        let curves: [&dyn Curve; 3] = [&chain, &squad, &slerp];
+        let series: Vec<Series> = curves.iter().map(|c| series(*c, &sample_times)).collect();
+        let figures =
+            curves.iter().zip(&series).flat_map(|(c, s)| figures(*c, &keys, s, dt)).collect();
+        Ok(SplineDemo {
+            keys,
+            chain,
+            squad,
+            slerp,
+            times: sample_times,
+            series,
+            figures,
+            mesh: aircraft(),
+        })
+    }
+
+    /// For each curve (chain, Squad, piecewise SLERP): key error, largest jump of |ω| at a key,
+    /// ∫|ω̇|² dt and the total rotation angle ∫|ω| dt: 12 numbers.
+    #[wasm_bindgen(getter)]
+    pub fn figures(&self) -> Float64Array {
+        Float64Array::from(&self.figures[..])
+    }
+
+    /// The keys as used (signs consistent), 4m numbers.
+    #[wasm_bindgen(getter)]
+    pub fn keys(&self) -> Float64Array {
+        let flat: Vec<f64> = self.keys.quaternions().iter().flat_map(|&q| to_wxyz(q)).collect();
+        Float64Array::from(&flat[..])
+    }
+
+    #[wasm_bindgen(getter, js_name = keyTimes)]
+    pub fn key_times(&self) -> Float64Array {
+        Float64Array::from(self.keys.times())
+    }
+
+    #[wasm_bindgen(getter, js_name = endTime)]
+    pub fn end_time(&self) -> f64 {
+        self.chain.end_time()
+    }
+
+    #[wasm_bindgen(getter, js_name = startTime)]
+    pub fn start_time(&self) -> f64 {
+        self.chain.start_time()
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn residual(&self) -> f64 {
+        self.chain.residual()
+    }
+
+    #[wasm_bindgen(getter)]
+    pub fn iterations(&self) -> usize {
+        self.chain.iterations()
+    }
+
+    /// The three curves' rotations at `t`, 12 numbers (chain, Squad, piecewise SLERP).
+    pub fn at(&self, t: f64) -> Float64Array {
+        let curves: [&dyn Curve; 3] = [&self.chain, &self.squad, &self.slerp];
+        let flat: Vec<f64> = curves.iter().flat_map(|c| to_wxyz(c.at(finite(t)))).collect();
+        Float64Array::from(&flat[..])
+    }
+
+    /// The object under each curve at `t`, side by side (stacked when narrow).
+    #[wasm_bindgen(js_name = drawObjects)]
+    pub fn draw_objects(
+        &self,
+        ctx: &CanvasRenderingContext2d,
+        width: f64,
+        height: f64,
+        pixel_ratio: f64,
+        t: f64,
+    ) {
+        let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
+        let camera = object_camera();
+        let curves: [&dyn Curve; 3] = [&self.chain, &self.squad, &self.slerp];
+        let wide = width >= height;
+        let (w, h) = if wide { (width / 3.0, height) } else { (width, height / 3.0) };
+        for (i, curve) in curves.iter().enumerate() {
+            let (left, top) = if wide { (i as f64 * w, 0.0) } else { (0.0, i as f64 * h) };
+            let viewport = Viewport::fitting(left, top + 14.0, w, h - 14.0, 1.6);
+            draw_object(&pen, &viewport, &camera, &self.mesh, curve.at(finite(t)), false);
+            pen.text(NAMES[i], (left + 0.5 * w, top + 10.0), COLOURS[i], 12.0, "center");
+        }
+    }
+
+    /// The three Hopf curves through the keys' Hopf points on S², and the points at `t`.
+    #[wasm_bindgen(js_name = drawSphere)]
+    #[allow(clippy::too_many_arguments)]
+    pub fn draw_sphere(
+        &self,
+        ctx: &CanvasRenderingContext2d,
+        width: f64,
+        height: f64,
+        pixel_ratio: f64,
+        azimuth: f64,
+        elevation: f64,
+        t: f64,
+    ) {
+        let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
+        let viewport = Viewport::fitting(0.0, 0.0, width, height, 1.22);
+        let camera = Camera::orbit(azimuth, elevation);
+        let view = View { pen: &pen, viewport: &viewport, camera: &camera };
+        let grid = grid();
+        let dashes: [&[f64]; 3] = [&[], &[6.0, 4.0], &[2.0, 3.0]];
+        draw_grid_back(&view, &grid);
+        for (s, (colour, dash)) in self.series.iter().zip(COLOURS.iter().zip(dashes)) {
+            view.polyline_on(&s.hopf, Side::Back, (colour, 2.0, dash));
+        }
+        pen.alpha(1.0);
+        draw_globe(&view);
+        draw_grid_front(&view, &grid);
+        for (s, (colour, dash)) in self.series.iter().zip(COLOURS.iter().zip(dashes)) {
+            view.polyline_on(&s.hopf, Side::Front, (colour, 2.5, dash));
+        }
+        for (i, &k) in self.keys.quaternions().iter().enumerate() {
+            let p = hopf(k);
+            pen.alpha(if view.in_front(p) { 1.0 } else { 0.4 });
+            pen.disc(view.at(p), 5.5, Some("#ffffff"), Some((INK, 2.0)));
+            let (x, y) = view.at(p);
+            pen.text(&format!("k{i}"), (x + 9.0, y - 9.0), INK, 11.0, "left");
+        }
+        pen.alpha(1.0);
+        let curves: [&dyn Curve; 3] = [&self.chain, &self.squad, &self.slerp];
+        for (curve, colour) in curves.iter().zip(COLOURS) {
+            pen.disc(view.at(hopf(curve.at(finite(t)))), 5.0, Some(colour), Some(("#ffffff", 1.5)));
+        }
+    }
+
+    /// |ω(t)| and |ω̇(t)| of the three curves, with the time `t` marked.
+    #[wasm_bindgen(js_name = drawPlots)]
+    pub fn draw_plots(
+        &self,
+        ctx: &CanvasRenderingContext2d,
+        width: f64,
+        height: f64,
+        pixel_ratio: f64,
+        t: f64,
+    ) {
+        let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
+        let wide = width >= 1.5 * height;
+        let (cell_w, cell_h) = if wide { (width / 2.0, height) } else { (width, height / 2.0) };
+        let (start, end) = (self.start_time(), self.end_time());
+        let panels = [("|ω(t)|, rad per unit time", 0), ("|ω̇(t)|", 1)];
+        for (index, (title, which)) in panels.into_iter().enumerate() {
+            let values = |s: &Series| -> Vec<f64> {
+                if which == 0 { s.speed.clone() } else { s.acceleration.clone() }
+            };
+            // The scale of the continuous curves (the chain's and Squad's): piecewise SLERP's
+            // |ω̇| is a spike at every key, left off the top.
+            let largest = self.series[..2].iter().flat_map(&values).fold(0.0_f64, f64::max);
+            let top_value = largest.max(1e-9) * 1.08;
+            let (col, row) = if wide { (index as f64, 0.0) } else { (0.0, index as f64) };
+            let panel = Panel {
+                left: col * cell_w + 52.0,
+                top: row * cell_h + 30.0,
+                width: (cell_w - 76.0).max(10.0),
+                height: (cell_h - 58.0).max(10.0),
+                x_min: start,
+                x_max: end,
+                y_min: 0.0,
+                y_max: top_value,
+            };
+            let ticks: Vec<(f64, String)> =
+                [0.0, 0.5, 1.0].iter().map(|&f| (f * top_value, trim(f * top_value))).collect();
+            panel.frame_with(&pen, title, &ticks, "t");
+            for (s, colour) in self.series.iter().zip(COLOURS).rev() {
+                panel.series(&pen, &self.times, values(s).into_iter(), colour, 1.8, &[]);
+            }
+            let (x, _) = panel.at(finite(t).max(start).min(end), 0.0);
+            pen.line((x, panel.top), (x, panel.top + panel.height), MUTED, 1.0, &[2.0, 3.0]);
+        }
+    }
+}
+
+/// Drawing never fails: a non-finite time is drawn as t = 0.
+fn finite(t: f64) -> f64 {
+    if t.is_finite() { t } else { 0.0 }
+}

@@ -1,0 +1,77 @@
+// End-to-end tests of the keyframes page (www/keyframes.html) in Debian's headless Chromium.
+import { test } from "node:test";
+import assert from "node:assert/strict";
+import { join } from "node:path";
+import { artifacts, axeViolations, canvasStats, open, setup } from "./browser.mjs";
+
+setup();
+
+/** The measured figures table: { curve: [key error, jump, ∫|ω̇|², rotation, solve, evaluations] }. */
+async function figures(page) {
+  const rows = await page.$$eval("#figures tbody tr", (trs) => trs.map((tr) => Array.from(tr.cells, (c) => c.textContent)));
+  return Object.fromEntries(rows.map(([name, ...values]) => [name, values.map(Number)]));
+}
+
+test("the keyframes page draws three curves through the keys and measures them", async () => {
+  const { page, context, problems } = await open("keyframes.html");
+  for (const selector of ["#spline-objects", "#spline-sphere", "#spline-plots"]) {
+    assert.ok((await canvasStats(page, selector)).drawn > 3000, selector);
+  }
+  const f = await figures(page);
+  const [chain, squad, slerp] = [f["Kuramoto–Lohe chain"], f["Squad"], f["piecewise SLERP"]];
+  // Keys hit; ω continuous for the chain and Squad, jumping for SLERP; the chain bends least.
+  assert.ok(chain[0] < 1e-12 && squad[0] < 1e-12 && slerp[0] < 1e-12, JSON.stringify(f));
+  assert.ok(chain[1] < 0.05 && squad[1] < 0.05 && slerp[1] > 0.5, JSON.stringify(f));
+  assert.ok(chain[2] < squad[2] && squad[2] < slerp[2], JSON.stringify(f));
+  assert.match(await page.textContent("#solve"), /Newton steps to a residual of [\d.]+e-1[0-9]/);
+  await page.screenshot({ path: join(artifacts, "keyframes.png"), fullPage: true });
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test("smoothness 0 makes the chain piecewise SLERP, and the URL keeps it", async () => {
+  const { page, context, problems } = await open("keyframes.html");
+  await page.$eval("[name=smoothness]", (slider) => {
+    slider.value = "0";
+    slider.dispatchEvent(new Event("input", { bubbles: true }));
+  });
+  const f = await figures(page);
+  // The chain's samples are piecewise SLERP's: the same total rotation (to the corners its
+  // evaluation rounds within one sample interval of each key), and bends far more than Squad.
+  const [chain, squad, slerp] = [f["Kuramoto–Lohe chain"], f["Squad"], f["piecewise SLERP"]];
+  assert.ok(Math.abs(chain[3] - slerp[3]) < 0.01 * slerp[3], JSON.stringify(f));
+  assert.ok(chain[2] > 10 * squad[2], JSON.stringify(f));
+  await page.waitForURL(/s=0(&|$)/, { timeout: 2000 });
+  await page.reload();
+  await page.waitForFunction(() => document.querySelector("#load-status").hidden);
+  assert.equal(await page.inputValue("[name=smoothness]"), "0");
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test("bad keys and times show the module's message beside their field", async () => {
+  const { page, context, problems } = await open("keyframes.html");
+  await page.fill("[name=keys]", "1,0,0,0; 0,0,0,0; 0,1,0,0");
+  assert.match(await page.textContent("#keys-error"), /^keys\[1\] must be a quaternion of 4 finite numbers \[w, x, y, z\], not all zero: it has zero length/);
+  await page.fill("[name=keys]", "1,0,0,0; 0,1,0,0; 0,0,1,0");
+  assert.equal(await page.textContent("#keys-error"), "");
+  await page.fill("[name=times]", "0,2,1");
+  assert.match(await page.textContent("#times-error"), /^times\[2\] must be greater than times\[1\]/);
+  assert.equal(await page.getAttribute("[name=times]", "aria-invalid"), "true");
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test("keyframes: WCAG 2.2 AA, embedded, and at 390 px", async () => {
+  const { page, context } = await open("keyframes.html");
+  assert.deepEqual(await axeViolations(page), []);
+  await context.close();
+  const embed = await open("keyframes.html?embed=1", { viewport: { width: 640, height: 400 } });
+  assert.equal(await embed.page.isVisible("#spline-inputs"), false);
+  assert.deepEqual(await axeViolations(embed.page), []);
+  await embed.context.close();
+  const narrow = await open("keyframes.html", { viewport: { width: 390, height: 844 } });
+  assert.ok(await narrow.page.evaluate(() => document.documentElement.scrollWidth <= 390), "no horizontal scrolling");
+  await narrow.page.screenshot({ path: join(artifacts, "keyframes-390px.png"), fullPage: true });
+  await narrow.context.close();
+});

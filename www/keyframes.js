@@ -1,0 +1,291 @@
+// @ts-check
+// The keyframes page, wiring only: the keys and options to the module's SplineDemo (the three
+// curves, their figures and their views) and to kliSpline/squadSpline/slerpSpline for timing.
+import init, { Demo, SplineDemo, kliSpline, slerpSpline, squadSpline } from "./pkg/kli_demo.js";
+import { $ } from "./dom.js";
+import { wireDragging, wireKeyboard } from "./input.js";
+import { formatNumber, parseNumber } from "./numbers.js";
+import { SPLINE_URL_KEYS as KEYS, throttledUrl } from "./url.js";
+
+/** @typedef {{ keys: number[][], times: number[], smoothness: number }} SplineState */
+
+/** @type {Record<string, SplineState>} */
+const PRESETS = {
+  tumble: {
+    keys: [[1, 0, 0, 0], [0.8, 0.6, 0, 0], [0.5, 0.5, 0.5, 0.5], [0, 0.6, 0.8, 0], [-0.3, 0.1, 0.7, 0.64], [0.2, -0.6, 0.3, 0.72]],
+    times: [], smoothness: 1,
+  },
+  uneven: {
+    keys: [[1, 0, 0, 0], [0.6, 0, 0.8, 0], [0, 0, 0.6, 0.8], [0.36, 0.48, 0.48, 0.64], [0.8, 0, 0, 0.6]],
+    times: [0, 0.5, 2, 2.4, 4], smoothness: 1,
+  },
+  hard: { keys: [[1, 0, 0, 0], [1, 0, 0, 0], [0, 1, 0, 0], [-0.6, 0, -0.8, 0], [0.6, 0, 0.8, 0], [1, 0, 0, 0]], times: [], smoothness: 1 },
+};
+
+const form = $("#spline-inputs", HTMLFormElement);
+const field = (/** @type {string} */ name) => /** @type {HTMLInputElement} */ (form.elements.namedItem(name));
+const canvases = {
+  objects: $("#spline-objects", HTMLCanvasElement),
+  sphere: $("#spline-sphere", HTMLCanvasElement),
+  plots: $("#spline-plots", HTMLCanvasElement),
+};
+const ui = {
+  play: $("#play", HTMLButtonElement),
+  time: $("#time", HTMLInputElement),
+  readout: $("#readout", HTMLOutputElement),
+  share: $("#share", HTMLAnchorElement),
+  note: $("#note", HTMLElement),
+  load: $("#load-status", HTMLElement),
+  solve: $("#solve", HTMLElement),
+};
+const query = new URLSearchParams(location.search);
+const embed = query.get(KEYS.embed) === "1";
+const writeUrl = throttledUrl(400, (search) => (ui.share.href = search));
+const run = {
+  demo: /** @type {SplineDemo | null} */ (null),
+  state: PRESETS.tumble,
+  t: 0,
+  playing: false,
+  last: /** @type {number | null} */ (null),
+  view: [0, 0],
+  sizes: /** @type {Record<string, { width: number, height: number }>} */ ({}),
+};
+
+// ---- State ----------------------------------------------------------------------------------
+
+const keysText = (/** @type {number[][]} */ keys) => keys.map((q) => q.map(formatNumber).join(",")).join("; ");
+/** Text to numbers only (NaN where not a number): the module checks the keys. */
+const parseKeys = (/** @type {string} */ text) => text.split(";").filter((k) => k.trim()).map((k) => k.split(",").map(parseNumber));
+const parseTimes = (/** @type {string} */ text) => (text.trim() ? text.split(",").map(parseNumber) : []);
+
+function fillForm(/** @type {SplineState} */ state) {
+  field("keys").value = keysText(state.keys);
+  field("times").value = state.times.map(formatNumber).join(",");
+  field("smoothness").value = String(state.smoothness);
+  $("#smoothness-value", HTMLOutputElement).textContent = String(state.smoothness);
+}
+
+function readForm() {
+  return { keys: parseKeys(field("keys").value), times: parseTimes(field("times").value), smoothness: parseNumber(field("smoothness").value) };
+}
+
+function stateFromUrl() {
+  const state = { ...PRESETS.tumble };
+  if (query.has(KEYS.keys)) state.keys = parseKeys(query.get(KEYS.keys) ?? "");
+  if (query.has(KEYS.times)) state.times = parseTimes(query.get(KEYS.times) ?? "");
+  if (query.has(KEYS.smoothness)) state.smoothness = parseNumber(query.get(KEYS.smoothness) ?? "");
+  return state;
+}
+
+function urlOf(/** @type {SplineState} */ state) {
+  const search = new URLSearchParams();
+  search.set(KEYS.keys, state.keys.map((q) => q.map(formatNumber).join(",")).join(";"));
+  if (state.times.length) search.set(KEYS.times, state.times.map(formatNumber).join(","));
+  search.set(KEYS.smoothness, String(state.smoothness));
+  if (embed) search.set(KEYS.embed, "1");
+  return "?" + search.toString();
+}
+
+// ---- Runs -----------------------------------------------------------------------------------
+
+/** Builds the three curves; on an Error, shows it beside its field and keeps the run on show. */
+function rebuild(/** @type {SplineState} */ state) {
+  /** @type {SplineDemo} */
+  let demo;
+  try {
+    demo = new SplineDemo(new Float64Array(state.keys.flat()), new Float64Array(state.times), state.smoothness);
+  } catch (error) {
+    showError(error);
+    return false;
+  }
+  for (const output of form.querySelectorAll(".field-error")) output.textContent = "";
+  for (const marked of form.querySelectorAll("[aria-invalid=true]")) marked.setAttribute("aria-invalid", "false");
+  run.demo?.free();
+  run.demo = demo;
+  run.state = state;
+  run.t = Math.min(Math.max(run.t, demo.startTime), demo.endTime);
+  ui.time.min = String(demo.startTime);
+  ui.time.max = String(demo.endTime);
+  const preset = Object.entries(PRESETS).find(([, p]) => JSON.stringify(p) === JSON.stringify(state));
+  /** @type {HTMLSelectElement} */ (form.elements.namedItem("preset")).value = preset ? preset[0] : "custom";
+  fillFigures(demo, state);
+  writeUrl(urlOf(state));
+  draw();
+  return true;
+}
+
+function showError(/** @type {unknown} */ error) {
+  const { argument, message } = /** @type {{ argument?: string, message?: string }} */ (error ?? {});
+  const name = argument?.startsWith("keys") ? "keys" : argument?.startsWith("times") ? "times" : "smoothness";
+  $(`#${name}-error`, HTMLOutputElement).textContent = String(message ?? error);
+  field(name).setAttribute("aria-invalid", "true");
+}
+
+/** The table: the module's figures, and solve and evaluation times measured here. */
+function fillFigures(/** @type {SplineDemo} */ demo, /** @type {SplineState} */ state) {
+  const keys = new Float64Array(state.keys.flat());
+  const options = state.times.length ? { times: state.times } : {};
+  const timed = (/** @type {() => any} */ f) => {
+    const start = performance.now();
+    const value = f();
+    return { value, ms: performance.now() - start };
+  };
+  const curves = [
+    timed(() => kliSpline(keys, { ...options, smoothness: state.smoothness })),
+    timed(() => squadSpline(keys, options)),
+    timed(() => slerpSpline(keys, options)),
+  ];
+  const times = Float64Array.from({ length: 1e4 }, (_, k) => demo.startTime + ((demo.endTime - demo.startTime) * k) / (1e4 - 1));
+  const figures = demo.figures;
+  const body = $("#figures tbody", HTMLTableSectionElement);
+  body.replaceChildren();
+  ["Kuramoto–Lohe chain", "Squad", "piecewise SLERP"].forEach((name, i) => {
+    const evaluation = timed(() => curves[i].value.sample(times));
+    const row = body.insertRow();
+    const cells = [name, figures[4 * i].toExponential(1), figures[4 * i + 1].toFixed(3), figures[4 * i + 2].toFixed(3),
+      figures[4 * i + 3].toFixed(3), curves[i].ms.toFixed(2), evaluation.ms.toFixed(2)];
+    for (const text of cells) row.insertCell().textContent = text;
+    curves[i].value.free();
+  });
+  ui.solve.textContent = `The chain: ${demo.iterations} Newton steps to a residual of ${demo.residual.toExponential(1)}; ` +
+    `its ∫|ω̇|² is ${(figures[2] / figures[6]).toFixed(3)} of Squad's.`;
+}
+
+// ---- Frames ---------------------------------------------------------------------------------
+
+let pending = false;
+function requestDraw() {
+  if (pending) return;
+  pending = true;
+  requestAnimationFrame((now) => {
+    pending = false;
+    const demo = run.demo;
+    if (run.playing && demo) {
+      if (run.last !== null) run.t += (now - run.last) / 1000;
+      run.last = now;
+      if (run.t >= demo.endTime) {
+        run.t = demo.endTime;
+        pause();
+      }
+    }
+    draw();
+    if (run.playing) requestDraw();
+  });
+}
+
+function draw() {
+  const demo = run.demo;
+  if (!demo) return;
+  const ratio = devicePixelRatio || 1;
+  const ctx = (/** @type {keyof typeof canvases} */ name) => /** @type {CanvasRenderingContext2D} */ (canvases[name].getContext("2d"));
+  const size = (/** @type {string} */ name) => run.sizes[name];
+  if (size("objects")) demo.drawObjects(ctx("objects"), size("objects").width, size("objects").height, ratio, run.t);
+  if (size("sphere")) demo.drawSphere(ctx("sphere"), size("sphere").width, size("sphere").height, ratio, run.view[0], run.view[1], run.t);
+  if (size("plots")) demo.drawPlots(ctx("plots"), size("plots").width, size("plots").height, ratio, run.t);
+  ui.time.value = String(run.t);
+  ui.readout.textContent = `t = ${run.t.toFixed(2)} / ${demo.endTime.toFixed(2)}`;
+}
+
+function play() {
+  if (run.demo && run.t >= run.demo.endTime) run.t = run.demo.startTime;
+  run.playing = true;
+  run.last = null;
+  ui.play.textContent = "Pause";
+  requestDraw();
+}
+
+function pause() {
+  run.playing = false;
+  ui.play.textContent = "Play";
+}
+
+// ---- Start ----------------------------------------------------------------------------------
+
+function randomKeys() {
+  const gaussian = () => Math.sqrt(-2 * Math.log(1 - Math.random())) * Math.cos(2 * Math.PI * Math.random());
+  return Array.from({ length: 6 }, () => {
+    const q = [gaussian(), gaussian(), gaussian(), gaussian()];
+    const n = Math.hypot(...q);
+    return q.map((c) => Number((c / n).toFixed(4)));
+  });
+}
+
+function wire() {
+  form.addEventListener("submit", (event) => event.preventDefault());
+  form.addEventListener("input", (event) => {
+    const name = /** @type {HTMLInputElement} */ (event.target).name;
+    $("#smoothness-value", HTMLOutputElement).textContent = field("smoothness").value;
+    if (name === "preset") {
+      const preset = PRESETS[/** @type {HTMLSelectElement} */ (form.elements.namedItem("preset")).value];
+      if (!preset) return;
+      fillForm(preset);
+      rebuild(preset);
+      return;
+    }
+    rebuild(readForm());
+  });
+  $("#random", HTMLButtonElement).addEventListener("click", () => {
+    const state = { keys: randomKeys(), times: [], smoothness: run.state.smoothness };
+    fillForm(state);
+    rebuild(state);
+  });
+  ui.play.addEventListener("click", () => (run.playing ? pause() : play()));
+  ui.time.addEventListener("input", () => {
+    pause();
+    run.t = Number(ui.time.value);
+    draw();
+  });
+  const turn = (/** @type {number} */ azimuth, /** @type {number} */ elevation) => {
+    run.view[0] += azimuth;
+    run.view[1] = Math.min(Math.max(run.view[1] + elevation, -1.55), 1.55);
+    if (!run.playing) draw();
+  };
+  wireDragging(canvases.sphere, turn);
+  wireKeyboard(canvases.sphere, {
+    togglePlay: () => (run.playing ? pause() : play()),
+    step: () => {},
+    toStart: () => { run.t = run.demo?.startTime ?? 0; draw(); },
+    toEnd: () => { run.t = run.demo?.endTime ?? 0; draw(); },
+    speed: () => {},
+    turn,
+  });
+}
+
+function observeSizes() {
+  const observer = new ResizeObserver((entries) => {
+    const ratio = devicePixelRatio || 1;
+    for (const entry of entries) {
+      const name = Object.keys(canvases).find((key) => canvases[/** @type {keyof typeof canvases} */ (key)] === entry.target);
+      if (!name) continue;
+      const { width, height } = entry.contentRect;
+      run.sizes[name] = { width, height };
+      const canvas = /** @type {HTMLCanvasElement} */ (entry.target);
+      canvas.width = Math.max(1, Math.round(width * ratio));
+      canvas.height = Math.max(1, Math.round(height * ratio));
+    }
+    draw();
+  });
+  for (const canvas of Object.values(canvases)) observer.observe(canvas);
+}
+
+async function start() {
+  try {
+    await init();
+  } catch (error) {
+    ui.load.textContent = `The WebAssembly module could not be loaded: ${error instanceof Error ? error.message : error}`;
+    ui.load.classList.add("error");
+    return;
+  }
+  if (embed) document.body.classList.add("embed");
+  run.view = Array.from(Demo.defaultSphereView());
+  wire();
+  const state = stateFromUrl();
+  fillForm(state);
+  if (!rebuild(state)) rebuild(PRESETS.tumble);
+  ui.load.textContent = "";
+  ui.load.hidden = true;
+  observeSizes();
+  if (!matchMedia("(prefers-reduced-motion: reduce)").matches) play();
+}
+
+start();
