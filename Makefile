@@ -70,13 +70,19 @@ pkg: setup-rust setup-node
 	  echo "pkg/$${module}_bg.wasm: $$(stat -c %s pkg/$${module}_bg.wasm) bytes, $$(gzip -9c pkg/$${module}_bg.wasm | wc -c) gzipped"; \
 	done
 
-# The page's one module: crates/kli-demo, the package's API and the renderer.
+# The pages' modules, one a page: a build of crates/kli-demo with the page's feature. One target
+# directory serves all three (cargo keeps each feature set's artifacts); each build is bound
+# right after it, before the next overwrites the .wasm.
+PAGES := kli:kli-page swarm:swarm-page spline:spline-page
 www: setup-rust setup-node
-	cargo build --release -p kli-demo --lib --target $(TARGET)
 	rm -rf www/pkg
-	wasm-bindgen --target web --out-dir www/pkg --out-name kli_demo $(RELEASE)/kli_demo.wasm
-	wasm-opt -O3 $(WASM_FEATURES) www/pkg/kli_demo_bg.wasm -o www/pkg/kli_demo_bg.wasm
-	@echo "www/pkg/kli_demo_bg.wasm: $$(stat -c %s www/pkg/kli_demo_bg.wasm) bytes, $$(gzip -9c www/pkg/kli_demo_bg.wasm | wc -c) gzipped"
+	for page in $(PAGES); do \
+	  name=$${page%%:*}; feature=$${page#*:}; \
+	  cargo build --release -p kli-demo --lib --target $(TARGET) --no-default-features --features $$feature; \
+	  wasm-bindgen --target web --out-dir www/pkg --out-name $${name}_demo $(RELEASE)/kli_demo.wasm; \
+	  wasm-opt -O3 $(WASM_FEATURES) www/pkg/$${name}_demo_bg.wasm -o www/pkg/$${name}_demo_bg.wasm; \
+	  echo "www/pkg/$${name}_demo_bg.wasm: $$(stat -c %s www/pkg/$${name}_demo_bg.wasm) bytes, $$(gzip -9c www/pkg/$${name}_demo_bg.wasm | wc -c) gzipped"; \
+	done
 
 demo: www
 	@echo "Serving the demo at http://127.0.0.1:$(PORT)/  (Ctrl-C to stop)"

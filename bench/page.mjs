@@ -16,8 +16,11 @@ const size = (path) => {
   const bytes = readFileSync(join(root, path));
   return `${bytes.length} bytes, ${gzipSync(bytes, { level: 9 }).length} gzipped`;
 };
-console.log(`pkg/kli_bg.wasm (the npm package): ${size("pkg/kli_bg.wasm")} (target ≤ 32768 gzipped)`);
-console.log(`www/pkg/kli_demo_bg.wasm (the page's module): ${size("www/pkg/kli_demo_bg.wasm")}`);
+console.log(`pkg/kli_bg.wasm (the npm package's main entry): ${size("pkg/kli_bg.wasm")} (target ≤ 32768 gzipped)`);
+for (const entry of ["swarm", "spline"]) console.log(`pkg/${entry}_bg.wasm (kli/${entry}): ${size(`pkg/${entry}_bg.wasm`)}`);
+for (const [page, module] of [["index.html", "kli_demo"], ["swarm.html", "swarm_demo"], ["keyframes.html", "spline_demo"]]) {
+  console.log(`www/pkg/${module}_bg.wasm (${page}'s module): ${size(`www/pkg/${module}_bg.wasm`)}`);
+}
 
 const www = await serve(join(root, "www"));
 const bare = await serve(join(root, "bench/bare"));

@@ -1,7 +1,7 @@
 // @ts-check
 // The keyframes page, wiring only: the keys and options to the module's SplineDemo (the three
 // curves, their figures and their views) and to kliSpline/squadSpline/slerpSpline for timing.
-import init, { Demo, SplineDemo, kliSpline, slerpSpline, squadSpline } from "./pkg/kli_demo.js";
+import init, { SplineDemo, defaultSphereView, kliSpline, slerpSpline, squadSpline } from "./pkg/spline_demo.js";
 import { $ } from "./dom.js";
 import { wireDragging, wireKeyboard } from "./input.js";
 import { formatNumber, parseNumber } from "./numbers.js";
@@ -277,7 +277,7 @@ async function start() {
     return;
   }
   if (embed) document.body.classList.add("embed");
-  run.view = Array.from(Demo.defaultSphereView());
+  run.view = Array.from(defaultSphereView());
   wire();
   const state = stateFromUrl();
   fillForm(state);

@@ -2,13 +2,13 @@
 // The swarm page, wiring only: the form and the URL to the module's SwarmDemo, the animation,
 // the canvases and the sweep. The model, its checks and all drawing are the module's
 // (crates/kli-demo/src/swarm_demo.rs).
-import init, { SwarmDemo, Demo } from "./pkg/kli_demo.js";
+import init, { SwarmDemo, defaultSphereView } from "./pkg/swarm_demo.js";
 import { $ } from "./dom.js";
 import { wireDragging, wireKeyboard } from "./input.js";
 import { parseNumber } from "./numbers.js";
 import { SWARM_URL_KEYS as KEYS, throttledUrl } from "./url.js";
 
-/** @typedef {import("./pkg/kli_demo.js").SwarmOptions} SwarmOptions */
+/** @typedef {import("./pkg/swarm_demo.js").SwarmOptions} SwarmOptions */
 /** @typedef {Required<Omit<SwarmOptions, "startSpread">> & { startSpread?: number }} SwarmState */
 
 /** @type {Record<string, SwarmState>} */
@@ -293,7 +293,7 @@ async function start() {
     return;
   }
   if (embed) document.body.classList.add("embed");
-  run.view = Array.from(Demo.defaultSphereView());
+  run.view = Array.from(defaultSphereView());
   wire();
   const state = stateFromUrl();
   fillForm(state);

@@ -17,7 +17,7 @@ use crate::palette::{BACKGROUND, INK, KLI, MUTED, SLERP};
 use crate::pen::Pen;
 use crate::plots::{draw_plot_cursors, draw_plots};
 use crate::scene::Scene;
-use crate::sphere_view::{draw_sphere, draw_sphere_cursor, sphere_camera};
+use crate::sphere_view::{draw_sphere, draw_sphere_cursor};
 
 /// The KLI run behind the demo page, and its canvas views.
 #[wasm_bindgen]
@@ -243,11 +243,10 @@ impl Demo {
         draw_plot_cursors(&Pen::over(ctx, pixel_ratio), width, height, &self.scene, finite(t));
     }
 
-    /// The sphere view's default (azimuth, elevation) in radians.
+    /// The sphere view's default (azimuth, elevation) in radians (as `defaultSphereView()`).
     #[wasm_bindgen(js_name = defaultSphereView)]
     pub fn default_sphere_view() -> Vec<f64> {
-        let d = sphere_camera().toward_viewer();
-        vec![d.y.atan2(d.x), d.z.asin()]
+        crate::default_sphere_view()
     }
 }
 
