@@ -3,7 +3,7 @@
 // curves, their figures and their views) and to kliSpline/squadSpline/slerpSpline for timing.
 import init, { SplineDemo, defaultSphereView, kliSpline, slerpSpline, squadSpline } from "./pkg/spline_demo.js";
 import { $ } from "./dom.js";
-import { wireDragging, wireKeyboard } from "./input.js";
+import { wireKeyboard } from "./input.js";
 import { formatNumber, parseNumber } from "./numbers.js";
 import { SPLINE_URL_KEYS as KEYS, throttledUrl } from "./url.js";
 
@@ -58,6 +58,34 @@ const keysText = (/** @type {number[][]} */ keys) => keys.map((q) => q.map(forma
 const parseKeys = (/** @type {string} */ text) => text.split(";").filter((k) => k.trim()).map((k) => k.split(",").map(parseNumber));
 const parseTimes = (/** @type {string} */ text) => (text.trim() ? text.split(",").map(parseNumber) : []);
 
+/** The key selector and the selected key's axis and angle. */
+function fillKeyEditor() {
+  const demo = run.demo;
+  if (!demo) return;
+  const select = /** @type {HTMLSelectElement} */ (form.elements.namedItem("key"));
+  const count = demo.keys.length / 4;
+  const selected = Math.min(Number(select.value) || 0, count - 1);
+  select.replaceChildren(...Array.from({ length: count }, (_, i) => new Option(`k${i}`, String(i))));
+  select.value = String(selected);
+  const [x, y, z, angle] = demo.keyAxisAngle(selected);
+  for (const [name, value] of /** @type {const} */ ([["key-ax", x], ["key-ay", y], ["key-az", z], ["key-angle", (angle * 180) / Math.PI]])) {
+    field(name).value = formatNumber(value);
+  }
+  $("#add-key", HTMLButtonElement).disabled = count >= 10;
+  $("#remove-key", HTMLButtonElement).disabled = count <= 3;
+}
+
+/** Keys as rows of 4 from the module's flat Float64Array. */
+const rows = (/** @type {Float64Array} */ flat) => Array.from({ length: flat.length / 4 }, (_, i) => Array.from(flat.subarray(4 * i, 4 * i + 4), (c) => Number(c.toPrecision(6))));
+
+/** Rebuilds with new keys (times kept only when their count still matches). */
+function withKeys(/** @type {number[][]} */ keys) {
+  const times = run.state.times.length === keys.length ? run.state.times : [];
+  const state = { keys, times, smoothness: run.state.smoothness };
+  fillForm(state);
+  rebuild(state);
+}
+
 function fillForm(/** @type {SplineState} */ state) {
   field("keys").value = keysText(state.keys);
   field("times").value = state.times.map(formatNumber).join(",");
@@ -109,6 +137,7 @@ function rebuild(/** @type {SplineState} */ state) {
   const preset = Object.entries(PRESETS).find(([, p]) => JSON.stringify(p) === JSON.stringify(state));
   /** @type {HTMLSelectElement} */ (form.elements.namedItem("preset")).value = preset ? preset[0] : "custom";
   fillFigures(demo, state);
+  fillKeyEditor();
   writeUrl(urlOf(state));
   draw();
   return true;
@@ -116,9 +145,11 @@ function rebuild(/** @type {SplineState} */ state) {
 
 function showError(/** @type {unknown} */ error) {
   const { argument, message } = /** @type {{ argument?: string, message?: string }} */ (error ?? {});
-  const name = argument?.startsWith("keys") ? "keys" : argument?.startsWith("times") ? "times" : "smoothness";
+  const name = argument?.startsWith("keys") ? "keys" : argument?.startsWith("times") ? "times"
+    : argument === "axis" || argument === "angle" ? "key" : "smoothness";
   $(`#${name}-error`, HTMLOutputElement).textContent = String(message ?? error);
-  field(name).setAttribute("aria-invalid", "true");
+  const marked = name !== "key" ? [name] : argument === "angle" ? ["key-angle"] : ["key-ax", "key-ay", "key-az"];
+  for (const n of marked) field(n).setAttribute("aria-invalid", "true");
 }
 
 /** The table: the module's figures, and solve and evaluation times measured here. */
@@ -215,6 +246,19 @@ function wire() {
   form.addEventListener("input", (event) => {
     const name = /** @type {HTMLInputElement} */ (event.target).name;
     $("#smoothness-value", HTMLOutputElement).textContent = field("smoothness").value;
+    if (name === "key") return fillKeyEditor();
+    if (name.startsWith("key-")) {
+      const demo = run.demo;
+      if (!demo) return;
+      const index = Number(field("key").value);
+      const [x, y, z, degrees] = ["key-ax", "key-ay", "key-az", "key-angle"].map((n) => parseNumber(field(n).value));
+      try {
+        withKeys(rows(demo.keysWithAxisAngle(index, new Float64Array([x, y, z]), (degrees * Math.PI) / 180)));
+      } catch (error) {
+        showError(error);
+      }
+      return;
+    }
     if (name === "preset") {
       const preset = PRESETS[/** @type {HTMLSelectElement} */ (form.elements.namedItem("preset")).value];
       if (!preset) return;
@@ -240,7 +284,18 @@ function wire() {
     run.view[1] = Math.min(Math.max(run.view[1] + elevation, -1.55), 1.55);
     if (!run.playing) draw();
   };
-  wireDragging(canvases.sphere, turn);
+  wireSphereDragging(turn);
+  $("#add-key", HTMLButtonElement).addEventListener("click", () => {
+    const keys = run.state.keys;
+    if (keys.length >= 10) return;
+    // A new key a quarter turn about z from the last: [w, x, y, z] · (cos 45°, 0, 0, sin 45°).
+    const [w, x, y, z] = keys[keys.length - 1];
+    const c = Math.SQRT1_2;
+    withKeys([...keys, [c * (w - z), c * (x + y), c * (y - x), c * (z + w)].map((v) => Number(v.toFixed(4)))]);
+  });
+  $("#remove-key", HTMLButtonElement).addEventListener("click", () => {
+    if (run.state.keys.length > 3) withKeys(run.state.keys.slice(0, -1));
+  });
   wireKeyboard(canvases.sphere, {
     togglePlay: () => (run.playing ? pause() : play()),
     step: () => {},
@@ -249,6 +304,61 @@ function wire() {
     speed: () => {},
     turn,
   });
+}
+
+/** Dragging on the sphere: from a key's disc it moves the key, from anywhere else it turns the sphere. */
+function wireSphereDragging(/** @type {(azimuth: number, elevation: number) => void} */ turn) {
+  const sphere = canvases.sphere;
+  /** @type {{ x: number, y: number, key: number } | null} */
+  let drag = null;
+  let pending = false;
+  const local = (/** @type {PointerEvent} */ event) => {
+    const box = sphere.getBoundingClientRect();
+    return { x: event.clientX - box.left, y: event.clientY - box.top };
+  };
+  sphere.addEventListener("pointerdown", (event) => {
+    const demo = run.demo;
+    const size = run.sizes.sphere;
+    if (!demo || !size) return;
+    const { x, y } = local(event);
+    const points = demo.keyPoints(size.width, size.height, run.view[0], run.view[1]);
+    // The nearest key in front within 12 px, if any.
+    let key = -1;
+    let nearest = 12;
+    for (let i = 0; i < points.length / 3; i++) {
+      const distance = Math.hypot(points[3 * i] - x, points[3 * i + 1] - y);
+      if (points[3 * i + 2] === 1 && distance < nearest) [key, nearest] = [i, distance];
+    }
+    drag = { x: event.clientX, y: event.clientY, key };
+    sphere.setPointerCapture(event.pointerId);
+  });
+  sphere.addEventListener("pointermove", (event) => {
+    if (!drag) return;
+    if (drag.key < 0) {
+      turn(-(event.clientX - drag.x) * 0.01, (event.clientY - drag.y) * 0.01);
+      drag.x = event.clientX;
+      drag.y = event.clientY;
+      return;
+    }
+    if (pending) return;
+    pending = true;
+    const { x, y } = local(event);
+    const key = drag.key;
+    requestAnimationFrame(() => {
+      pending = false;
+      const demo = run.demo;
+      const size = run.sizes.sphere;
+      if (!demo || !size) return;
+      const moved = demo.keysWithKeyAt(key, size.width, size.height, run.view[0], run.view[1], x, y);
+      if (moved.length) {
+        /** @type {HTMLSelectElement} */ (form.elements.namedItem("key")).value = String(key);
+        withKeys(rows(moved));
+      }
+    });
+  });
+  const end = () => (drag = null);
+  sphere.addEventListener("pointerup", end);
+  sphere.addEventListener("pointercancel", end);
 }
 
 function observeSizes() {

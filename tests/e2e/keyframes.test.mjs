@@ -75,3 +75,52 @@ test("keyframes: WCAG 2.2 AA, embedded, and at 390 px", async () => {
   await narrow.page.screenshot({ path: join(artifacts, "keyframes-390px.png"), fullPage: true });
   await narrow.context.close();
 });
+
+test("a key edited as axis and angle, added, removed, and dragged on the sphere", async () => {
+  const { page, context, problems } = await open("keyframes.html");
+  await page.click("#play"); // pause
+  const keys = async () => (await page.inputValue("[name=keys]")).split(";").map((k) => k.split(",").map(Number));
+  // Key k1 as 90° about z: cos 45° + k sin 45°.
+  await page.selectOption("[name=key]", "1");
+  await page.fill("[name=key-ax]", "0");
+  await page.fill("[name=key-ay]", "0");
+  await page.fill("[name=key-az]", "1");
+  await page.fill("[name=key-angle]", "90");
+  const k1 = (await keys())[1];
+  assert.ok(Math.abs(k1[0] - Math.SQRT1_2) < 1e-5 && Math.abs(k1[3] - Math.SQRT1_2) < 1e-5, JSON.stringify(k1));
+  await page.fill("[name=key-angle]", "ninety");
+  assert.match(await page.textContent("#key-error"), /^angle must be a finite number/);
+  assert.equal(await page.getAttribute("[name=key-angle]", "aria-invalid"), "true");
+  await page.fill("[name=key-angle]", "90");
+  assert.equal(await page.textContent("#key-error"), "");
+  // 3 to 10 keys.
+  const count = (await keys()).length;
+  await page.click("#add-key");
+  assert.equal((await keys()).length, count + 1);
+  for (let i = 0; i < 10; i++) if (!(await page.isDisabled("#remove-key"))) await page.click("#remove-key");
+  assert.equal((await keys()).length, 3);
+  // Drag the disc of a key in front: the key turns, its Hopf point follows the pointer.
+  await page.locator("#spline-sphere").scrollIntoViewIfNeeded();
+  const box = await page.locator("#spline-sphere").boundingBox();
+  const points = await page.evaluate(async ([flat, width, height]) => {
+    const { SplineDemo, defaultSphereView } = await import("./pkg/spline_demo.js");
+    const demo = new SplineDemo(new Float64Array(flat), new Float64Array(0), 1);
+    const [azimuth, elevation] = defaultSphereView();
+    const points = Array.from(demo.keyPoints(width, height, azimuth, elevation));
+    demo.free();
+    return points;
+  }, [(await keys()).flat(), box.width, box.height]);
+  const index = [0, 1, 2].find((i) => points[3 * i + 2] === 1);
+  assert.ok(index !== undefined, `a key in front: ${points}`);
+  const point = points.slice(3 * index, 3 * index + 3);
+  const before = (await keys())[index];
+  await page.mouse.move(box.x + point[0], box.y + point[1]);
+  await page.mouse.down();
+  await page.mouse.move(box.x + point[0] + 30, box.y + point[1] + 20, { steps: 5 });
+  await page.mouse.up();
+  await page.waitForTimeout(100);
+  const after = (await keys())[index];
+  assert.ok(before.some((c, i) => Math.abs(c - after[i]) > 1e-3), `${before} → ${after}`);
+  assert.deepEqual(problems, []);
+  await context.close();
+});

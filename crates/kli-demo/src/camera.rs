@@ -46,6 +46,13 @@ impl Camera {
     pub fn toward_viewer(&self) -> DVec3 {
         self.toward_viewer
     }
+
+    /// The point of the unit sphere's front half that projects to screen `(x, y)`, if any.
+    pub fn unproject_on_sphere(&self, x: f64, y: f64) -> Option<DVec3> {
+        let depth_squared = 1.0 - x * x - y * y;
+        (depth_squared >= 0.0)
+            .then(|| self.right * x + self.up * y + self.toward_viewer * depth_squared.sqrt())
+    }
 }
 
 /// A rectangle of the canvas (CSS pixels) with a centre and a scale for unit lengths.
@@ -63,6 +70,14 @@ impl Viewport {
     /// A viewport whose unit disc of radius `extent` fills the smaller side (with a margin).
     pub fn fitting(left: f64, top: f64, width: f64, height: f64, extent: f64) -> Self {
         Self { left, top, width, height, scale: 0.5 * width.min(height) / extent }
+    }
+
+    /// The screen `(x, y)` of the projection at a pixel (the inverse of [`Viewport::pixel`]).
+    pub fn unpixel(&self, (px, py): (f64, f64)) -> (f64, f64) {
+        (
+            (px - self.left - 0.5 * self.width) / self.scale,
+            (self.top + 0.5 * self.height - py) / self.scale,
+        )
     }
 
     /// Screen pixel of a projected point.
@@ -104,5 +119,17 @@ mod tests {
         let v = Viewport::fitting(0.0, 0.0, 200.0, 100.0, 1.0);
         assert_eq!(v.pixel(Projected { x: 0.0, y: 0.0, depth: 0.0 }), (100.0, 50.0));
         assert_eq!(v.pixel(Projected { x: 1.0, y: 1.0, depth: 0.0 }), (150.0, 0.0));
+    }
+
+    #[test]
+    fn unprojecting_a_projected_front_point_gives_it_back() {
+        let camera = Camera::orbit(0.7, 0.3);
+        let viewport = Viewport::fitting(10.0, 20.0, 300.0, 200.0, 1.2);
+        let p = DVec3::new(0.2, 0.5, 0.7).normalize();
+        assert!(camera.project(p).depth > 0.0);
+        let (x, y) = viewport.unpixel(viewport.pixel(camera.project(p)));
+        let back = camera.unproject_on_sphere(x, y).unwrap();
+        assert!((back - p).length() < 1e-12, "{back:?}");
+        assert!(camera.unproject_on_sphere(1.5, 0.0).is_none());
     }
 }

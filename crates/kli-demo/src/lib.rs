@@ -11,7 +11,10 @@
 //! [`swarm_view`] and [`swarm_plots`], [`spline_demo`] for the keyframes page).
 
 // A page's build leaves the other pages' helpers unused.
-#![cfg_attr(not(all(feature = "kli-page", feature = "swarm-page", feature = "spline-page")), allow(dead_code, unused_imports))]
+#![cfg_attr(
+    not(all(feature = "kli-page", feature = "swarm-page", feature = "spline-page")),
+    allow(dead_code, unused_imports)
+)]
 
 pub mod aircraft;
 pub mod camera;

@@ -167,6 +167,105 @@ impl SplineDemo {
         Float64Array::from(&flat[..])
     }
 
+    /// Where each key's Hopf point is drawn by `drawSphere` with the same size and view: `3m`
+    /// numbers, `x`, `y` (CSS pixels) and 1 when in front, 0 when behind.
+    #[wasm_bindgen(js_name = keyPoints)]
+    pub fn key_points(
+        &self,
+        width: f64,
+        height: f64,
+        azimuth: f64,
+        elevation: f64,
+    ) -> Float64Array {
+        let viewport = sphere_viewport(width, height);
+        let camera = Camera::orbit(azimuth, elevation);
+        let flat: Vec<f64> = self
+            .keys
+            .quaternions()
+            .iter()
+            .flat_map(|&k| {
+                let p = camera.project(hopf(k));
+                let (x, y) = viewport.pixel(p);
+                [x, y, if p.depth >= 0.0 { 1.0 } else { 0.0 }]
+            })
+            .collect();
+        Float64Array::from(&flat[..])
+    }
+
+    /// The keys (`4m` numbers) with key `index` turned so that its Hopf point lands where the
+    /// pointer is, at CSS pixel `(x, y)` of the sphere drawn with this size and view: the turn is
+    /// the shortest rotation taking the old point to the new (`h(R q) = R h(q)`). Empty when the
+    /// pointer is off the sphere.
+    #[wasm_bindgen(js_name = keysWithKeyAt)]
+    #[allow(clippy::too_many_arguments)]
+    pub fn keys_with_key_at(
+        &self,
+        index: usize,
+        width: f64,
+        height: f64,
+        azimuth: f64,
+        elevation: f64,
+        x: f64,
+        y: f64,
+    ) -> Float64Array {
+        let viewport = sphere_viewport(width, height);
+        let (sx, sy) = viewport.unpixel((x, y));
+        let target = Camera::orbit(azimuth, elevation).unproject_on_sphere(sx, sy);
+        let keys = self.keys.quaternions();
+        let (Some(target), Some(&key)) = (target, keys.get(index)) else {
+            return Float64Array::new_with_length(0);
+        };
+        let turn = DQuat::from_rotation_arc(hopf(key), target);
+        let flat: Vec<f64> = keys
+            .iter()
+            .enumerate()
+            .flat_map(|(i, &k)| to_wxyz(if i == index { (turn * k).normalize() } else { k }))
+            .collect();
+        Float64Array::from(&flat[..])
+    }
+
+    /// Key `index` in polar form, `[Ux, Uy, Uz, θ]` (`θ` in radians, as `axisAngle`).
+    #[wasm_bindgen(js_name = keyAxisAngle)]
+    pub fn key_axis_angle(&self, index: usize) -> JsResult<Float64Array> {
+        let key = self.keys.quaternions().get(index).copied().ok_or_else(|| {
+            throw(KliError::invalid(
+                "index",
+                format!("must be below the number of keys ({})", self.keys.len()),
+            ))
+        })?;
+        let (axis, angle) = kli::axis_angle(key).map_err(throw)?;
+        Ok(Float64Array::from(&[axis.x, axis.y, axis.z, angle][..]))
+    }
+
+    /// The keys (`4m` numbers) with key `index` replaced by the rotation by `angle` radians about
+    /// `axis`; errors as `fromAxisAngle`'s (naming `axis` or `angle`).
+    #[wasm_bindgen(js_name = keysWithAxisAngle)]
+    pub fn keys_with_axis_angle(
+        &self,
+        index: usize,
+        axis: &[f64],
+        angle: f64,
+    ) -> JsResult<Float64Array> {
+        let axis = match axis {
+            [x, y, z] => DVec3::new(*x, *y, *z),
+            _ => {
+                return Err(throw(KliError::invalid(
+                    "axis",
+                    format!("must hold 3 numbers (got {})", axis.len()),
+                )));
+            }
+        };
+        let key = kli::from_axis_angle(axis, angle).map_err(throw)?;
+        let flat: Vec<f64> = self
+            .keys
+            .quaternions()
+            .iter()
+            .enumerate()
+            .flat_map(|(i, &k)| to_wxyz(if i == index { key } else { k }))
+            .collect();
+        Ok(Float64Array::from(&flat[..]))
+    }
+
     /// The object under each curve at `t`, side by side (stacked when narrow).
     #[wasm_bindgen(js_name = drawObjects)]
     pub fn draw_objects(
@@ -204,7 +303,7 @@ impl SplineDemo {
         t: f64,
     ) {
         let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
-        let viewport = Viewport::fitting(0.0, 0.0, width, height, 1.22);
+        let viewport = sphere_viewport(width, height);
         let camera = Camera::orbit(azimuth, elevation);
         let view = View { pen: &pen, viewport: &viewport, camera: &camera };
         let grid = grid();
@@ -277,6 +376,10 @@ impl SplineDemo {
             pen.line((x, panel.top), (x, panel.top + panel.height), MUTED, 1.0, &[2.0, 3.0]);
         }
     }
+}
+
+fn sphere_viewport(width: f64, height: f64) -> Viewport {
+    Viewport::fitting(0.0, 0.0, width, height, 1.22)
 }
 
 /// Drawing never fails: a non-finite time is drawn as t = 0.
