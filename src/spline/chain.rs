@@ -17,7 +17,7 @@
 
 use glam::{DQuat, DVec3};
 
-use super::{Curve, Keys, Squad, locate, slerp};
+use super::{Curve, Keys, PiecewiseSlerp, Squad, locate, slerp};
 use crate::error::{KliError, Requirement, require};
 
 /// The knobs of [`KliSpline::new`].
@@ -47,6 +47,9 @@ pub struct KliSpline {
     curve: Squad,
     /// Samples a segment: sample interval `i·S + j` is the `j`-th of segment `i`.
     per: usize,
+    /// At smoothness 0 the equilibrium is piecewise SLERP exactly, kinks at the keys included:
+    /// then it is evaluated as such (Squad through the samples would round the kinks).
+    exact: Option<PiecewiseSlerp>,
     residual: f64,
     iterations: usize,
 }
@@ -77,7 +80,8 @@ impl KliSpline {
         let chain = Chain::new(&times, 1.0 - smoothness, smoothness, pinned);
         let (iterations, residual) = chain.solve(&mut samples);
         let curve = Squad::new(Keys::new(&samples, Some(&times))?);
-        Ok(Self { keys, curve, per, residual, iterations })
+        let exact = (smoothness == 0.0).then(|| PiecewiseSlerp::new(keys.clone()));
+        Ok(Self { keys, curve, per, exact, residual, iterations })
     }
 
     /// The keys as used (signs consistent).
@@ -103,6 +107,9 @@ impl KliSpline {
 
 impl Curve for KliSpline {
     fn at(&self, t: f64) -> DQuat {
+        if let Some(exact) = &self.exact {
+            return exact.at(t);
+        }
         // The samples are even within a segment: find the segment, then the sample interval.
         let (segment, u) = locate(self.keys.times(), t);
         let position = u * self.per as f64;
