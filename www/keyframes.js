@@ -2,6 +2,7 @@
 // The keyframes page, wiring only: the keys and options to the module's SplineDemo (the three
 // curves, their figures and their views) and to kliSpline/squadSpline/slerpSpline for timing.
 import init, { SplineDemo, defaultSphereView, kliSpline, slerpSpline, squadSpline } from "./pkg/spline_demo.js";
+import { loadModule, observeCanvases } from "./canvases.js";
 import { $ } from "./dom.js";
 import { wireKeyboard } from "./input.js";
 import { formatNumber, parseNumber } from "./numbers.js";
@@ -361,31 +362,9 @@ function wireSphereDragging(/** @type {(azimuth: number, elevation: number) => v
   sphere.addEventListener("pointercancel", end);
 }
 
-function observeSizes() {
-  const observer = new ResizeObserver((entries) => {
-    const ratio = devicePixelRatio || 1;
-    for (const entry of entries) {
-      const name = Object.keys(canvases).find((key) => canvases[/** @type {keyof typeof canvases} */ (key)] === entry.target);
-      if (!name) continue;
-      const { width, height } = entry.contentRect;
-      run.sizes[name] = { width, height };
-      const canvas = /** @type {HTMLCanvasElement} */ (entry.target);
-      canvas.width = Math.max(1, Math.round(width * ratio));
-      canvas.height = Math.max(1, Math.round(height * ratio));
-    }
-    draw();
-  });
-  for (const canvas of Object.values(canvases)) observer.observe(canvas);
-}
 
 async function start() {
-  try {
-    await init();
-  } catch (error) {
-    ui.load.textContent = `The WebAssembly module could not be loaded: ${error instanceof Error ? error.message : error}`;
-    ui.load.classList.add("error");
-    return;
-  }
+  if (!(await loadModule(init, ui.load))) return;
   if (embed) document.body.classList.add("embed");
   run.view = Array.from(defaultSphereView());
   wire();
@@ -394,7 +373,7 @@ async function start() {
   if (!rebuild(state)) rebuild(PRESETS.tumble);
   ui.load.textContent = "";
   ui.load.hidden = true;
-  observeSizes();
+  observeCanvases(canvases, run.sizes, draw);
   if (!matchMedia("(prefers-reduced-motion: reduce)").matches) play();
 }
 

@@ -3,6 +3,7 @@
 // the canvases and the sweep. The model, its checks and all drawing are the module's
 // (crates/kli-demo/src/swarm_demo.rs).
 import init, { SwarmDemo, defaultSphereView } from "./pkg/swarm_demo.js";
+import { loadModule, observeCanvases } from "./canvases.js";
 import { $ } from "./dom.js";
 import { wireDragging, wireKeyboard } from "./input.js";
 import { parseNumber } from "./numbers.js";
@@ -227,22 +228,6 @@ function pause() {
 
 // ---- Start ----------------------------------------------------------------------------------
 
-function observeSizes() {
-  const observer = new ResizeObserver((entries) => {
-    const ratio = devicePixelRatio || 1;
-    for (const entry of entries) {
-      const name = Object.keys(canvases).find((key) => canvases[/** @type {keyof typeof canvases} */ (key)] === entry.target);
-      if (!name) continue;
-      const { width, height } = entry.contentRect;
-      run.sizes[name] = { width, height };
-      const canvas = /** @type {HTMLCanvasElement} */ (entry.target);
-      canvas.width = Math.max(1, Math.round(width * ratio));
-      canvas.height = Math.max(1, Math.round(height * ratio));
-    }
-    draw();
-  });
-  for (const canvas of Object.values(canvases)) observer.observe(canvas);
-}
 
 function wire() {
   form.addEventListener("submit", (event) => event.preventDefault());
@@ -285,13 +270,7 @@ function wire() {
 }
 
 async function start() {
-  try {
-    await init();
-  } catch (error) {
-    ui.load.textContent = `The WebAssembly module could not be loaded: ${error instanceof Error ? error.message : error}`;
-    ui.load.classList.add("error");
-    return;
-  }
+  if (!(await loadModule(init, ui.load))) return;
   if (embed) document.body.classList.add("embed");
   run.view = Array.from(defaultSphereView());
   wire();
@@ -300,7 +279,7 @@ async function start() {
   if (!rebuild(state)) rebuild(PRESETS.synchronise);
   ui.load.textContent = "";
   ui.load.hidden = true;
-  observeSizes();
+  observeCanvases(canvases, run.sizes, draw);
   if (!matchMedia("(prefers-reduced-motion: reduce)").matches) play();
 }
 

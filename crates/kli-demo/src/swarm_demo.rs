@@ -1,10 +1,9 @@
 //! The `SwarmDemo` class: the swarm page's run, a [`Swarm`] with its history, drawing its views
 //! onto canvas contexts the page passes in.
 
-use kli::KliError;
 use kli::swarm::{Graph, Swarm, SwarmOptions};
 use kli_wasm::error::{JsResult, throw};
-use kli_wasm::swarm::{SwarmOptionsObject, read_swarm_options};
+use kli_wasm::swarm::{SwarmOptionsObject, read_swarm_options, whole_steps};
 use wasm_bindgen::prelude::*;
 use web_sys::CanvasRenderingContext2d;
 
@@ -26,14 +25,6 @@ pub struct SwarmDemo {
     options: SwarmOptions,
     history: History,
     mesh: Vec<Face>,
-}
-
-fn whole_steps(steps: f64) -> Result<usize, KliError> {
-    if (0.0..=1e6).contains(&steps) && steps.fract() == 0.0 {
-        Ok(steps as usize)
-    } else {
-        Err(KliError::invalid("steps", "must be a whole number from 0 to 1000000".to_owned()))
-    }
 }
 
 #[wasm_bindgen]

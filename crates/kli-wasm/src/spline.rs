@@ -241,17 +241,20 @@ pub fn kli_spline(
     keys_and_options().map_err(throw)
 }
 
+/// The keys and the `{ times }` options of squadSpline and slerpSpline.
+fn keys_and_times(keys: &KeysLike, options: Option<SplineOptionsObject>) -> Result<Keys, KliError> {
+    let fields = Fields::new(options.map(JsValue::from), &["times"], "{ times: [0, 1, 2] }")?;
+    read_keys(keys, read_times(&fields)?)
+}
+
 /// Shoemake's Squad through `keys`, with helper points for uneven times.
 #[wasm_bindgen(js_name = squadSpline)]
 pub fn squad_spline(
     keys: &KeysLike,
     options: Option<SplineOptionsObject>,
 ) -> JsResult<RotationSpline> {
-    let read = || -> Result<Keys, KliError> {
-        let fields = Fields::new(options.map(JsValue::from), &["times"], "{ times: [0, 1, 2] }")?;
-        read_keys(keys, read_times(&fields)?)
-    };
-    Ok(RotationSpline { kind: Kind::Squad(Squad::new(read().map_err(throw)?)) })
+    let keys = keys_and_times(keys, options).map_err(throw)?;
+    Ok(RotationSpline { kind: Kind::Squad(Squad::new(keys)) })
 }
 
 /// SLERP from key to key.
@@ -260,9 +263,6 @@ pub fn slerp_spline(
     keys: &KeysLike,
     options: Option<SplineOptionsObject>,
 ) -> JsResult<RotationSpline> {
-    let read = || -> Result<Keys, KliError> {
-        let fields = Fields::new(options.map(JsValue::from), &["times"], "{ times: [0, 1, 2] }")?;
-        read_keys(keys, read_times(&fields)?)
-    };
-    Ok(RotationSpline { kind: Kind::Slerp(PiecewiseSlerp::new(read().map_err(throw)?)) })
+    let keys = keys_and_times(keys, options).map_err(throw)?;
+    Ok(RotationSpline { kind: Kind::Slerp(PiecewiseSlerp::new(keys)) })
 }

@@ -82,6 +82,17 @@ pub fn read_swarm_options(value: Option<SwarmOptionsObject>) -> Result<SwarmOpti
     Ok(options)
 }
 
+/// `steps` as a count: a whole number from 0 to 1e6 (a step count from JavaScript).
+pub fn whole_steps(steps: f64) -> Result<usize, KliError> {
+    if (0.0..=1e6).contains(&steps) && steps.fract() == 0.0 {
+        Ok(steps as usize)
+    } else {
+        let problem =
+            format!("must be a whole number from 0 to 1000000 (got {})", describe(&steps.into()));
+        Err(KliError::invalid("steps", problem))
+    }
+}
+
 /// N oscillators on S³ under `q_i' = w_i q_i + (K/N) Σ_j a_ij (q_j − (q_i·q_j) q_i)`.
 #[wasm_bindgen(js_name = LoheSwarm)]
 pub struct JsLoheSwarm {
@@ -99,15 +110,8 @@ impl JsLoheSwarm {
 
     /// `steps` (default 1, a whole number up to 1e6) geodesic RK4 steps of `dt` (finite, > 0).
     pub fn step(&mut self, dt: f64, steps: Option<f64>) -> JsResult<()> {
-        let steps = steps.unwrap_or(1.0);
-        if !((0.0..=1e6).contains(&steps) && steps.fract() == 0.0) {
-            let problem = format!(
-                "must be a whole number from 0 to 1000000 (got {})",
-                describe(&steps.into())
-            );
-            return Err(throw(KliError::invalid("steps", problem)));
-        }
-        self.swarm.step(dt, steps as usize).map_err(throw)
+        let steps = whole_steps(steps.unwrap_or(1.0)).map_err(throw)?;
+        self.swarm.step(dt, steps).map_err(throw)
     }
 
     /// The time run so far.
