@@ -1,8 +1,11 @@
-// Writes pkg/package.json for the ES module that wasm-bindgen generated in pkg/, taking the npm
-// name, the version, description and licence from the Cargo manifests so they never disagree.
-import { readFileSync, writeFileSync, existsSync } from "node:fs";
+// Finishes pkg/ for npm around the ES modules that wasm-bindgen generated: a Node entry for each
+// module (so `await init()` reads the .wasm from disk there, where fetch cannot), type
+// declarations that compile with `lib: es2022`, and package.json, with the npm name, version,
+// description and licence from the Cargo manifests so they never disagree.
+import { readFileSync, writeFileSync, existsSync, copyFileSync } from "node:fs";
 
-const manifest = (path) => readFileSync(new URL(`../${path}`, import.meta.url), "utf8");
+const at = (path) => new URL(`../${path}`, import.meta.url);
+const manifest = (path) => readFileSync(at(path), "utf8");
 const field = (toml, name) => {
   const match = toml.match(new RegExp(`^${name}\\s*=\\s*"([^"]*)"`, "m"));
   if (!match) throw new Error(`no ${name} in the Cargo manifest`);
@@ -14,11 +17,31 @@ const crate = manifest("crates/kli-wasm/Cargo.toml");
 // Entries with a module each: `kli` (two rotations), `kli/swarm` (LoheSwarm), `kli/spline` (many
 // keyframes).
 const modules = ["kli", "swarm", "spline"];
-const files = [...modules.flatMap((m) => [`${m}.js`, `${m}.d.ts`, `${m}_bg.wasm`, `${m}_bg.wasm.d.ts`]), "README.md"];
-for (const file of files) {
-  if (!existsSync(new URL(`../pkg/${file}`, import.meta.url))) throw new Error(`pkg/${file} is missing`);
-}
+for (const m of modules) {
+  for (const file of [`${m}.js`, `${m}.d.ts`, `${m}_bg.wasm`, `${m}_bg.wasm.d.ts`]) {
+    if (!existsSync(at(`pkg/${file}`))) throw new Error(`pkg/${file} is missing`);
+  }
+  // The classes declare [Symbol.dispose] (for `using`): the reference lets `lib: es2022` projects
+  // compile the declarations without adding esnext.disposable themselves.
+  const types = manifest(`pkg/${m}.d.ts`);
+  if (!types.startsWith("/// <reference lib")) writeFileSync(at(`pkg/${m}.d.ts`), `/// <reference lib="esnext.disposable" />\n${types}`);
+  writeFileSync(at(`pkg/${m}.node.js`), `// Node (and SSR, Vitest): the same module, with init() reading the .wasm beside this file
+// from disk when given nothing, where the browser entry would fetch it (fetch cannot read file:).
+import init from "./${m}.js";
+import { readFile } from "node:fs/promises";
 
+export * from "./${m}.js";
+export { initSync } from "./${m}.js";
+
+export default async function initNode(input) {
+  if (input === undefined) input = { module_or_path: await readFile(new URL("./${m}_bg.wasm", import.meta.url)) };
+  return init(input);
+}
+`);
+}
+copyFileSync(at("LICENSE"), at("pkg/LICENSE"));
+
+const entry = (m) => ({ types: `./${m}.d.ts`, node: `./${m}.node.js`, default: `./${m}.js` });
 const json = {
   name: field(crate.split("[package.metadata.npm]")[1], "name"),
   version: field(workspace, "version"),
@@ -28,18 +51,17 @@ const json = {
   main: "kli.js",
   module: "kli.js",
   types: "kli.d.ts",
+  engines: { node: ">=18" },
   exports: {
-    ".": { types: "./kli.d.ts", default: "./kli.js" },
-    "./kli_bg.wasm": "./kli_bg.wasm",
-    "./swarm": { types: "./swarm.d.ts", default: "./swarm.js" },
-    "./swarm_bg.wasm": "./swarm_bg.wasm",
-    "./spline": { types: "./spline.d.ts", default: "./spline.js" },
-    "./spline_bg.wasm": "./spline_bg.wasm",
+    ".": entry("kli"),
+    "./swarm": entry("swarm"),
+    "./spline": entry("spline"),
+    ...Object.fromEntries(modules.map((m) => [`./${m}_bg.wasm`, { types: `./${m}_bg.wasm.d.ts`, default: `./${m}_bg.wasm` }])),
     "./package.json": "./package.json",
   },
-  files,
+  files: [...modules.flatMap((m) => [`${m}.js`, `${m}.node.js`, `${m}.d.ts`, `${m}_bg.wasm`, `${m}_bg.wasm.d.ts`]), "README.md", "LICENSE"],
   sideEffects: false,
   keywords: ["quaternion", "rotation", "slerp", "interpolation", "kuramoto", "hopf", "wasm"],
 };
-writeFileSync(new URL("../pkg/package.json", import.meta.url), JSON.stringify(json, null, 2) + "\n");
+writeFileSync(at("pkg/package.json"), JSON.stringify(json, null, 2) + "\n");
 console.log(`pkg/package.json: ${json.name}@${json.version}`);

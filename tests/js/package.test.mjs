@@ -26,15 +26,17 @@ before(() => {
 
 test("the tarball holds every file the package needs, and only those", () => {
   const installed = readdirSync(join(project, "node_modules/kli")).sort();
-  assert.deepEqual(installed, ["README.md", "kli.d.ts", "kli.js", "kli_bg.wasm", "kli_bg.wasm.d.ts", "package.json",
-    "spline.d.ts", "spline.js", "spline_bg.wasm", "spline_bg.wasm.d.ts", "swarm.d.ts", "swarm.js", "swarm_bg.wasm",
-    "swarm_bg.wasm.d.ts"]);
+  const entry = (m) => [`${m}.d.ts`, `${m}.js`, `${m}.node.js`, `${m}_bg.wasm`, `${m}_bg.wasm.d.ts`];
+  assert.deepEqual(installed, ["LICENSE", "README.md", ...entry("kli"), "package.json", ...entry("spline"), ...entry("swarm")].sort());
   const manifest = JSON.parse(readFileSync(join(project, "node_modules/kli/package.json"), "utf8"));
   const cargo = readFileSync(join(root, "Cargo.toml"), "utf8");
   assert.equal(manifest.version, cargo.match(/^version = "(.*)"/m)[1]);
   assert.equal(manifest.type, "module");
   assert.equal(manifest.types, "kli.d.ts");
   assert.equal(manifest.sideEffects, false);
+  assert.equal(manifest.license, "MIT");
+  assert.match(readFileSync(join(project, "node_modules/kli/LICENSE"), "utf8"), /^MIT License/);
+  assert.equal(manifest.engines.node, ">=18");
 });
 
 test("imports by name in Node with initSync and gives T = 11.66", () => {
@@ -49,6 +51,19 @@ test("imports by name in Node with initSync and gives T = 11.66", () => {
   assert.ok(Math.abs(T - 11.66) < 1e-9, `T = ${T}`);
   assert.equal(steps, 1166);
   assert.ok(Math.abs(star - 11.6568) < 5e-5, `T* = ${star}`);
+});
+
+test("await init() works in Node for every entry, with no argument (the node export condition)", () => {
+  writeFileSync(join(project, "init.mjs"), `
+    import init, { kli } from "kli";
+    import initSwarm, { LoheSwarm } from "kli/swarm";
+    import initSpline, { kliSpline } from "kli/spline";
+    await Promise.all([init(), initSwarm(), initSpline()]);
+    const swarm = new LoheSwarm({ count: 3 });
+    console.log(JSON.stringify({ T: kli([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]).finalTime, count: swarm.count,
+      hit: kliSpline([[1, 0, 0, 0], [0, 1, 0, 0]]).at(1)[1] }));
+  `);
+  assert.deepEqual(run("init.mjs"), { T: 11.66, count: 3, hit: 1 });
 });
 
 test("the kli/swarm entry loads its own module and synchronises a swarm", () => {
@@ -143,6 +158,10 @@ test("the TypeScript types are precise: right use compiles, wrong use does not",
     import { kli, slerp, hopf, axisAngle, type KliOptions, type KliPath, type Integrator, type KliError, type KliErrorKind } from "kli";
     import { LoheSwarm, type SwarmOptions } from "kli/swarm";
     import { kliSpline, type KliSpline } from "kli/spline";
+    // The .wasm subpath has types too (its raw exports, for bundlers that import wasm).
+    import type { memory } from "kli/kli_bg.wasm";
+    const raw: typeof memory | undefined = undefined;
+    void raw;
     const options: KliOptions = { tolerance: 1e-5, step: 0.01, maxTime: 100, integrator: "geodesic", shortestPath: true };
     const path: KliPath = kli([0, 0, 0, 1], new Float64Array([0.5, 0.5, 0.5, 0.5]), options);
     const T: number = path.finalTime;
@@ -192,9 +211,17 @@ test("the TypeScript types are precise: right use compiles, wrong use does not",
     compilerOptions: { strict: true, noEmit: true, module: "nodenext", moduleResolution: "nodenext", target: "es2022", lib: ["esnext", "dom"], skipLibCheck: false },
     files: ["use.ts"],
   }));
-  try {
-    execFileSync(bin("tsc"), ["-p", "tsconfig.json"], { cwd: project, encoding: "utf8" });
-  } catch (e) {
-    assert.fail(`tsc: ${e.stdout}${e.stderr}`);
+  // With the newest library, and with es2022 (whose lib has no Symbol.dispose: the declarations
+  // reference esnext.disposable themselves).
+  for (const lib of [["esnext", "dom"], ["es2022", "dom"]]) {
+    writeFileSync(join(project, "tsconfig.json"), JSON.stringify({
+      compilerOptions: { strict: true, noEmit: true, module: "nodenext", moduleResolution: "nodenext", target: "es2022", lib, skipLibCheck: false },
+      files: ["use.ts"],
+    }));
+    try {
+      execFileSync(bin("tsc"), ["-p", "tsconfig.json"], { cwd: project, encoding: "utf8" });
+    } catch (e) {
+      assert.fail(`tsc with lib ${lib}: ${e.stdout}${e.stderr}`);
+    }
   }
 });
