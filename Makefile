@@ -121,7 +121,7 @@ test-wasm-browser: setup-rust setup-browser
 test-package: pkg
 	node --test tests/js/
 
-test-page: www setup-browser
+test-page: pkg www setup-browser
 	node --test tests/e2e/
 
 # Benchmarks, not tests: nothing here is asserted by `make test`.
