@@ -153,34 +153,49 @@ function showError(/** @type {unknown} */ error) {
   for (const n of marked) field(n).setAttribute("aria-invalid", "true");
 }
 
-/** The table: the module's figures, and solve and evaluation times measured here. */
+/** The table: the module's figures at once, and a moment after the last change (not on every
+ *  move of a dragged key) the solve and evaluation times, measured here. */
 function fillFigures(/** @type {SplineDemo} */ demo, /** @type {SplineState} */ state) {
-  const keys = new Float64Array(state.keys.flat());
-  const options = state.times.length ? { times: state.times } : {};
-  const timed = (/** @type {() => any} */ f) => {
-    const start = performance.now();
-    const value = f();
-    return { value, ms: performance.now() - start };
-  };
-  const curves = [
-    timed(() => kliSpline(keys, { ...options, smoothness: state.smoothness })),
-    timed(() => squadSpline(keys, options)),
-    timed(() => slerpSpline(keys, options)),
-  ];
-  const times = Float64Array.from({ length: 1e4 }, (_, k) => demo.startTime + ((demo.endTime - demo.startTime) * k) / (1e4 - 1));
   const figures = demo.figures;
   const body = $("#figures tbody", HTMLTableSectionElement);
   body.replaceChildren();
   ["Kuramoto–Lohe chain", "Squad", "piecewise SLERP"].forEach((name, i) => {
-    const evaluation = timed(() => curves[i].value.sample(times));
     const row = body.insertRow();
     const cells = [name, figures[4 * i].toExponential(1), figures[4 * i + 1].toFixed(3), figures[4 * i + 2].toFixed(3),
-      figures[4 * i + 3].toFixed(3), curves[i].ms.toFixed(2), evaluation.ms.toFixed(2)];
+      figures[4 * i + 3].toFixed(3), "…", "…"];
     for (const text of cells) row.insertCell().textContent = text;
-    curves[i].value.free();
   });
   ui.solve.textContent = `The chain: ${demo.iterations} Newton steps to a residual of ${demo.residual.toExponential(1)}; ` +
     `its ∫|ω̇|² is ${(figures[2] / figures[6]).toFixed(3)} of Squad's.`;
+  clearTimeout(timing);
+  timing = setTimeout(() => fillTimes(demo.startTime, demo.endTime, state), 300);
+}
+
+let timing = 0;
+
+/** The last two columns: each curve built from the package's API and sampled at 10⁴ times. */
+function fillTimes(/** @type {number} */ start, /** @type {number} */ end, /** @type {SplineState} */ state) {
+  const keys = new Float64Array(state.keys.flat());
+  const options = state.times.length ? { times: state.times } : {};
+  const timed = (/** @type {() => any} */ f) => {
+    const begin = performance.now();
+    const value = f();
+    return { value, ms: performance.now() - begin };
+  };
+  const times = Float64Array.from({ length: 1e4 }, (_, k) => start + ((end - start) * k) / (1e4 - 1));
+  const builders = [
+    () => kliSpline(keys, { ...options, smoothness: state.smoothness }),
+    () => squadSpline(keys, options),
+    () => slerpSpline(keys, options),
+  ];
+  const rows = $("#figures tbody", HTMLTableSectionElement).rows;
+  builders.forEach((build, i) => {
+    const curve = timed(build);
+    const evaluation = timed(() => curve.value.sample(times));
+    curve.value.free();
+    rows[i].cells[5].textContent = curve.ms.toFixed(2);
+    rows[i].cells[6].textContent = evaluation.ms.toFixed(2);
+  });
 }
 
 // ---- Frames ---------------------------------------------------------------------------------

@@ -141,6 +141,7 @@ function rebuild(/** @type {SwarmState} */ state) {
     : "";
   writeUrl(urlOf(state));
   draw();
+  drawSweep(); // its marker follows K; otherwise it changes only while a sweep runs
   return true;
 }
 
@@ -178,7 +179,6 @@ function draw() {
   ui.readout.textContent = `t = ${demo.time.toFixed(2)}   R = ${demo.orderParameter.toFixed(3)}   λmax = ${demo.rotationOrder.toFixed(3)}` +
     (demo.isKli ? `   τ = Kt/2 = ${demo.kliTime.toFixed(2)}` : "");
   if (!run.playing) ui.status.textContent = ui.readout.textContent ?? "";
-  drawSweep();
 }
 
 function drawSweep() {
@@ -279,7 +279,10 @@ async function start() {
   if (!rebuild(state)) rebuild(PRESETS.synchronise);
   ui.load.textContent = "";
   ui.load.hidden = true;
-  observeCanvases(canvases, run.sizes, draw);
+  observeCanvases(canvases, run.sizes, () => {
+    draw();
+    drawSweep();
+  });
   if (!matchMedia("(prefers-reduced-motion: reduce)").matches) play();
 }
 
