@@ -34,6 +34,9 @@ pub enum Requirement {
 pub enum Shape {
     /// A quaternion `[w, x, y, z]`, scalar first.
     Quaternion,
+    /// A quaternion `[x, y, z, w]`, scalar last (three.js, gl-matrix, glTF): how a binding names
+    /// the components of an argument its caller laid out so.
+    QuaternionXyzw,
     /// A 3-vector `[x, y, z]`.
     Vector3,
 }
@@ -42,6 +45,7 @@ impl Shape {
     fn components(self) -> &'static [&'static str] {
         match self {
             Shape::Quaternion => &["w", "x", "y", "z"],
+            Shape::QuaternionXyzw => &["x", "y", "z", "w"],
             Shape::Vector3 => &["x", "y", "z"],
         }
     }
@@ -49,6 +53,7 @@ impl Shape {
     fn describe(self) -> &'static str {
         match self {
             Shape::Quaternion => "a quaternion of 4 finite numbers [w, x, y, z], not all zero",
+            Shape::QuaternionXyzw => "a quaternion of 4 finite numbers [x, y, z, w], not all zero",
             Shape::Vector3 => "3 finite numbers [x, y, z], not all zero",
         }
     }

@@ -141,6 +141,39 @@ test("errors thrown through the generated glue are Errors, and the module keeps 
   assert.equal(T2, 11.66);
 });
 
+test("three.js and gl-matrix quaternions go in and come out as they are, scalar last", () => {
+  // three.js and gl-matrix from the dev dependencies, the package from the tarball.
+  writeFileSync(join(project, "three.mjs"), `
+    import * as THREE from ${JSON.stringify(join(root, "node_modules/three/build/three.module.js"))};
+    import { quat } from ${JSON.stringify(join(root, "node_modules/gl-matrix/esm/index.js"))};
+    import init, { kli, kliExact, slerp, slerpBatch } from "kli";
+    await init();
+    const order = "xyzw";
+    const p = new THREE.Quaternion(0, 0, 0, 1).setFromAxisAngle(new THREE.Vector3(0, 0, 1), Math.PI / 2);
+    const r = new THREE.Quaternion(0.5, 0.5, 0.5, 0.5);
+    const path = kli(p, r, { order });
+    // kli's answer straight into three.js, and three.js's own slerp beside kli's.
+    const mesh = new THREE.Object3D();
+    mesh.quaternion.fromArray(kliExact(p, r, 2, { order }));
+    const three = p.clone().slerp(r, 0.3).toArray();
+    const ours = Array.from(slerp(p, r, 0.3, { order }));
+    // gl-matrix's quat is a Float32Array [x, y, z, w].
+    const a = quat.setAxisAngle(quat.create(), [1, 0, 0], 1), b = quat.setAxisAngle(quat.create(), [0, 1, 0], 2);
+    const gl = Array.from(quat.slerp(quat.create(), a, b, 0.4));
+    const batch = Array.from(slerpBatch(new Float64Array(a), new Float64Array(b), new Float64Array([0.4]), new Float64Array(4), { order }));
+    const plain = Array.from(kliExact([p.w, p.x, p.y, p.z], [r.w, r.x, r.y, r.z], 2));
+    console.log(JSON.stringify({ T: path.finalTime, target: Array.from(path.target), mesh: mesh.quaternion.toArray(), plain, three, ours, gl, batch }));
+  `);
+  const { T, target, mesh, plain, three, ours, gl, batch } = run("three.mjs");
+  // The same pair as the paper's up to a turn of p: T is finite and the target is r, scalar last.
+  assert.ok(T > 0 && T < 20, `T = ${T}`);
+  assert.deepEqual(target, [0.5, 0.5, 0.5, 0.5]);
+  assert.deepEqual(mesh, [plain[1], plain[2], plain[3], plain[0]]);
+  three.forEach((c, i) => assert.ok(Math.abs(c - ours[i]) < 1e-6, `three.js ${three} vs kli ${ours}`));
+  // gl-matrix works in float32.
+  gl.forEach((c, i) => assert.ok(Math.abs(c - batch[i]) < 1e-6, `gl-matrix ${gl} vs kli ${batch}`));
+});
+
 test("bundles with esbuild and runs", () => {
   writeFileSync(join(project, "entry.mjs"), `
     import init, { initSync, kli } from "kli";
@@ -191,6 +224,13 @@ test("the TypeScript types are precise: right use compiles, wrong use does not",
     kli("abcd", [1, 0, 0, 0]);
     // @ts-expect-error: finalTime is read-only
     path.finalTime = 3;
+    // Scalar last, and { x, y, z, w } objects (a THREE.Quaternion's shape).
+    const last: Float64Array = slerp({ x: 0, y: 0, z: 0, w: 1 }, [0, 1, 0, 0], 0.5, { order: "xyzw" });
+    // @ts-expect-error: not an order
+    slerp([1, 0, 0, 0], [0, 1, 0, 0], 0.5, { order: "zyxw" });
+    // @ts-expect-error: an object needs all four
+    hopf({ x: 0, y: 0, z: 1 });
+    void last;
     const spline: KliSpline = kliSpline([[1, 0, 0, 0], [0, 1, 0, 0]], { smoothness: 0.5, times: [0, 2] });
     const w: Float64Array = spline.angularVelocity(1);
     const residual: number | undefined = spline.residual;

@@ -1,11 +1,9 @@
 //! The `Demo` class: one per choice of `p`, `r` and options, holding the computed [`Scene`] and
 //! drawing its views onto canvas contexts the page passes in.
 
-use glam::DQuat;
-use kli::quaternion::to_wxyz;
 use kli_wasm::error::{JsResult, throw};
 use kli_wasm::options::{KliOptionsObject, read_options};
-use kli_wasm::read::{QuaternionLike, quaternion};
+use kli_wasm::read::{Order, QuaternionLike, quaternion};
 use wasm_bindgen::prelude::*;
 use web_sys::CanvasRenderingContext2d;
 
@@ -25,10 +23,8 @@ pub struct Demo {
     scene: Scene,
     mesh: Vec<Face>,
     flipped: bool,
-}
-
-fn to_array(q: DQuat) -> Vec<f64> {
-    to_wxyz(q).to_vec()
+    /// How quaternions go in and out, as in the package's calls.
+    order: Order,
 }
 
 #[wasm_bindgen]
@@ -40,13 +36,13 @@ impl Demo {
         r: &QuaternionLike,
         options: Option<KliOptionsObject>,
     ) -> JsResult<Demo> {
-        let options = read_options(options).map_err(throw)?;
-        let p = quaternion("p", p).map_err(throw)?;
-        let r = quaternion("r", r).map_err(throw)?;
+        let (options, order) = read_options(options).map_err(throw)?;
+        let p = quaternion("p", p, order).map_err(throw)?;
+        let r = quaternion("r", r, order).map_err(throw)?;
         let path = kli::kli(p, r, &options).map_err(throw)?;
         // The target is r or -r bit for bit, so this is the core's own choice, not a re-derivation.
         let flipped = path.target() != r;
-        Ok(Demo { scene: Scene::new(path), mesh: aircraft(), flipped })
+        Ok(Demo { scene: Scene::new(path), mesh: aircraft(), flipped, order })
     }
 
     /// Whether the flow goes to −r (shortestPath and p·r < 0): the same rotation as r.
@@ -76,7 +72,7 @@ impl Demo {
     /// The end actually used: r, or −r when shortestPath and p·r < 0.
     #[wasm_bindgen(getter)]
     pub fn target(&self) -> Vec<f64> {
-        to_array(self.scene.path().target())
+        self.order.write(self.scene.path().target()).to_vec()
     }
 
     /// Table 1's moments that lie before T, then T.
@@ -88,19 +84,19 @@ impl Demo {
     /// The integrated q at t (between samples by normalised linear interpolation).
     #[wasm_bindgen(js_name = integratedAt)]
     pub fn integrated_at(&self, t: f64) -> Vec<f64> {
-        to_array(self.scene.integrated_at(finite(t)))
+        self.order.write(self.scene.integrated_at(finite(t))).to_vec()
     }
 
     /// The exact q(t) of the closed form, as `KliPath.exactAt`.
     #[wasm_bindgen(js_name = exactAt)]
     pub fn exact_at(&self, t: f64) -> JsResult<Vec<f64>> {
-        self.scene.path().exact_at(t).map(to_array).map_err(throw)
+        self.scene.path().exact_at(t).map(|q| self.order.write(q).to_vec()).map_err(throw)
     }
 
     /// SLERP on the same clock, s = t / T.
     #[wasm_bindgen(js_name = slerpAt)]
     pub fn slerp_at(&self, t: f64) -> Vec<f64> {
-        to_array(self.scene.slerp_at(finite(t)))
+        self.order.write(self.scene.slerp_at(finite(t))).to_vec()
     }
 
     /// The rotating object at t: KLI, and SLERP at s = t/T beside it (Fig. 2, live).

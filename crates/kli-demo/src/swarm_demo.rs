@@ -32,7 +32,7 @@ impl SwarmDemo {
     /// A swarm from the options of `new LoheSwarm(options)`, with the same checks and errors.
     #[wasm_bindgen(constructor)]
     pub fn new(options: Option<SwarmOptionsObject>) -> JsResult<SwarmDemo> {
-        let options = read_swarm_options(options).map_err(throw)?;
+        let (options, _) = read_swarm_options(options).map_err(throw)?;
         let swarm = Swarm::new(&options).map_err(throw)?;
         let mut demo = SwarmDemo { swarm, options, history: History::default(), mesh: aircraft() };
         demo.record();
@@ -162,7 +162,7 @@ impl SwarmDemo {
         coupling: f64,
         time: f64,
     ) -> JsResult<f64> {
-        let options = SwarmOptions { coupling, ..read_swarm_options(options).map_err(throw)? };
+        let options = SwarmOptions { coupling, ..read_swarm_options(options).map_err(throw)?.0 };
         let mut swarm = Swarm::new(&options).map_err(throw)?;
         let steps = whole_steps((time / 0.05).round()).map_err(throw)?;
         let settle = steps - steps / 5;

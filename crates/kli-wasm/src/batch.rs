@@ -11,7 +11,7 @@ use wasm_bindgen::prelude::*;
 
 use crate::error::{JsResult, throw};
 use crate::options::{KliOptionsObject, read_options};
-use crate::read::{QuaternionLike, describe, float64_array, quaternion};
+use crate::read::{Order, QuaternionLike, describe, float64_array, quaternion};
 
 /// Pairs per chunk: 4096 × 13 numbers × 8 bytes = 416 KB of scratch.
 const CHUNK: usize = 4096;
@@ -89,7 +89,8 @@ fn run(
 }
 
 /// `out[4i..4i+4] = Slerp(starts[i], ends[i]; s[i])` for n pairs (arrays of 4n, 4n, n, 4n
-/// numbers, scalar first); returns `out`. Same checks as `slerp`; errors name the element.
+/// numbers, scalar first or, with `order: "xyzw"`, last, read in place either way); returns
+/// `out`. Same checks as `slerp`; errors name the element.
 #[wasm_bindgen(js_name = slerpBatch)]
 pub fn slerp_batch(
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] starts: &JsValue,
@@ -98,8 +99,9 @@ pub fn slerp_batch(
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] out: &JsValue,
     options: Option<KliOptionsObject>,
 ) -> JsResult<Float64Array> {
-    let shortest_path = read_options(options).map_err(throw)?.shortest_path;
-    run(BatchKind::Slerp, starts, ends, s, out, shortest_path).map_err(throw)?;
+    let (options, order) = read_options(options).map_err(throw)?;
+    run(BatchKind::Slerp, starts, ends, s, out, options.shortest_path)
+        .map_err(|e| throw(order.batch_error(e)))?;
     Ok(out.clone().unchecked_into())
 }
 
@@ -113,8 +115,9 @@ pub fn kli_exact_batch(
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] out: &JsValue,
     options: Option<KliOptionsObject>,
 ) -> JsResult<Float64Array> {
-    let shortest_path = read_options(options).map_err(throw)?.shortest_path;
-    run(BatchKind::KliExact, starts, ends, t, out, shortest_path).map_err(throw)?;
+    let (options, order) = read_options(options).map_err(throw)?;
+    run(BatchKind::KliExact, starts, ends, t, out, options.shortest_path)
+        .map_err(|e| throw(order.batch_error(e)))?;
     Ok(out.clone().unchecked_into())
 }
 
@@ -140,8 +143,9 @@ pub fn kli_sample(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | ArrayLike<number>")] times: &JsValue,
     options: Option<KliOptionsObject>,
 ) -> JsResult<Float64Array> {
-    let shortest_path = read_options(options).map_err(throw)?.shortest_path;
-    let (p, r) = (quaternion("p", p).map_err(throw)?, quaternion("r", r).map_err(throw)?);
+    let (options, order) = read_options(options).map_err(throw)?;
+    let p = quaternion("p", p, order).map_err(throw)?;
+    let r = quaternion("r", r, order).map_err(throw)?;
     let times: Vec<f64> = if let Some(array) = times.dyn_ref::<Float64Array>() {
         array.to_vec()
     } else if times.is_object() {
@@ -152,6 +156,9 @@ pub fn kli_sample(
         return Err(throw(KliError::invalid("times", problem)));
     };
     let mut out = vec![0.0; 4 * times.len()];
-    kli_sample_into(p, r, &times, &mut out, shortest_path).map_err(throw)?;
+    kli_sample_into(p, r, &times, &mut out, options.shortest_path).map_err(throw)?;
+    if order == Order::Xyzw {
+        out.chunks_exact_mut(4).for_each(|q| q.rotate_left(1));
+    }
     Ok(Float64Array::from(&out[..]))
 }

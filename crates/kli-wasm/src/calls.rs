@@ -3,28 +3,29 @@
 use glam::DQuat;
 use js_sys::Float64Array;
 use kli::KliOptions;
-use kli::quaternion::to_wxyz;
 use wasm_bindgen::prelude::*;
 
 use crate::error::{JsResult, throw};
 use crate::options::{KliOptionsObject, read_options};
 use crate::path::JsKliPath;
-use crate::read::{QuaternionLike, Vector3Like, quaternion, vector3};
+use crate::read::{Order, QuaternionLike, Vector3Like, quaternion, vector3};
 
-fn to_array(q: DQuat) -> Float64Array {
-    Float64Array::from(&to_wxyz(q)[..])
-}
-
-/// The options, then `p` and `r`, read and checked in that order.
+/// The options, then `p` and `r` (in the options' `order`), read and checked in that order.
 fn pair_and_options(
     p: &QuaternionLike,
     r: &QuaternionLike,
     options: Option<KliOptionsObject>,
-) -> JsResult<(DQuat, DQuat, KliOptions)> {
-    let options = read_options(options).map_err(throw)?;
-    let p = quaternion("p", p).map_err(throw)?;
-    let r = quaternion("r", r).map_err(throw)?;
-    Ok((p, r, options))
+) -> JsResult<(DQuat, DQuat, KliOptions, Order)> {
+    let (options, order) = read_options(options).map_err(throw)?;
+    let p = quaternion("p", p, order).map_err(throw)?;
+    let r = quaternion("r", r, order).map_err(throw)?;
+    Ok((p, r, options, order))
+}
+
+/// The options' `order`, then `q` in it.
+fn one(q: &QuaternionLike, options: Option<KliOptionsObject>) -> JsResult<(DQuat, Order)> {
+    let (_, order) = read_options(options).map_err(throw)?;
+    Ok((quaternion("q", q, order).map_err(throw)?, order))
 }
 
 /// Runs the KLI algorithm (paper, Algorithm 1) from p towards r. The last sample is within the
@@ -35,8 +36,9 @@ pub fn kli(
     r: &QuaternionLike,
     options: Option<KliOptionsObject>,
 ) -> JsResult<JsKliPath> {
-    let (p, r, options) = pair_and_options(p, r, options)?;
-    kli::kli(p, r, &options).map(JsKliPath::from).map_err(throw)
+    let (p, r, options, order) = pair_and_options(p, r, options)?;
+    let path = kli::kli(p, r, &options).map_err(throw)?;
+    Ok(JsKliPath::new(path, order))
 }
 
 /// The exact KLI solution q(t) for finite t ≥ 0 (closed form; only `shortestPath` is used).
@@ -47,8 +49,8 @@ pub fn kli_exact(
     t: f64,
     options: Option<KliOptionsObject>,
 ) -> JsResult<Float64Array> {
-    let (p, r, options) = pair_and_options(p, r, options)?;
-    kli::kli_exact(p, r, t, options.shortest_path).map(to_array).map_err(throw)
+    let (p, r, options, order) = pair_and_options(p, r, options)?;
+    kli::kli_exact(p, r, t, options.shortest_path).map(|q| order.array(q)).map_err(throw)
 }
 
 /// The SLERP parameter s(t) ∈ [0, 1) with kliExact(p, r, t) = slerp(p, r, s(t)).
@@ -59,7 +61,7 @@ pub fn kli_to_slerp_parameter(
     t: f64,
     options: Option<KliOptionsObject>,
 ) -> JsResult<f64> {
-    let (p, r, options) = pair_and_options(p, r, options)?;
+    let (p, r, options, _) = pair_and_options(p, r, options)?;
     kli::kli_to_slerp_parameter(p, r, t, options.shortest_path).map_err(throw)
 }
 
@@ -71,7 +73,7 @@ pub fn kli_reach_time(
     tolerance: f64,
     options: Option<KliOptionsObject>,
 ) -> JsResult<f64> {
-    let (p, r, options) = pair_and_options(p, r, options)?;
+    let (p, r, options, _) = pair_and_options(p, r, options)?;
     kli::kli_reach_time(p, r, tolerance, options.shortest_path).map_err(throw)
 }
 
@@ -84,28 +86,34 @@ pub fn slerp(
     s: f64,
     options: Option<KliOptionsObject>,
 ) -> JsResult<Float64Array> {
-    let (p, r, options) = pair_and_options(p, r, options)?;
-    kli::slerp(p, r, s, options.shortest_path).map(to_array).map_err(throw)
+    let (p, r, options, order) = pair_and_options(p, r, options)?;
+    kli::slerp(p, r, s, options.shortest_path).map(|q| order.array(q)).map_err(throw)
 }
 
 /// The Hopf map of paper eq. 5: the point (x, y, z) of S² where q sends the body x-axis.
 #[wasm_bindgen]
-pub fn hopf(q: &QuaternionLike) -> JsResult<Float64Array> {
-    let q = quaternion("q", q).map_err(throw)?;
+pub fn hopf(q: &QuaternionLike, options: Option<KliOptionsObject>) -> JsResult<Float64Array> {
+    let (q, _) = one(q, options)?;
     Ok(Float64Array::from(&kli::hopf(q).to_array()[..]))
 }
 
 /// The polar form q = cos(θ/2) + U sin(θ/2) as [Ux, Uy, Uz, θ], θ ∈ [0, 2π].
 #[wasm_bindgen(js_name = axisAngle)]
-pub fn axis_angle(q: &QuaternionLike) -> JsResult<Float64Array> {
-    let q = quaternion("q", q).map_err(throw)?;
+pub fn axis_angle(q: &QuaternionLike, options: Option<KliOptionsObject>) -> JsResult<Float64Array> {
+    let (q, _) = one(q, options)?;
     let (axis, angle) = kli::axis_angle(q).map_err(throw)?;
     Ok(Float64Array::from(&[axis.x, axis.y, axis.z, angle][..]))
 }
 
-/// The unit quaternion [w, x, y, z] of a rotation by `angle` radians about `axis` ([x, y, z]).
+/// The unit quaternion (in the options' `order`) of a rotation by `angle` radians about `axis`
+/// ([x, y, z]).
 #[wasm_bindgen(js_name = fromAxisAngle)]
-pub fn from_axis_angle(axis: &Vector3Like, angle: f64) -> JsResult<Float64Array> {
+pub fn from_axis_angle(
+    axis: &Vector3Like,
+    angle: f64,
+    options: Option<KliOptionsObject>,
+) -> JsResult<Float64Array> {
+    let (_, order) = read_options(options).map_err(throw)?;
     let axis = vector3("axis", axis).map_err(throw)?;
-    kli::from_axis_angle(axis, angle).map(to_array).map_err(throw)
+    kli::from_axis_angle(axis, angle).map(|q| order.array(q)).map_err(throw)
 }

@@ -6,7 +6,9 @@
 //! say the same for code ([`error`]). Nothing here may panic: a panic would trap and kill the
 //! module for the page.
 //!
-//! Quaternions cross as 4 numbers, scalar first `[w, x, y, z]`; results are `Float64Array`s.
+//! Quaternions cross as 4 numbers, scalar first `[w, x, y, z]` or, with the option
+//! `order: "xyzw"`, scalar last (three.js, gl-matrix); single calls also take `{ x, y, z, w }`
+//! objects. Results are `Float64Array`s in the call's order.
 //! Names are the Rust names in camelCase (`max_time` is `maxTime`), everywhere.
 //!
 //! Files: [`error`] (errors and number formatting), [`read`] (JavaScript values in), [`options`]
@@ -85,9 +87,15 @@ mod allocator {
 
 #[wasm_bindgen(typescript_custom_section)]
 const TYPES: &'static str = r#"
-/** A quaternion as 4 finite numbers, scalar first: `[w, x, y, z]` (the paper's a + bi + cj + dk).
- *  An Array or a typed array; it is normalised, and must not be all zero. */
-export type QuaternionLike = ArrayLike<number>;
+/** A quaternion: 4 finite numbers, an Array or a typed array, scalar first `[w, x, y, z]` (the
+ *  paper's a + bi + cj + dk) or, with the option `order: "xyzw"`, scalar last; or an object with
+ *  number properties `x, y, z, w` (a THREE.Quaternion, a glTF rotation as an object). It is
+ *  normalised, and must not be all zero. */
+export type QuaternionLike = ArrayLike<number> | { x: number; y: number; z: number; w: number };
+
+/** How quaternions are laid out in arrays, in and out: scalar first (the paper's, the default) or
+ *  scalar last (three.js, gl-matrix, Babylon.js, glTF). */
+export type QuaternionOrder = "wxyz" | "xyzw";
 
 /** A 3-vector as 3 finite numbers `[x, y, z]`: an Array or a typed array. */
 export type Vector3Like = ArrayLike<number>;
@@ -109,6 +117,8 @@ export interface KliOptions {
   /** When true (default) and p·r < 0, go to −r: the same rotation, the shorter arc. When false,
    *  go to r the long way round; p = −r is then an equilibrium and an Error. */
   shortestPath?: boolean;
+  /** How quaternion arrays are laid out, the call's arguments and its results. Default "wxyz". */
+  order?: QuaternionOrder;
 }
 
 /** What is wrong, in a word: the `kind` of every Error kli throws. */
@@ -122,7 +132,8 @@ export interface KliError extends Error {
   /** The argument at fault, as the call names it: "p", "maxTime", "ends[7]". */
   argument: string;
   kind: KliErrorKind;
-  /** For kind "not-finite": which component, 0 for w (or x of a 3-vector). */
+  /** For kind "not-finite": the component's position in the caller's array (0 is w in the order
+   *  "wxyz", x in "xyzw" and in a 3-vector). */
   component?: number;
 }
 "#;

@@ -8,7 +8,7 @@ use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
 use crate::error::{js_name, number};
-use crate::read::describe;
+use crate::read::{Order, describe};
 
 #[wasm_bindgen]
 extern "C" {
@@ -17,15 +17,17 @@ extern "C" {
     pub type KliOptionsObject;
 }
 
-/// The fields of [`KliOptions`], by their Rust names; JavaScript's keys are their camelCase.
-const KEYS: [&str; 5] = ["tolerance", "step", "max_time", "integrator", "shortest_path"];
+/// The fields of [`KliOptions`] and `order`, by their Rust names; JavaScript's keys are their
+/// camelCase.
+const KEYS: [&str; 6] = ["tolerance", "step", "max_time", "integrator", "shortest_path", "order"];
 
-/// Reads the options object into checked [`KliOptions`].
-pub fn read_options(value: Option<KliOptionsObject>) -> Result<KliOptions, KliError> {
+/// Reads the options object into checked [`KliOptions`] and the caller's quaternion [`Order`].
+pub fn read_options(value: Option<KliOptionsObject>) -> Result<(KliOptions, Order), KliError> {
     let mut options = KliOptions::default();
     let Some(fields) = Fields::new(value.map(JsValue::from), &KEYS, "{ tolerance: 1e-5 }")? else {
-        return Ok(options);
+        return Ok((options, Order::Wxyz));
     };
+    let order = Order::parse(fields.name("order"))?;
     if let Some(v) = fields.number("tolerance")? {
         options.tolerance = v;
     }
@@ -42,7 +44,7 @@ pub fn read_options(value: Option<KliOptionsObject>) -> Result<KliOptions, KliEr
         options.shortest_path = v;
     }
     options.validate()?;
-    Ok(options)
+    Ok((options, order))
 }
 
 /// An options object being read: a plain object whose keys are all among `keys` (Rust names;

@@ -1,20 +1,22 @@
 //! The `KliPath` class: the samples of Algorithm 1 and the exact solution beside them.
 
 use js_sys::Float64Array;
-use kli::quaternion::to_wxyz;
 use wasm_bindgen::prelude::*;
 
 use crate::error::{JsResult, throw};
+use crate::read::Order;
 
 /// The path of Algorithm 1: samples at `0, δ, …, T` and the exact solution beside them.
+/// Quaternions come out in the `order` the path was asked for.
 #[wasm_bindgen(js_name = KliPath)]
 pub struct JsKliPath {
     path: kli::KliPath,
+    order: Order,
 }
 
-impl From<kli::KliPath> for JsKliPath {
-    fn from(path: kli::KliPath) -> Self {
-        Self { path }
+impl JsKliPath {
+    pub fn new(path: kli::KliPath, order: Order) -> Self {
+        Self { path, order }
     }
 }
 
@@ -38,11 +40,10 @@ impl JsKliPath {
         Float64Array::from(self.path.times())
     }
 
-    /// 4·(n + 1) numbers: q at each sample time, scalar first, as integrated.
+    /// 4·(n + 1) numbers: q at each sample time, as integrated.
     #[wasm_bindgen(getter)]
     pub fn quaternions(&self) -> Float64Array {
-        let flat: Vec<f64> = self.path.quaternions().iter().flat_map(|&q| to_wxyz(q)).collect();
-        Float64Array::from(&flat[..])
+        self.order.flat(self.path.quaternions())
     }
 
     /// 3·(n + 1) numbers: the Hopf image of each sample on S² (the body x-axis).
@@ -55,7 +56,7 @@ impl JsKliPath {
     /// The end actually used: r, or −r when shortestPath and p·r < 0.
     #[wasm_bindgen(getter)]
     pub fn target(&self) -> Float64Array {
-        Float64Array::from(&to_wxyz(self.path.target())[..])
+        self.order.array(self.path.target())
     }
 
     /// The integrator the path was computed with.
@@ -68,7 +69,6 @@ impl JsKliPath {
     /// `quaternions`).
     #[wasm_bindgen(js_name = exactAt)]
     pub fn exact_at(&self, t: f64) -> JsResult<Float64Array> {
-        let q = self.path.exact_at(t).map_err(throw)?;
-        Ok(Float64Array::from(&to_wxyz(q)[..]))
+        self.path.exact_at(t).map(|q| self.order.array(q)).map_err(throw)
     }
 }

@@ -4,8 +4,8 @@
 
 use glam::{DQuat, DVec3};
 use js_sys::{Array, Float64Array, Reflect};
-use kli::KliError;
-use kli::quaternion::{from_wxyz, unit};
+use kli::quaternion::{from_wxyz, to_wxyz, unit};
+use kli::{ErrorKind, KliError, Shape};
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
@@ -77,9 +77,112 @@ pub fn numbers<const N: usize>(
     Ok(out)
 }
 
-/// Reads a quaternion `[w, x, y, z]` and normalises it.
-pub fn quaternion(name: &str, value: &JsValue) -> Result<DQuat, KliError> {
-    unit(name, from_wxyz(numbers(name, value, "[w, x, y, z]")?))
+/// How the caller lays quaternions out in arrays: scalar first `[w, x, y, z]` (the paper's
+/// a + bi + cj + dk, the default) or scalar last `[x, y, z, w]` (three.js, gl-matrix, glTF).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub enum Order {
+    #[default]
+    Wxyz,
+    Xyzw,
+}
+
+impl Order {
+    const NAMES: &'static [&'static str] = &["wxyz", "xyzw"];
+
+    /// The option `order`: `None` (absent) is `"wxyz"`.
+    pub fn parse(name: Option<String>) -> Result<Order, KliError> {
+        match name.as_deref() {
+            None | Some("wxyz") => Ok(Order::Wxyz),
+            Some("xyzw") => Ok(Order::Xyzw),
+            Some(got) => {
+                let kind = ErrorKind::UnknownName { got: got.into(), allowed: Self::NAMES };
+                Err(KliError::new("order", kind))
+            }
+        }
+    }
+
+    /// Four numbers in this order as a quaternion.
+    pub fn read(self, [a, b, c, d]: [f64; 4]) -> DQuat {
+        match self {
+            Order::Wxyz => from_wxyz([a, b, c, d]),
+            Order::Xyzw => DQuat::from_xyzw(a, b, c, d),
+        }
+    }
+
+    /// A quaternion as four numbers in this order.
+    #[inline(never)]
+    pub fn write(self, q: DQuat) -> [f64; 4] {
+        match self {
+            Order::Wxyz => to_wxyz(q),
+            Order::Xyzw => q.to_array(),
+        }
+    }
+
+    /// One quaternion as a `Float64Array` in this order.
+    #[inline(never)]
+    pub fn array(self, q: DQuat) -> Float64Array {
+        Float64Array::from(&self.write(q)[..])
+    }
+
+    /// Quaternions one after another in a `Float64Array`, each in this order.
+    #[inline(never)]
+    pub fn flat(self, qs: &[DQuat]) -> Float64Array {
+        let flat: Vec<f64> = qs.iter().flat_map(|&q| self.write(q)).collect();
+        Float64Array::from(&flat[..])
+    }
+
+    /// `e` about an argument read in this order (the core checks `[w, x, y, z]`): its component
+    /// is named, and numbered, as the caller laid it out.
+    pub fn error(self, e: KliError) -> KliError {
+        self.relabel(e, |i| (i + 3) % 4)
+    }
+
+    /// `e` from a batch kernel, which reads the caller's arrays as they are laid out (its
+    /// formulas treat the four components alike): its index is already the caller's.
+    pub fn batch_error(self, e: KliError) -> KliError {
+        self.relabel(e, |i| i)
+    }
+
+    #[inline(never)]
+    fn relabel(self, e: KliError, position: impl Fn(usize) -> usize) -> KliError {
+        if self == Order::Wxyz {
+            return e;
+        }
+        let kind = match *e.kind() {
+            ErrorKind::NotFinite { shape: Shape::Quaternion, index, value } => {
+                ErrorKind::NotFinite { shape: Shape::QuaternionXyzw, index: position(index), value }
+            }
+            ErrorKind::ZeroLength { shape: Shape::Quaternion } => {
+                ErrorKind::ZeroLength { shape: Shape::QuaternionXyzw }
+            }
+            _ => return e,
+        };
+        KliError::new(e.argument(), kind)
+    }
+
+    fn shape(self) -> &'static str {
+        if self == Order::Wxyz { "[w, x, y, z]" } else { "[x, y, z, w]" }
+    }
+}
+
+/// Reads a quaternion and normalises it: 4 numbers in `order`, or an object with number
+/// properties `x`, `y`, `z`, `w` (a `THREE.Quaternion`, a glTF-style `{ x, y, z, w }`).
+#[inline(never)]
+pub fn quaternion(name: &str, value: &JsValue, order: Order) -> Result<DQuat, KliError> {
+    if value.is_object() && Reflect::has(value, &"w".into()).unwrap_or(false) {
+        let mut xyzw = [0.0; 4];
+        for (slot, key) in xyzw.iter_mut().zip(["x", "y", "z", "w"]) {
+            let element = Reflect::get(value, &key.into()).unwrap_or(JsValue::UNDEFINED);
+            *slot = element.as_f64().ok_or_else(|| {
+                let problem =
+                    format!("must have numbers x, y, z, w: {key} is {}", describe(&element));
+                KliError::invalid(name, problem)
+            })?;
+        }
+        return unit(name, Order::Xyzw.read(xyzw)).map_err(|e| Order::Xyzw.error(e));
+    }
+    let numbers = numbers(name, value, order.shape())?;
+    unit(name, order.read(numbers)).map_err(|e| order.error(e))
 }
 
 /// Reads a 3-vector `[x, y, z]`.

@@ -1,26 +1,29 @@
 //! The `kli/spline` entry: curves through many keyframes, the Kuramoto–Lohe chain beside Squad
 //! and piecewise SLERP, with one interface (`RotationSpline`) so they compare call for call.
 
+use glam::DQuat;
 use js_sys::{Array, Float64Array};
 use kli::KliError;
-use kli::quaternion::{from_wxyz, to_wxyz};
 use kli::spline::{ChainOptions, Curve, Keys, KliSpline, PiecewiseSlerp, Squad};
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
 use crate::error::{JsResult, throw};
 use crate::options::Fields;
-use crate::read::{describe, numbers};
+use crate::read::{Order, describe, quaternion};
 
 #[wasm_bindgen(typescript_custom_section)]
 const TYPES: &'static str = r#"
-/** Keyframes: a Float64Array of 4m numbers, or an array of m quaternions, scalar first. */
-export type KeysLike = Float64Array | ArrayLike<ArrayLike<number>>;
+/** Keyframes: a Float64Array of 4m numbers, or an array of m quaternions (each 4 numbers, or an
+ *  object `{ x, y, z, w }` such as a THREE.Quaternion). */
+export type KeysLike = Float64Array | ArrayLike<QuaternionLike>;
 
 /** Options of squadSpline and slerpSpline. */
 export interface SplineOptions {
   /** m strictly increasing finite times, one per key. Default 0, 1, …, m − 1. */
   times?: ArrayLike<number>;
+  /** How the keys and the results lay each quaternion out. Default "wxyz". */
+  order?: QuaternionOrder;
 }
 
 /** Options of kliSpline. */
@@ -55,6 +58,7 @@ enum Kind {
 #[wasm_bindgen]
 pub struct RotationSpline {
     kind: Kind,
+    order: Order,
 }
 
 impl RotationSpline {
@@ -102,10 +106,10 @@ fn float64s(name: &str, value: &JsValue) -> Result<Vec<f64>, KliError> {
 
 #[wasm_bindgen]
 impl RotationSpline {
-    /// `q(t)`, scalar first.
+    /// `q(t)`, in the spline's `order`.
     pub fn at(&self, t: f64) -> JsResult<Float64Array> {
         let t = finite_time("t", t).map_err(throw)?;
-        Ok(Float64Array::from(&to_wxyz(self.curve().at(t))[..]))
+        Ok(self.order.array(self.curve().at(t)))
     }
 
     /// `q` at each of `times` (Float64Array or array), into `out` (Float64Array(4n)) when given,
@@ -121,6 +125,9 @@ impl RotationSpline {
         }
         let mut values = vec![0.0; 4 * times.len()];
         self.curve().sample_into(&times, &mut values);
+        if self.order == Order::Xyzw {
+            values.chunks_exact_mut(4).for_each(|q| q.rotate_left(1));
+        }
         match out {
             Some(out) if out.length() as usize == values.len() => {
                 out.copy_from(&values);
@@ -145,12 +152,10 @@ impl RotationSpline {
         Ok(Float64Array::from(&self.curve().angular_velocity(t).to_array()[..]))
     }
 
-    /// The keys as used (normalised, signs made consistent), 4m numbers.
+    /// The keys as used (normalised, signs made consistent), 4m numbers in the spline's `order`.
     #[wasm_bindgen(getter)]
     pub fn keys(&self) -> Float64Array {
-        let flat: Vec<f64> =
-            self.key_frames().quaternions().iter().flat_map(|&q| to_wxyz(q)).collect();
-        Float64Array::from(&flat[..])
+        self.order.flat(self.key_frames().quaternions())
     }
 
     /// The key times.
@@ -182,35 +187,32 @@ impl RotationSpline {
     }
 }
 
-/// The keys (Float64Array(4m) or an array of m quaternions) and the options' `times`.
-fn read_keys(value: &JsValue, times: Option<Vec<f64>>) -> Result<Keys, KliError> {
-    let flat: Vec<f64> = if let Some(array) = value.dyn_ref::<Float64Array>() {
+/// The keys (Float64Array(4m) or an array of m quaternions) in `order`, and the options' `times`.
+fn read_keys(value: &JsValue, times: Option<Vec<f64>>, order: Order) -> Result<Keys, KliError> {
+    let quaternions: Vec<DQuat> = if let Some(array) = value.dyn_ref::<Float64Array>() {
         if array.length() % 4 != 0 {
             let problem = format!("must hold 4 numbers per key (got {})", array.length());
             return Err(KliError::invalid("keys", problem));
         }
-        array.to_vec()
+        array.to_vec().chunks_exact(4).map(|q| order.read([q[0], q[1], q[2], q[3]])).collect()
     } else if Array::is_array(value) {
         let array = Array::from(value);
-        let mut flat = Vec::with_capacity(4 * array.length() as usize);
-        for (i, key) in array.iter().enumerate() {
-            flat.extend(numbers::<4>(&format!("keys[{i}]"), &key, "[w, x, y, z]")?);
-        }
-        flat
+        let key = |(i, key): (usize, JsValue)| quaternion(&format!("keys[{i}]"), &key, order);
+        array.iter().enumerate().map(key).collect::<Result<_, _>>()?
     } else {
         let problem =
             format!("must be a Float64Array or an array of quaternions (got {})", describe(value));
         return Err(KliError::invalid("keys", problem));
     };
-    let quaternions: Vec<_> =
-        flat.chunks_exact(4).map(|q| from_wxyz([q[0], q[1], q[2], q[3]])).collect();
-    Keys::new(&quaternions, times.as_deref())
+    Keys::new(&quaternions, times.as_deref()).map_err(|e| order.error(e))
 }
 
-fn read_times(fields: &Option<Fields>) -> Result<Option<Vec<f64>>, KliError> {
+/// The options' `times` and `order`.
+fn read_times(fields: &Option<Fields>) -> Result<(Option<Vec<f64>>, Order), KliError> {
+    let order = Order::parse(fields.as_ref().and_then(|f| f.name("order")))?;
     match fields.as_ref().and_then(|f| f.value("times")) {
-        Some(value) => Ok(Some(float64s("times", &value)?)),
-        None => Ok(None),
+        Some(value) => Ok((Some(float64s("times", &value)?), order)),
+        None => Ok((None, order)),
     }
 }
 
@@ -223,7 +225,7 @@ pub fn kli_spline(
     let keys_and_options = || -> Result<RotationSpline, KliError> {
         let fields = Fields::new(
             options.map(JsValue::from),
-            &["times", "smoothness", "samples_per_segment"],
+            &["times", "smoothness", "samples_per_segment", "order"],
             "{ smoothness: 1 }",
         )?;
         let mut chain = ChainOptions::default();
@@ -235,16 +237,22 @@ pub fn kli_spline(
                 chain.samples_per_segment = v as usize;
             }
         }
-        let keys = read_keys(keys, read_times(&fields)?)?;
-        Ok(RotationSpline { kind: Kind::Chain(KliSpline::new(keys, &chain)?) })
+        let (times, order) = read_times(&fields)?;
+        let keys = read_keys(keys, times, order)?;
+        Ok(RotationSpline { kind: Kind::Chain(KliSpline::new(keys, &chain)?), order })
     };
     keys_and_options().map_err(throw)
 }
 
-/// The keys and the `{ times }` options of squadSpline and slerpSpline.
-fn keys_and_times(keys: &KeysLike, options: Option<SplineOptionsObject>) -> Result<Keys, KliError> {
-    let fields = Fields::new(options.map(JsValue::from), &["times"], "{ times: [0, 1, 2] }")?;
-    read_keys(keys, read_times(&fields)?)
+/// The keys and the `{ times, order }` options of squadSpline and slerpSpline.
+fn keys_and_times(
+    keys: &KeysLike,
+    options: Option<SplineOptionsObject>,
+) -> Result<(Keys, Order), KliError> {
+    let example = "{ times: [0, 1, 2] }";
+    let fields = Fields::new(options.map(JsValue::from), &["times", "order"], example)?;
+    let (times, order) = read_times(&fields)?;
+    Ok((read_keys(keys, times, order)?, order))
 }
 
 /// Shoemake's Squad through `keys`, with helper points for uneven times.
@@ -253,8 +261,8 @@ pub fn squad_spline(
     keys: &KeysLike,
     options: Option<SplineOptionsObject>,
 ) -> JsResult<RotationSpline> {
-    let keys = keys_and_times(keys, options).map_err(throw)?;
-    Ok(RotationSpline { kind: Kind::Squad(Squad::new(keys)) })
+    let (keys, order) = keys_and_times(keys, options).map_err(throw)?;
+    Ok(RotationSpline { kind: Kind::Squad(Squad::new(keys)), order })
 }
 
 /// SLERP from key to key.
@@ -263,6 +271,6 @@ pub fn slerp_spline(
     keys: &KeysLike,
     options: Option<SplineOptionsObject>,
 ) -> JsResult<RotationSpline> {
-    let keys = keys_and_times(keys, options).map_err(throw)?;
-    Ok(RotationSpline { kind: Kind::Slerp(PiecewiseSlerp::new(keys)) })
+    let (keys, order) = keys_and_times(keys, options).map_err(throw)?;
+    Ok(RotationSpline { kind: Kind::Slerp(PiecewiseSlerp::new(keys)), order })
 }

@@ -3,13 +3,12 @@
 use glam::DQuat;
 use js_sys::Float64Array;
 use kli::KliError;
-use kli::quaternion::{from_wxyz, to_wxyz};
 use kli::swarm::{Graph, MAX_COUNT, Swarm, SwarmOptions};
 use wasm_bindgen::prelude::*;
 
 use crate::error::{JsResult, throw};
 use crate::options::Fields;
-use crate::read::{describe, float64_array};
+use crate::read::{Order, describe, float64_array};
 
 #[wasm_bindgen(typescript_custom_section)]
 const TYPES: &'static str = r#"
@@ -33,6 +32,8 @@ export interface SwarmOptions {
   startSpread?: number;
   /** A whole number from 0 to 2^53 − 1; the same seed gives the same swarm. Default 1. */
   seed?: number;
+  /** How `quaternions` and `setQuaternions` lay each quaternion out. Default "wxyz". */
+  order?: QuaternionOrder;
 }
 "#;
 
@@ -43,20 +44,24 @@ extern "C" {
     pub type SwarmOptionsObject;
 }
 
-/// The fields of [`SwarmOptions`], by their Rust names.
-const KEYS: [&str; 7] =
-    ["count", "coupling", "graph", "leaders", "frequency_spread", "start_spread", "seed"];
+/// The fields of [`SwarmOptions`] and `order`, by their Rust names.
+const KEYS: [&str; 8] =
+    ["count", "coupling", "graph", "leaders", "frequency_spread", "start_spread", "seed", "order"];
 
 /// The largest seed: every whole number below it is exact in a JavaScript number.
 const MAX_SEED: f64 = 9_007_199_254_740_991.0;
 
-/// Reads the options object of `new LoheSwarm(options)` into checked [`SwarmOptions`].
-pub fn read_swarm_options(value: Option<SwarmOptionsObject>) -> Result<SwarmOptions, KliError> {
+/// Reads the options object of `new LoheSwarm(options)` into checked [`SwarmOptions`] and the
+/// caller's quaternion [`Order`].
+pub fn read_swarm_options(
+    value: Option<SwarmOptionsObject>,
+) -> Result<(SwarmOptions, Order), KliError> {
     let mut options = SwarmOptions::default();
     let example = "{ count: 500, coupling: 1 }";
     let Some(fields) = Fields::new(value.map(JsValue::from), &KEYS, example)? else {
-        return Ok(options);
+        return Ok((options, Order::Wxyz));
     };
+    let order = Order::parse(fields.name("order"))?;
     if let Some(v) = fields.whole("count", MAX_COUNT as f64)? {
         options.count = v as usize;
     }
@@ -79,7 +84,7 @@ pub fn read_swarm_options(value: Option<SwarmOptionsObject>) -> Result<SwarmOpti
         options.seed = v as u64;
     }
     options.validate()?;
-    Ok(options)
+    Ok((options, order))
 }
 
 /// `steps` as a count: a whole number from 0 to 1e6 (a step count from JavaScript).
@@ -97,6 +102,7 @@ pub fn whole_steps(steps: f64) -> Result<usize, KliError> {
 #[wasm_bindgen(js_name = LoheSwarm)]
 pub struct JsLoheSwarm {
     swarm: Swarm,
+    order: Order,
 }
 
 #[wasm_bindgen(js_class = LoheSwarm)]
@@ -104,8 +110,8 @@ impl JsLoheSwarm {
     /// A swarm from its options (all optional; the same seed gives the same swarm).
     #[wasm_bindgen(constructor)]
     pub fn new(options: Option<SwarmOptionsObject>) -> JsResult<JsLoheSwarm> {
-        let options = read_swarm_options(options).map_err(throw)?;
-        Ok(Self { swarm: Swarm::new(&options).map_err(throw)? })
+        let (options, order) = read_swarm_options(options).map_err(throw)?;
+        Ok(Self { swarm: Swarm::new(&options).map_err(throw)?, order })
     }
 
     /// `steps` (default 1, a whole number up to 1e6) geodesic RK4 steps of `dt` (finite, > 0).
@@ -126,15 +132,14 @@ impl JsLoheSwarm {
         self.swarm.len()
     }
 
-    /// A copy of the 4N numbers `q_i`, scalar first.
+    /// A copy of the 4N numbers `q_i`, in the swarm's `order`.
     #[wasm_bindgen(getter)]
     pub fn quaternions(&self) -> Float64Array {
-        let flat: Vec<f64> = self.swarm.quaternions().iter().flat_map(|&q| to_wxyz(q)).collect();
-        Float64Array::from(&flat[..])
+        self.order.flat(self.swarm.quaternions())
     }
 
-    /// Replaces every `q_i` with 4N numbers, a Float64Array or an array (scalar first; each is
-    /// normalised, none may be all zero). The time is kept.
+    /// Replaces every `q_i` with 4N numbers, a Float64Array or an array (in the swarm's `order`;
+    /// each is normalised, none may be all zero). The time is kept.
     #[wasm_bindgen(js_name = setQuaternions)]
     pub fn set_quaternions(
         &mut self,
@@ -154,8 +159,8 @@ impl JsLoheSwarm {
             return Err(throw(KliError::invalid("quaternions", problem)));
         }
         let quaternions: Vec<DQuat> =
-            values.chunks_exact(4).map(|q| from_wxyz([q[0], q[1], q[2], q[3]])).collect();
-        self.swarm.set_quaternions(&quaternions).map_err(throw)
+            values.chunks_exact(4).map(|q| self.order.read([q[0], q[1], q[2], q[3]])).collect();
+        self.swarm.set_quaternions(&quaternions).map_err(|e| throw(self.order.error(e)))
     }
 
     /// `R = |m|`, the length of the mean quaternion, in [0, 1].

@@ -118,3 +118,45 @@ fn bad_input_names_the_argument_and_element() {
     let Err(error) = spline.at(f64::NAN) else { panic!() };
     assert_eq!(Reflect::get(&error, &"argument".into()).unwrap(), "t");
 }
+
+/// `[w, x, y, z]` → `[x, y, z, w]`, by hand.
+fn xyzw(q: &[f64]) -> Vec<f64> {
+    q.chunks_exact(4).flat_map(|q| [q[1], q[2], q[3], q[0]]).collect()
+}
+
+#[wasm_bindgen_test]
+fn scalar_last_keys_give_scalar_last_curves_and_objects_are_read_as_named() {
+    let scalar_last = || options(&[("order", "xyzw".into())]);
+    let keys: KeysLike = Float64Array::from(&xyzw(&KEYS)[..]).unchecked_into();
+    // Keys as THREE.Quaternion-like objects { x, y, z, w }: no order needed.
+    let objects: Array = KEYS
+        .chunks_exact(4)
+        .map(|q| {
+            let o = Object::new();
+            for (k, v) in ["x", "y", "z", "w"].iter().zip([q[1], q[2], q[3], q[0]]) {
+                Reflect::set(&o, &(*k).into(), &v.into()).unwrap();
+            }
+            JsValue::from(o)
+        })
+        .collect();
+    let times = Float64Array::from(&[0.0, 0.4, 1.7, 2.5, 3.0][..]);
+    let plain = kli_spline(&flat(), None).unwrap();
+    let last = kli_spline(&keys, scalar_last()).unwrap();
+    let from_objects = kli_spline(objects.unchecked_ref(), None).unwrap();
+    let expected = plain.sample(&times, None).unwrap().to_vec();
+    assert_eq!(last.sample(&times, None).unwrap().to_vec(), xyzw(&expected));
+    assert_eq!(last.at(1.7).unwrap().to_vec(), xyzw(&plain.at(1.7).unwrap().to_vec()));
+    assert_eq!(last.keys().to_vec(), xyzw(&plain.keys().to_vec()));
+    assert_eq!(from_objects.sample(&times, None).unwrap().to_vec(), expected);
+    let squad = squad_spline(&keys, Some(scalar_last().unwrap().unchecked_into())).unwrap();
+    let plain_squad = squad_spline(&flat(), None).unwrap();
+    assert_eq!(squad.at(0.5).unwrap().to_vec(), xyzw(&plain_squad.at(0.5).unwrap().to_vec()));
+    // A bad component is named as laid out.
+    let mut bad = xyzw(&KEYS);
+    bad[4 + 3] = f64::NAN;
+    let bad: Array = bad.chunks_exact(4).map(|q| JsValue::from(Float64Array::from(q))).collect();
+    let Err(error) = kli_spline(bad.unchecked_ref(), scalar_last()) else { panic!() };
+    let message: String = error.unchecked_into::<js_sys::Error>().message().into();
+    assert!(message.starts_with("keys[1] must be a quaternion of 4 finite numbers [x, y, z, w]"));
+    assert!(message.ends_with("its w component is NaN"), "{message}");
+}

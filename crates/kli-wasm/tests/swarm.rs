@@ -115,3 +115,24 @@ fn bad_options_and_arguments_name_themselves() {
     swarm.step(0.1, Some(3.0)).unwrap();
     assert!((swarm.time() - 0.3).abs() < 1e-12);
 }
+
+#[wasm_bindgen_test]
+fn a_scalar_last_swarm_reads_and_writes_scalar_last() {
+    let seed = || ("seed", JsValue::from(7.0));
+    let plain = LoheSwarm::new(options(&[seed(), ("count", 5.into())])).unwrap();
+    let last =
+        LoheSwarm::new(options(&[seed(), ("count", 5.into()), ("order", "xyzw".into())])).unwrap();
+    let wxyz = plain.quaternions().to_vec();
+    let got = last.quaternions().to_vec();
+    for (a, b) in got.chunks_exact(4).zip(wxyz.chunks_exact(4)) {
+        assert_eq!(a, [b[1], b[2], b[3], b[0]]);
+    }
+    // Written scalar last: (x, y, z, w) = (0, 0, 0, 1) is the identity, whose Hopf point is +x.
+    let mut last = last;
+    let identities: Vec<f64> = (0..5).flat_map(|_| [0.0, 0.0, 0.0, 1.0]).collect();
+    last.set_quaternions(&Float64Array::from(&identities[..])).unwrap();
+    assert_eq!(&last.hopf_points().to_vec()[..3], &[1.0, 0.0, 0.0]);
+    assert_eq!(last.quaternions().to_vec(), identities);
+    let (argument, _) = refused(LoheSwarm::new(options(&[("order", "wzyx".into())])));
+    assert_eq!(argument, "order");
+}

@@ -151,23 +151,23 @@ fn slerp_matches_the_textbook_formula() {
 
 #[wasm_bindgen_test]
 fn hopf_end_points_and_axis_angle() {
-    assert!(close(&api::hopf(&quat(&P)).unwrap().to_vec(), &[-1.0, 0.0, 0.0], 0.0));
-    assert!(close(&api::hopf(&quat(&R)).unwrap().to_vec(), &[0.0, 1.0, 0.0], 0.0));
+    assert!(close(&api::hopf(&quat(&P), None).unwrap().to_vec(), &[-1.0, 0.0, 0.0], 0.0));
+    assert!(close(&api::hopf(&quat(&R), None).unwrap().to_vec(), &[0.0, 1.0, 0.0], 0.0));
     let path = api::kli(&quat(&P), &quat(&R), None).unwrap();
     let curve = path.hopf_curve().to_vec();
     assert!(close(&curve[..3], &[-1.0, 0.0, 0.0], 0.0));
     assert!(close(&curve[curve.len() - 3..], &[0.0, 1.0, 0.0], 2e-5));
     // p = k: a half turn about z; r: 120° about (1,1,1)/√3.
     assert!(close(
-        &api::axis_angle(&quat(&P)).unwrap().to_vec(),
+        &api::axis_angle(&quat(&P), None).unwrap().to_vec(),
         &[0.0, 0.0, 1.0, std::f64::consts::PI],
         0.0
     ));
     let c = 1.0 / 3.0_f64.sqrt();
     let expected = [c, c, c, 2.0 * std::f64::consts::PI / 3.0];
-    assert!(close(&api::axis_angle(&quat(&R)).unwrap().to_vec(), &expected, 1e-15));
+    assert!(close(&api::axis_angle(&quat(&R), None).unwrap().to_vec(), &expected, 1e-15));
     let axis: Vector3Like = Float64Array::from(&[1.0, 1.0, 1.0][..]).unchecked_into();
-    let q = api::from_axis_angle(&axis, 2.0 * std::f64::consts::PI / 3.0).unwrap().to_vec();
+    let q = api::from_axis_angle(&axis, 2.0 * std::f64::consts::PI / 3.0, None).unwrap().to_vec();
     assert!(close(&q, &R, 1e-15));
 }
 
@@ -246,12 +246,12 @@ fn bad_quaternions_throw_errors_naming_the_argument() {
         "r must hold 4 numbers [w, x, y, z]: element 0 is \"1\"",
     );
     let null: QuaternionLike = JsValue::NULL.unchecked_into();
-    expect_error(api::hopf(&null), "q must be an array of 4 numbers");
-    expect_error(api::axis_angle(&quat(&[0.0; 4])), "q must be a quaternion");
+    expect_error(api::hopf(&null, None), "q must be an array of 4 numbers");
+    expect_error(api::axis_angle(&quat(&[0.0; 4]), None), "q must be a quaternion");
     let axis: Vector3Like = Float64Array::from(&[0.0, 0.0, 0.0][..]).unchecked_into();
-    expect_error(api::from_axis_angle(&axis, 1.0), "axis must be 3 finite numbers");
+    expect_error(api::from_axis_angle(&axis, 1.0, None), "axis must be 3 finite numbers");
     let axis: Vector3Like = Float64Array::from(&[1.0, 0.0, 0.0][..]).unchecked_into();
-    expect_error(api::from_axis_angle(&axis, f64::NAN), "angle must be a finite number");
+    expect_error(api::from_axis_angle(&axis, f64::NAN, None), "angle must be a finite number");
 }
 
 #[wasm_bindgen_test]
@@ -621,4 +621,147 @@ fn built_with_the_lanes_the_run_asked_for() {
     // on the plain [f64; 2] lanes there, and on wasm SIMD in `make test-wasm-node`.
     let portable = option_env!("KLI_LANES") == Some("portable");
     assert_eq!(cfg!(target_feature = "simd128"), !portable);
+}
+
+// ---- x, y, z, w: the order three.js, gl-matrix and glTF use (issue 10) -----------------------
+
+/// `[w, x, y, z]` → `[x, y, z, w]`, by hand.
+fn xyzw(q: &[f64]) -> Vec<f64> {
+    q.chunks_exact(4).flat_map(|q| [q[1], q[2], q[3], q[0]]).collect()
+}
+
+fn scalar_last() -> Option<KliOptionsObject> {
+    options(&[("order", "xyzw".into())])
+}
+
+/// A `THREE.Quaternion`-like object: the numbers behind getters, as three.js keeps them.
+fn three_quaternion(q: &[f64]) -> QuaternionLike {
+    let object = Object::new();
+    for (key, value) in ["_x", "_y", "_z", "_w"].iter().zip([q[1], q[2], q[3], q[0]]) {
+        Reflect::set(&object, &(*key).into(), &value.into()).unwrap();
+    }
+    let getters = js_sys::Function::new_no_args(
+        "for (const k of 'xyzw') Object.defineProperty(this, k, { get() { return this['_' + k]; } }); return this;",
+    );
+    getters.call0(&object).unwrap().unchecked_into()
+}
+
+#[wasm_bindgen_test]
+fn every_call_takes_and_gives_scalar_last_quaternions_with_order_xyzw() {
+    let (p, r) = (xyzw(&P), xyzw(&R));
+    let path = api::kli(&quat(&p), &quat(&r), scalar_last()).unwrap();
+    let plain = api::kli(&quat(&P), &quat(&R), None).unwrap();
+    assert_eq!(path.steps(), 1166);
+    assert_eq!(path.quaternions().to_vec(), xyzw(&plain.quaternions().to_vec()));
+    assert_eq!(path.target().to_vec(), r);
+    assert_eq!(path.exact_at(1.8).unwrap().to_vec(), xyzw(&plain.exact_at(1.8).unwrap().to_vec()));
+    // Table 1's corrected row 0.4364 + 0.4364i + 0.4364j + 0.6548k, laid out scalar last.
+    let row = api::kli_exact(&quat(&p), &quat(&r), 1.8, scalar_last()).unwrap().to_vec();
+    assert!(close(&row, &[0.4364, 0.4364, 0.6548, 0.4364], 5e-5), "{row:?}");
+    let s = api::kli_to_slerp_parameter(&quat(&p), &quat(&r), 1.8, scalar_last()).unwrap();
+    assert_eq!(s, api::kli_to_slerp_parameter(&quat(&P), &quat(&R), 1.8, None).unwrap());
+    let reach = api::kli_reach_time(&quat(&p), &quat(&r), 1e-5, scalar_last()).unwrap();
+    assert!((reach - 11.6568).abs() < 1e-4, "{reach}");
+    let half = api::slerp(&quat(&p), &quat(&r), 0.5, scalar_last()).unwrap().to_vec();
+    assert_eq!(half, xyzw(&api::slerp(&quat(&P), &quat(&R), 0.5, None).unwrap().to_vec()));
+    // The Hopf map and the polar form read the scalar where the order puts it: h(p) = (-1, 0, 0).
+    assert!(close(&api::hopf(&quat(&p), scalar_last()).unwrap().to_vec(), &[-1.0, 0.0, 0.0], 0.0));
+    let polar = api::axis_angle(&quat(&r), scalar_last()).unwrap().to_vec();
+    assert!(close(&polar, &api::axis_angle(&quat(&R), None).unwrap().to_vec(), 0.0));
+    let axis: Vector3Like = f64s(&[0.0, 0.0, 1.0]).unchecked_into();
+    let turn = api::from_axis_angle(&axis, std::f64::consts::PI, scalar_last()).unwrap().to_vec();
+    assert!(close(&turn, &[0.0, 0.0, 1.0, 0.0], 1e-16), "{turn:?}");
+    let times = f64s(&[0.0, 0.5, 11.0]);
+    let sampled = api::kli_sample(&quat(&p), &quat(&r), &times, scalar_last()).unwrap().to_vec();
+    let plain = api::kli_sample(&quat(&P), &quat(&R), &times, None).unwrap().to_vec();
+    assert_eq!(sampled, xyzw(&plain));
+}
+
+#[wasm_bindgen_test]
+fn batches_read_scalar_last_arrays_in_place() {
+    // Fast kernels (s in [0, 1]) and the pair-by-pair path (extrapolation) alike.
+    for scale in [1.0, 3.0] {
+        let (starts, ends, params) = batch_pairs(257);
+        let params: Vec<f64> = params.iter().map(|s| s * scale).collect();
+        let out = f64s(&vec![0.0; starts.len()]);
+        let wxyz = api::slerp_batch(&f64s(&starts), &f64s(&ends), &f64s(&params), &out, None)
+            .unwrap()
+            .to_vec();
+        let (s, e) = (f64s(&xyzw(&starts)), f64s(&xyzw(&ends)));
+        let got = api::slerp_batch(&s, &e, &f64s(&params), &out, scalar_last()).unwrap().to_vec();
+        // The same formulas; only the dot products are summed in another order (a few ulps,
+        // scaled by s up to 9 when extrapolating).
+        assert!(close(&got, &xyzw(&wxyz), 4e-15), "slerp, parameters × {scale}");
+        let t: Vec<f64> = params.iter().map(|s| s.abs() * 4.0).collect();
+        let wxyz = api::kli_exact_batch(&f64s(&starts), &f64s(&ends), &f64s(&t), &out, None)
+            .unwrap()
+            .to_vec();
+        let got = api::kli_exact_batch(&s, &e, &f64s(&t), &out, scalar_last()).unwrap().to_vec();
+        assert!(close(&got, &xyzw(&wxyz), 4e-15), "kliExact, times × {scale}");
+    }
+    // An element's error names the component as the caller laid it out.
+    let mut starts = xyzw(&[1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0]);
+    starts[4 + 3] = f64::NAN;
+    let result = api::slerp_batch(
+        &f64s(&starts),
+        &f64s(&starts.iter().map(|_| 0.5).collect::<Vec<_>>()),
+        &f64s(&[0.5, 0.5]),
+        &f64s(&[0.0; 8]),
+        scalar_last(),
+    );
+    let (argument, kind, component) = properties(result);
+    assert_eq!(
+        (argument.as_str(), kind.as_str(), component),
+        ("starts[1]", "not-finite", Some(3.0))
+    );
+}
+
+#[wasm_bindgen_test]
+fn single_calls_take_three_js_style_objects() {
+    let (p, r) = (three_quaternion(&P), three_quaternion(&R));
+    let path = api::kli(&p, &r, None).unwrap();
+    assert_eq!(path.steps(), 1166);
+    // Objects are unambiguous: the same answer whatever the order of the arrays.
+    let a = api::slerp(&p, &r, 0.3, None).unwrap().to_vec();
+    let b = api::slerp(&quat(&P), &quat(&R), 0.3, None).unwrap().to_vec();
+    assert_eq!(a, b);
+    let c = api::slerp(&p, &r, 0.3, scalar_last()).unwrap().to_vec();
+    assert_eq!(c, xyzw(&b));
+    assert!(close(&api::hopf(&r, None).unwrap().to_vec(), &[0.0, 1.0, 0.0], 0.0));
+    // A plain { x, y, z, w } (glTF-style), and one with a component missing.
+    let plain = Object::new();
+    for (key, value) in ["x", "y", "z", "w"].iter().zip([0.0, 0.0, 1.0, 0.0]) {
+        Reflect::set(&plain, &(*key).into(), &value.into()).unwrap();
+    }
+    let flipped = api::hopf(plain.unchecked_ref(), None).unwrap().to_vec();
+    assert!(close(&flipped, &[-1.0, 0.0, 0.0], 0.0), "{flipped:?}");
+    Reflect::delete_property(&plain, &"y".into()).unwrap();
+    expect_error(
+        api::hopf(plain.unchecked_ref(), None),
+        "q must have numbers x, y, z, w: y is undefined",
+    );
+    assert_still_works();
+}
+
+#[wasm_bindgen_test]
+fn scalar_last_errors_name_the_components_as_laid_out() {
+    let mut p = xyzw(&P);
+    p[0] = f64::NAN;
+    let result = api::kli(&quat(&p), &quat(&xyzw(&R)), scalar_last());
+    let (argument, kind, component) = properties(result);
+    assert_eq!((argument.as_str(), kind.as_str(), component), ("p", "not-finite", Some(0.0)));
+    p[0] = f64::NAN;
+    expect_error(
+        api::slerp(&quat(&p), &quat(&R), 0.5, scalar_last()),
+        "p must be a quaternion of 4 finite numbers [x, y, z, w], not all zero: its x component is NaN",
+    );
+    expect_error(
+        api::slerp(&quat(&[0.0; 3]), &quat(&R), 0.5, scalar_last()),
+        "p must be an array of 4 numbers [x, y, z, w]",
+    );
+    expect_error(
+        api::kli(&quat(&P), &quat(&R), options(&[("order", "zyxw".into())])),
+        "order must be \"wxyz\" or \"xyzw\" (got \"zyxw\")",
+    );
+    assert_still_works();
 }
