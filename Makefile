@@ -74,8 +74,12 @@ pkg: setup-rust setup-node
 # directory serves all three (cargo keeps each feature set's artifacts); each build is bound
 # right after it, before the next overwrites the .wasm.
 PAGES := kli:kli-page swarm:swarm-page spline:spline-page
-www: setup-rust setup-node
-	rm -rf www/pkg
+www: setup-rust setup-node pkg
+	rm -rf www/pkg www/examples/vendor
+	@# The examples import the package and three.js by name (an import map): both served locally.
+	mkdir -p www/examples/vendor/kli www/examples/vendor/three
+	cp pkg/kli.js pkg/kli_bg.wasm www/examples/vendor/kli/
+	cp node_modules/three/build/three.module.js node_modules/three/build/three.core.js www/examples/vendor/three/
 	for page in $(PAGES); do \
 	  name=$${page%%:*}; feature=$${page#*:}; \
 	  cargo build --release -p kli-demo --lib --target $(TARGET) --no-default-features --features $$feature; \

@@ -10,7 +10,7 @@ import { parseNumber } from "./numbers.js";
 import { SWARM_URL_KEYS as KEYS, throttledUrl } from "./url.js";
 
 /** @typedef {import("./pkg/swarm_demo.js").SwarmOptions} SwarmOptions */
-/** @typedef {Required<Omit<SwarmOptions, "startSpread">> & { startSpread?: number }} SwarmState */
+/** @typedef {Required<Omit<SwarmOptions, "startSpread" | "order">> & { startSpread?: number }} SwarmState */
 
 /** @type {Record<string, SwarmState>} */
 const PRESETS = {
