@@ -15,7 +15,7 @@ WASM_FEATURES := --enable-bulk-memory --enable-nontrapping-float-to-int --enable
                  --enable-mutable-globals --enable-reference-types --enable-multivalue --enable-simd
 RELEASE := target/$(TARGET)/release
 
-.PHONY: help setup setup-rust setup-node setup-browser pkg www demo serve test lint test-native \
+.PHONY: help setup setup-rust setup-node setup-browser pkg www single demo serve test lint test-native \
         test-wasm-node test-wasm-portable test-wasm-browser test-package test-page bench clean
 
 help:
@@ -23,6 +23,7 @@ help:
 	@echo "make test   run every check and test (lint, native, wasm under Node, package, Chromium)"
 	@echo "make pkg    build the npm package into pkg/"
 	@echo "make www    build the page's module into www/pkg/"
+	@echo "make single each page as one self-contained HTML file in dist/single/ (works from file://)"
 	@echo "make bench  run the benchmarks"
 
 setup: setup-rust setup-node setup-browser
@@ -88,6 +89,11 @@ www: setup-rust setup-node pkg
 	  echo "www/pkg/$${name}_demo_bg.wasm: $$(stat -c %s www/pkg/$${name}_demo_bg.wasm) bytes, $$(gzip -9c www/pkg/$${name}_demo_bg.wasm | wc -c) gzipped"; \
 	done
 
+# Each page as one self-contained HTML file (scripts, style sheet and .wasm inlined) that works
+# opened from file:// with no server and no network: dist/single/{index,swarm,keyframes}.html.
+single: www
+	node scripts/single.mjs
+
 demo: www
 	@echo "Serving the demo at http://127.0.0.1:$(PORT)/  (Ctrl-C to stop)"
 	python3 -m http.server $(PORT) --bind 127.0.0.1 --directory www
@@ -125,7 +131,7 @@ test-wasm-browser: setup-rust setup-browser
 test-package: pkg
 	node --test tests/js/
 
-test-page: pkg www setup-browser
+test-page: pkg www single setup-browser
 	node --test tests/e2e/
 
 # Benchmarks, not tests: nothing here is asserted by `make test`.
@@ -138,4 +144,4 @@ bench: pkg www setup-browser
 
 clean:
 	cargo clean
-	rm -rf pkg www/pkg node_modules test-artifacts
+	rm -rf pkg www/pkg www/examples/vendor dist node_modules test-artifacts

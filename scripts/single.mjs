@@ -1,0 +1,69 @@
+// `make single`: each page of the demo as one self-contained HTML file in dist/single/, for a
+// course platform that takes an uploaded file or a USB stick opened with no server: the page's
+// scripts bundled by esbuild, its module's .wasm inlined (base64) and handed to init(), the style
+// sheet inlined. Opened from file://, such a page fetches nothing.
+import { build } from "esbuild";
+import { mkdir, readFile, writeFile } from "node:fs/promises";
+import { join } from "node:path";
+
+const root = new URL("../", import.meta.url).pathname;
+const www = join(root, "www");
+const out = join(root, "dist/single");
+/** Page → its script. */
+const PAGES = { "index.html": "main.js", "swarm.html": "swarm.js", "keyframes.html": "keyframes.js" };
+
+/** Serves `./pkg/<name>_demo.js` as a module whose default `init()` is given the inlined .wasm. */
+const inlineWasm = {
+  name: "inline-wasm",
+  setup(build) {
+    build.onResolve({ filter: /\/pkg\/\w+_demo\.js$/ }, (args) =>
+      args.pluginData === "glue" ? undefined : { path: join(args.resolveDir, args.path), namespace: "inline-wasm" });
+    build.onLoad({ filter: /.*/, namespace: "inline-wasm" }, (args) => ({
+      resolveDir: www,
+      pluginData: "glue",
+      contents: `
+        import init from ${JSON.stringify(args.path)};
+        import wasm from ${JSON.stringify(args.path.replace(/\.js$/, "_bg.wasm"))};
+        export * from ${JSON.stringify(args.path)};
+        export default (input) => init(input ?? { module_or_path: wasm });`,
+    }));
+    // The glue's own import of itself must reach the real file.
+    build.onResolve({ filter: /.*/ }, (args) => (args.pluginData === "glue" && args.path.endsWith(".js") ? { path: args.path } : undefined));
+  },
+};
+
+/** The page's HTML with its style sheet and bundled script inside, and nothing to fetch. */
+async function single(page, script) {
+  const bundle = await build({
+    entryPoints: [join(www, script)],
+    bundle: true,
+    format: "esm",
+    minify: true,
+    write: false,
+    loader: { ".wasm": "binary" },
+    plugins: [inlineWasm],
+    logLevel: "silent",
+  });
+  const code = bundle.outputFiles[0].text;
+  if (code.includes("</script")) throw new Error(`${script}: the bundle holds "</script" and cannot be inlined`);
+  const css = await readFile(join(www, "style.css"), "utf8");
+  let html = await readFile(join(www, page), "utf8");
+  const replace = (pattern, replacement) => {
+    const before = html;
+    html = html.replace(pattern, replacement);
+    if (html === before) throw new Error(`${page}: ${pattern} not found`);
+  };
+  replace(/^<link rel="(modulepreload|preload)"[^>]*>\n/gm, "");
+  replace('<link rel="stylesheet" href="style.css">', () => `<style>\n${css}</style>`);
+  replace(`<script type="module" src="${script}"></script>`, () => `<script type="module">\n${code}</script>`);
+  // The examples need the site's import map and vendored files: not part of the one-file pages.
+  replace(/ · <a href="examples\/three\.html">With three\.js<\/a>/, "");
+  await writeFile(join(out, page), html);
+  return html.length;
+}
+
+await mkdir(out, { recursive: true });
+for (const [page, script] of Object.entries(PAGES)) {
+  const bytes = await single(page, script);
+  console.log(`dist/single/${page}: ${bytes} bytes`);
+}

@@ -1,0 +1,54 @@
+// `make single`'s pages opened as a teacher opens them from a USB stick: from file://, with every
+// request other than the file itself refused, each page must load its module and draw.
+import { test, before, after } from "node:test";
+import assert from "node:assert/strict";
+import { existsSync } from "node:fs";
+import { join } from "node:path";
+import { pathToFileURL } from "node:url";
+import { chromium } from "playwright-core";
+import { CHROMIUM } from "../../scripts/static-server.mjs";
+import { root } from "./browser.mjs";
+
+let browser;
+before(async () => (browser = await chromium.launch(CHROMIUM)));
+after(async () => browser?.close());
+
+/** Non-blank pixels of each canvas on the page. */
+const drawn = (page) => page.evaluate(() => Array.from(document.querySelectorAll("canvas"), (canvas) => {
+  const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
+  let count = 0;
+  for (let i = 0; i < data.length; i += 4) if (data[i] < 250 || data[i + 1] < 250 || data[i + 2] < 250) count++;
+  return { id: canvas.id, count };
+}));
+
+for (const name of ["index.html", "swarm.html", "keyframes.html"]) {
+  test(`dist/single/${name} works from file:// with no server and no network`, async () => {
+    const file = join(root, "dist/single", name);
+    assert.ok(existsSync(file), `${file} is missing: run make single`);
+    const context = await browser.newContext({ viewport: { width: 1280, height: 900 } });
+    const page = await context.newPage();
+    const problems = [];
+    const url = pathToFileURL(file).href;
+    await context.route("**/*", (route) => {
+      if (route.request().url() === url) return route.continue();
+      problems.push(`request: ${route.request().url()}`);
+      return route.abort();
+    });
+    page.on("console", (m) => m.type() === "error" && problems.push(`console: ${m.text()}`));
+    page.on("pageerror", (e) => problems.push(`pageerror: ${e.message}`));
+    try {
+      await page.goto(url);
+      await page.waitForFunction(() => document.querySelector("#load-status").hidden, null, { timeout: 10000 });
+      await page.waitForTimeout(300);
+      for (const { id, count } of await drawn(page)) assert.ok(count > 100, `${name}: canvas #${id} is blank`);
+      if (name === "index.html") {
+        // The paper's example, computed in the file: T = 11.66 and Table 1's corrected row.
+        assert.match(await page.locator("#final-time").textContent(), /^T = 11\.66 after 1166 steps/);
+        assert.match(await page.locator("#moments").textContent(), /0\.4364 \+ 0\.4364i \+ 0\.4364j \+ 0\.6548k/);
+      }
+      assert.deepEqual(problems, []);
+    } finally {
+      await context.close();
+    }
+  });
+}
