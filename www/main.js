@@ -8,7 +8,7 @@ import { Form, stateKey } from "./form.js";
 import { wireDragging, wireKeyboard } from "./input.js";
 import { parseNumber } from "./numbers.js";
 import { DEFAULTS, PRESETS, presetName, randomQuaternion } from "./presets.js";
-import { describeFrame, describeRun, fillTable } from "./summary.js";
+import { describeFrame, describeRun, fillTable, fillTypo, printedNotes } from "./summary.js";
 import { readQuery, throttledUrl, writeQuery } from "./url.js";
 import { Views } from "./views.js";
 
@@ -75,6 +75,8 @@ function show(/** @type {Demo} */ demo, /** @type {State} */ state) {
   ui.time.step = String(state.step);
   views.show(demo);
   fillTable(demo, $("#moments tbody", HTMLTableSectionElement), $("#final-time", HTMLElement));
+  $("#printed-notes", HTMLUListElement).replaceChildren(...printedNotes(demo).map((note) => Object.assign(document.createElement("li"), { textContent: note })));
+  fillTypo(demo, state.tolerance, $("#typo tbody", HTMLTableSectionElement), $("#typo-summary", HTMLElement));
   ui.note.textContent = describeRun(demo, state);
   form.field("preset").value = presetName(state);
   showTime();

@@ -19,9 +19,92 @@ export function fillTable(demo, body, finalLine) {
     row.insertCell().textContent = moment === finalTime ? `T = ${moment.toFixed(2)}` : String(moment);
     row.insertCell().textContent = formatQuaternion(demo.integratedAt(moment));
     row.insertCell().textContent = formatQuaternion(demo.exactAt(moment));
+    printedCell(row.insertCell(), demo.printedRow(moment));
   }
   finalLine.textContent =
     `T = ${finalTime.toFixed(2)} after ${demo.steps} steps; the closed form predicts T* = ${demo.predictedTime.toFixed(4)}.`;
+}
+
+const UNITS = ["", "i", "j", "k"];
+
+/** The paper's printed row, its wrong numbers marked and its truncated ones underlined. */
+function printedCell(/** @type {HTMLTableCellElement} */ cell, /** @type {import("./pkg/kli_demo.js").PrintedRow | undefined} */ row) {
+  if (!row) {
+    cell.textContent = "—";
+    return;
+  }
+  row.verdicts.forEach((verdict, c) => {
+    if (c > 0) cell.append(" + ");
+    const text = `${row.printed[c].toFixed(2)}${UNITS[c]}`;
+    if (verdict === "agrees") return cell.append(text);
+    const span = document.createElement(verdict === "differs" ? "mark" : "span");
+    span.className = verdict;
+    span.textContent = text;
+    const said = document.createElement("span");
+    said.className = "visually-hidden";
+    said.textContent = ` (${verdict === "differs" ? "wrong" : "truncated"})`;
+    span.append(said);
+    cell.append(span);
+  });
+}
+
+/**
+ * What the printed Table 1 gets wrong, row by row, in words; empty unless the run is the paper's
+ * example.
+ * @param {Demo} demo
+ * @returns {string[]}
+ */
+export function printedNotes(demo) {
+  const notes = [];
+  for (const moment of demo.moments) {
+    const row = demo.printedRow(moment);
+    if (!row) continue;
+    const exact = demo.exactAt(moment);
+    const t = `t = ${moment === demo.finalTime ? moment.toFixed(2) : moment}`;
+    if (row.repeats !== undefined) {
+      notes.push(`${t}: the printed row is the t = ${row.repeats} row again; the closed form gives ${formatQuaternion(exact)}.`);
+    } else if (row.verdicts.includes("differs")) {
+      notes.push(`${t}: printed ${formatPrinted(row)}, computed ${formatQuaternion(exact)}.`);
+    }
+    const cut = row.verdicts.flatMap((verdict, c) => (verdict === "truncated" ? [c] : []));
+    if (cut.length > 0) {
+      const c = cut[0];
+      notes.push(`${t}: ${row.printed[c].toFixed(2)} for ${exact[c].toFixed(4)}${cut.length > 1 ? ` (and ${cut.length - 1} more)` : ""}: cut after two decimals, where rounding gives ${exact[c].toFixed(2)}.`);
+    }
+  }
+  return notes;
+}
+
+function formatPrinted(/** @type {import("./pkg/kli_demo.js").PrintedRow} */ row) {
+  return Array.from(row.printed, (x, c) => `${x.toFixed(2)}${UNITS[c]}`).join(" + ");
+}
+
+/** The moments at which the eq. 4 typo is shown. */
+const TYPO_TIMES = [0, 0.5, 1, 2, 5, 10, 20, 40];
+
+/**
+ * Eq. 4 as printed, integrated from this run's p: |q| and the distance to the target over time.
+ * @param {Demo} demo
+ * @param {number} tolerance the run's ε
+ * @param {HTMLTableSectionElement} body
+ * @param {HTMLElement} summary
+ */
+export function fillTypo(demo, tolerance, body, summary) {
+  body.replaceChildren();
+  const values = demo.integrateAsPrinted(new Float64Array(TYPO_TIMES));
+  TYPO_TIMES.forEach((t, i) => {
+    const row = body.insertRow();
+    row.insertCell().textContent = String(t);
+    row.insertCell().textContent = values[2 * i].toFixed(6);
+    row.insertCell().textContent = values[2 * i + 1].toFixed(6);
+  });
+  const last = TYPO_TIMES.length - 1;
+  const golden = (Math.sqrt(5) - 1) / 2;
+  summary.textContent = demo.finalTime === 0
+    ? "p is already at the target, where the printed field does not vanish either."
+    : `By t = ${TYPO_TIMES[last]} the printed flow has settled at |q| = ${values[2 * last].toFixed(6)} ` +
+      `((√5 − 1)/2 = ${golden.toFixed(6)}), ${values[2 * last + 1].toFixed(6)} from the target: ` +
+      `never within ε = ${tolerance} of it, where the correct flow arrives at T = ${demo.finalTime.toFixed(2)}.`;
 }
 
 /**

@@ -56,6 +56,41 @@ test("the table shows Table 1 (corrected row) and T = 11.66", async () => {
   await context.close();
 });
 
+test("the paper's printed Table 1 beside the live one: the copied row marked, truncations underlined, explained", async () => {
+  const { page, context, problems } = await open();
+  const printed = await page.$$eval("#moments tbody tr", (trs) => trs.map((tr) => ({
+    t: tr.cells[0].textContent,
+    text: tr.cells[3].textContent.replace(/ \((wrong|truncated)\)/g, ""),
+    wrong: tr.cells[3].querySelectorAll("mark.differs").length,
+    cut: tr.cells[3].querySelectorAll("span.truncated").length,
+  })));
+  const row = (t) => printed.find((r) => r.t === t);
+  // The paper's Table 1 as printed (MATH.md), and what is wrong with it.
+  assert.equal(row("1.8").text, "0.37 + 0.37i + 0.37j + 0.76k");
+  assert.equal(row("1.8").wrong, 4);
+  assert.equal(row("1.2").text, "0.37 + 0.37i + 0.37j + 0.76k");
+  assert.equal(row("1.2").wrong + row("1.2").cut, 0);
+  assert.deepEqual([row("0.2").cut, row("0.85").cut, row("T = 11.66").cut], [1, 1, 3]);
+  assert.equal(printed.reduce((sum, r) => sum + r.wrong, 0), 4);
+  const notes = await page.$$eval("#printed-notes li", (lis) => lis.map((li) => li.textContent));
+  assert.ok(notes.includes("t = 1.8: the printed row is the t = 1.2 row again; the closed form gives 0.4364 + 0.4364i + 0.4364j + 0.6548k."), notes.join("\n"));
+  assert.ok(notes.some((n) => n.startsWith("t = 0.2: 0.98 for 0.9866") && n.endsWith("rounding gives 0.99.")), notes.join("\n"));
+  // Eq. 4 as printed, integrated on the page: |q| settles at (√5 − 1)/2, 1 − 0.618 from r.
+  const typo = await page.$$eval("#typo tbody tr", (trs) => trs.map((tr) => Array.from(tr.cells, (c) => Number(c.textContent))));
+  assert.deepEqual(typo[0], [0, 1, 1]);
+  const [t, norm, distance] = typo.at(-1);
+  assert.equal(t, 40);
+  assert.equal(norm.toFixed(6), ((Math.sqrt(5) - 1) / 2).toFixed(6));
+  assert.equal(distance.toFixed(6), (1 - (Math.sqrt(5) - 1) / 2).toFixed(6));
+  assert.match(await page.locator("#typo-summary").textContent(), /settled at \|q\| = 0\.618034 .* never within ε = 0\.00001 of it/);
+  // Another pair: no printed values to compare with.
+  await page.selectOption("select[name=preset]", "near-identical");
+  await page.waitForFunction(() => document.querySelector("#moments tbody tr td:nth-child(4)").textContent === "—");
+  assert.equal(await page.locator("#printed-notes li").count(), 0);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
 test("the animation advances, then stops at T", async () => {
   const { page, context, problems } = await open();
   await page.selectOption("#speed", "4");

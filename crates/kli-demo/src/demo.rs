@@ -1,6 +1,8 @@
 //! The `Demo` class: one per choice of `p`, `r` and options, holding the computed [`Scene`] and
 //! drawing its views onto canvas contexts the page passes in.
 
+use js_sys::{Array, Float64Array, Object, Reflect};
+use kli::quaternion::to_wxyz;
 use kli_wasm::error::{JsResult, throw};
 use kli_wasm::options::{KliOptionsObject, read_options};
 use kli_wasm::read::{Order, QuaternionLike, quaternion};
@@ -12,6 +14,7 @@ use crate::camera::{Camera, Viewport};
 use crate::format::{fixed, number};
 use crate::object_view::{draw_object, object_camera};
 use crate::palette::{BACKGROUND, INK, KLI, MUTED, SLERP};
+use crate::paper::{self, PAPER_P, PAPER_R};
 use crate::pen::Pen;
 use crate::plots::{draw_plot_cursors, draw_plots};
 use crate::scene::Scene;
@@ -239,6 +242,56 @@ impl Demo {
         draw_plot_cursors(&Pen::over(ctx, pixel_ratio), width, height, &self.scene, finite(t));
     }
 
+    /// Whether this run is the paper's example (`p = k`, `r = ½(1 + i + j + k)`), whose Table 1
+    /// the paper prints.
+    #[wasm_bindgen(getter, js_name = isPaperExample)]
+    pub fn is_paper_example(&self) -> bool {
+        let path = self.scene.path();
+        to_wxyz(path.quaternions()[0]) == PAPER_P && to_wxyz(path.target()) == PAPER_R
+    }
+
+    /// The paper's printed Table 1 row at `t` beside this run, or `undefined` when the run is not
+    /// the paper's example or Table 1 has no row at `t`: `{ printed: [w, x, y, z], verdicts:
+    /// ["agrees" | "truncated" | "differs", …], repeats?: t }`, the verdicts against the closed
+    /// form, `repeats` the time of the row above when this row is printed the same as it.
+    #[wasm_bindgen(js_name = printedRow, unchecked_return_type = "PrintedRow | undefined")]
+    pub fn printed_row(&self, t: f64) -> JsValue {
+        let (Some((index, printed)), true) = (paper::printed_row(t), self.is_paper_example())
+        else {
+            return JsValue::UNDEFINED;
+        };
+        let Ok(exact) = self.scene.path().exact_at(t) else { return JsValue::UNDEFINED };
+        let exact = to_wxyz(exact);
+        let verdicts: Array =
+            (0..4).map(|c| JsValue::from(paper::verdict(printed[c], exact[c]).name())).collect();
+        let row = Object::new();
+        let set = |key: &str, value: JsValue| {
+            let _ = Reflect::set(&row, &key.into(), &value);
+        };
+        set("printed", Float64Array::from(&printed[..]).into());
+        set("verdicts", verdicts.into());
+        if let Some(above) = paper::repeats_row_above(index) {
+            set("repeats", above.into());
+        }
+        row.into()
+    }
+
+    /// The paper's eq. 4 as printed (the typo), integrated from this run's `p` towards its target
+    /// by RK4 with δ = 0.01: `[|q|, ‖target − q‖]` at each of `times` (sorted, finite, ≥ 0;
+    /// others are dropped).
+    #[wasm_bindgen(js_name = integrateAsPrinted)]
+    pub fn integrate_as_printed(&self, times: &[f64]) -> Vec<f64> {
+        let mut times: Vec<f64> =
+            times.iter().copied().filter(|t| t.is_finite() && *t >= 0.0 && *t <= 1e4).collect();
+        times.sort_by(f64::total_cmp);
+        let path = self.scene.path();
+        let (p, r) = (path.quaternions()[0], path.target());
+        kli::model::integrate_as_printed(p, r, 0.01, &times)
+            .into_iter()
+            .flat_map(|q| [q.length(), (r - q).length()])
+            .collect()
+    }
+
     /// The sphere view's default (azimuth, elevation) in radians (as `defaultSphereView()`).
     #[wasm_bindgen(js_name = defaultSphereView)]
     pub fn default_sphere_view() -> Vec<f64> {
@@ -249,6 +302,16 @@ impl Demo {
 fn sphere_viewport(width: f64, height: f64) -> Viewport {
     Viewport::fitting(0.0, 0.0, width, height, 1.22)
 }
+
+#[wasm_bindgen(typescript_custom_section)]
+const TYPES: &'static str = r#"
+/** A row of the paper's printed Table 1, judged against the closed form. */
+export interface PrintedRow {
+  printed: Float64Array;
+  verdicts: ("agrees" | "truncated" | "differs")[];
+  repeats?: number;
+}
+"#;
 
 /// Drawing never fails: a non-finite time is drawn as t = 0.
 fn finite(t: f64) -> f64 {

@@ -23,6 +23,8 @@ pub mod demo;
 pub mod format;
 pub mod object_view;
 pub mod palette;
+#[cfg(feature = "kli-page")]
+pub mod paper;
 pub mod pen;
 pub mod plots;
 pub mod scene;
