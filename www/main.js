@@ -3,6 +3,7 @@
 // checking and drawing are the module's (crates/kli-demo); each concern has its own file here.
 import init, { Demo, axisAngle, fromAxisAngle } from "./pkg/kli_demo.js";
 import { Clock } from "./clock.js";
+import { download, png, timeTag, wireSaving } from "./exports.js";
 import { $ } from "./dom.js";
 import { Form, stateKey } from "./form.js";
 import { wireDragging, wireKeyboard } from "./input.js";
@@ -231,6 +232,32 @@ function draw() {
   if (performance.getEntriesByName("kli:first-frame").length === 0) performance.mark("kli:first-frame");
 }
 
+// ---- Saving -------------------------------------------------------------------------------
+
+/** The views' names in file names. */
+const FILE_NAMES = { object: "object", sphere: "hopf-sphere", filmstrip: "filmstrip", plots: "plots" };
+
+/** Saves a view as PNG or SVG, or the path as CSV or JSON, as it stands. */
+async function save(/** @type {string} */ what, /** @type {string} */ format) {
+  const demo = run.demo;
+  if (!demo) throw new Error("there is no run to save");
+  const t = clock.t;
+  if (what === "path") {
+    const name = `kli-path-T${demo.finalTime.toFixed(2)}`;
+    if (format === "csv") return download(`${name}.csv`, "text/csv", demo.pathCsv());
+    return download(`${name}.json`, "application/json", demo.pathJson());
+  }
+  const view = /** @type {import("./views.js").ViewName} */ (what);
+  const size = views.sizes[view];
+  if (!size) throw new Error(`the ${what} view is not laid out`);
+  const name = `kli-${FILE_NAMES[view]}${view === "filmstrip" ? "" : `-${timeTag(t)}`}`;
+  if (format === "svg") {
+    const [azimuth, elevation] = views.view;
+    return download(`${name}.svg`, "image/svg+xml", demo.toSvg(view, size.width, size.height, t, azimuth, elevation));
+  }
+  download(`${name}.png`, "image/png", await png(size, (ctx, ratio) => views.drawInto(view, ctx, size, ratio, t)));
+}
+
 // ---- Start --------------------------------------------------------------------------------
 
 function wire() {
@@ -247,6 +274,7 @@ function wire() {
     seek(Number(ui.time.value));
   });
   ui.speed.addEventListener("input", () => (clock.speed = Number(ui.speed.value)));
+  wireSaving($("#save", HTMLElement), save, $("#save-status", HTMLElement));
   wireKeyboard(canvases.sphere, actions);
   wireDragging(canvases.sphere, actions.turn);
 }

@@ -79,6 +79,30 @@ export class Views {
     moving(ctx, size.width, size.height);
   }
 
+  /**
+   * Draws one view whole (its still and moving parts) onto `ctx` at `ratio`: for saving it.
+   * @param {ViewName} name
+   * @param {CanvasRenderingContext2D} ctx
+   * @param {{ width: number, height: number }} size CSS pixels
+   * @param {number} ratio
+   * @param {number} t
+   */
+  drawInto(name, ctx, { width, height }, ratio, t) {
+    const demo = this.demo;
+    if (!demo) return;
+    const [azimuth, elevation] = this.view;
+    if (name === "object") demo.drawObject(ctx, width, height, ratio, t);
+    if (name === "filmstrip") demo.drawFilmstrip(ctx, width, height, ratio);
+    if (name === "sphere") {
+      demo.drawSphere(ctx, width, height, ratio, azimuth, elevation);
+      demo.drawSphereTime(ctx, width, height, ratio, t, azimuth, elevation);
+    }
+    if (name === "plots") {
+      demo.drawPlots(ctx, width, height, ratio);
+      demo.drawPlotsTime(ctx, width, height, ratio, t);
+    }
+  }
+
   drawFilmstrip() {
     const size = this.sizes.filmstrip;
     if (this.demo && size) {

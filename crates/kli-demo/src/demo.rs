@@ -15,7 +15,7 @@ use crate::format::{fixed, number};
 use crate::object_view::{draw_object, object_camera};
 use crate::palette::{BACKGROUND, INK, KLI, MUTED, SLERP};
 use crate::paper::{self, PAPER_P, PAPER_R};
-use crate::pen::Pen;
+use crate::pen::{Pen, size, unknown_view};
 use crate::plots::{draw_plot_cursors, draw_plots};
 use crate::scene::Scene;
 use crate::sphere_view::{draw_sphere, draw_sphere_cursor};
@@ -112,25 +112,8 @@ impl Demo {
         pixel_ratio: f64,
         t: f64,
     ) {
-        let t = finite(t);
         let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
-        let camera = object_camera();
-        let side_by_side = width >= height;
-        let (w, h) = if side_by_side { (width / 2.0, height) } else { (width, height / 2.0) };
-        let panels = [
-            (self.scene.integrated_at(t), KLI, format!("KLI  t = {}", fixed(t, 2))),
-            (
-                self.scene.slerp_at(t),
-                SLERP,
-                format!("SLERP  s = t/T = {}", fixed(self.scene.slerp_parameter(t), 3)),
-            ),
-        ];
-        for (i, (q, color, label)) in panels.iter().enumerate() {
-            let (left, top) = if side_by_side { (i as f64 * w, 0.0) } else { (0.0, i as f64 * h) };
-            let viewport = Viewport::fitting(left, top + 10.0, w, h - 10.0, 1.6);
-            draw_object(&pen, &viewport, &camera, &self.mesh, *q, true);
-            pen.text(label, (left + 10.0, top + 14.0), color, 13.0, "left");
-        }
+        self.paint_object(&pen, width, height, finite(t));
     }
 
     /// The object at each of Table 1's moments, in a row (Fig. 2), labelled with the time; on
@@ -143,32 +126,11 @@ impl Demo {
         height: f64,
         pixel_ratio: f64,
     ) {
-        let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
-        let camera = object_camera();
-        let moments = self.scene.moments();
-        let cell = width / moments.len() as f64;
-        let last = moments.len() - 1;
-        let labels = |short: bool| -> Vec<String> {
-            let t = |i: usize, m: f64| if i == last { fixed(m, 2) } else { number(m) };
-            let names = if short { ("", "T ") } else { ("t = ", "T = ") };
-            let name = |i: usize| if i == last { names.1 } else { names.0 };
-            moments.iter().enumerate().map(|(i, &m)| format!("{}{}", name(i), t(i, m))).collect()
-        };
-        let fits = |labels: &[String], size: f64| {
-            labels.iter().all(|l| pen.text_width(l, size) <= cell - 6.0)
-        };
-        let (labels, size) = [(false, 12.0), (true, 12.0), (true, 10.0), (true, 8.0)]
-            .into_iter()
-            .map(|(short, size)| (labels(short), size))
-            .find(|(labels, size)| fits(labels, *size))
-            .unwrap_or_else(|| (labels(true), 8.0));
-        for (i, &t) in moments.iter().enumerate() {
-            let left = i as f64 * cell;
-            let viewport = Viewport::fitting(left, 0.0, cell, height - 16.0, 1.6);
-            draw_object(&pen, &viewport, &camera, &self.mesh, self.scene.integrated_at(t), false);
-            let colour = if i == last { INK } else { MUTED };
-            pen.text(&labels[i], (left + 0.5 * cell, height - 9.0), colour, size, "center");
-        }
+        self.paint_filmstrip(
+            &Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND),
+            width,
+            height,
+        );
     }
 
     /// The Hopf curves on S², seen from (azimuth, elevation) in radians (Fig. 1), without the
@@ -292,10 +254,165 @@ impl Demo {
             .collect()
     }
 
+    /// One figure as an SVG document, vector paths and text as the page draws it: `view` is
+    /// "object", "sphere", "filmstrip" or "plots", `width` × `height` CSS pixels, at time `t`,
+    /// the sphere seen from (azimuth, elevation) in radians.
+    #[wasm_bindgen(js_name = toSvg)]
+    pub fn to_svg(
+        &self,
+        view: &str,
+        width: f64,
+        height: f64,
+        t: f64,
+        azimuth: f64,
+        elevation: f64,
+    ) -> JsResult<String> {
+        let (width, height, t) = (size(width), size(height), finite(t));
+        let pen = |title: &str| Pen::svg(width, height, BACKGROUND, title);
+        let camera = Camera::orbit(azimuth, elevation);
+        let pen = match view {
+            "object" => {
+                let pen = pen("The object under KLI and under SLERP");
+                self.paint_object(&pen, width, height, t);
+                pen
+            }
+            "sphere" => {
+                let pen = pen("The Hopf curves of KLI and SLERP on S²");
+                let viewport = sphere_viewport(width, height);
+                draw_sphere(&pen, &viewport, &camera, &self.scene);
+                draw_sphere_cursor(&pen, &viewport, &camera, &self.scene, t);
+                pen
+            }
+            "filmstrip" => {
+                let pen = pen("The object at the moments of Table 1");
+                self.paint_filmstrip(&pen, width, height);
+                pen
+            }
+            "plots" => {
+                let pen = pen("Distance to the target, the SLERP parameter s(t), the drift of |q|");
+                draw_plots(&pen, width, height, &self.scene);
+                draw_plot_cursors(&pen, width, height, &self.scene, t);
+                pen
+            }
+            other => return Err(throw(unknown_view(other, &VIEWS))),
+        };
+        Ok(pen.finish())
+    }
+
+    /// The path as CSV, a row a sample: `t`, the integrated quaternion `w, x, y, z`, the SLERP
+    /// parameter `s(t)` it sits at, the distance `‖target − q‖`, and its Hopf point.
+    #[wasm_bindgen(js_name = pathCsv)]
+    pub fn path_csv(&self) -> String {
+        let mut csv = String::from("t,w,x,y,z,slerpParameter,distance,hopfX,hopfY,hopfZ\n");
+        for row in self.rows() {
+            let line: Vec<String> = row.iter().map(|v| v.to_string()).collect();
+            csv.push_str(&line.join(","));
+            csv.push('\n');
+        }
+        csv
+    }
+
+    /// The path as JSON: the run (`p`, `target`, `finalTime`, `steps`) and its samples, each
+    /// `{ t, quaternion: [w, x, y, z], slerpParameter, distance, hopf: [x, y, z] }`.
+    #[wasm_bindgen(js_name = pathJson)]
+    pub fn path_json(&self) -> String {
+        let list = |v: &[f64]| {
+            let items: Vec<String> = v.iter().map(|x| x.to_string()).collect();
+            format!("[{}]", items.join(","))
+        };
+        let path = self.scene.path();
+        let samples: Vec<String> = self
+            .rows()
+            .map(|r| {
+                format!(
+                    "{{\"t\":{},\"quaternion\":{},\"slerpParameter\":{},\"distance\":{},\"hopf\":{}}}",
+                    r[0],
+                    list(&r[1..5]),
+                    r[5],
+                    r[6],
+                    list(&r[7..10])
+                )
+            })
+            .collect();
+        format!(
+            "{{\"p\":{},\"target\":{},\"finalTime\":{},\"steps\":{},\"samples\":[\n{}\n]}}\n",
+            list(&to_wxyz(path.quaternions()[0])),
+            list(&to_wxyz(path.target())),
+            path.final_time(),
+            path.steps(),
+            samples.join(",\n")
+        )
+    }
+
     /// The sphere view's default (azimuth, elevation) in radians (as `defaultSphereView()`).
     #[wasm_bindgen(js_name = defaultSphereView)]
     pub fn default_sphere_view() -> Vec<f64> {
         crate::default_sphere_view()
+    }
+}
+
+/// The views, drawn with any [`Pen`]: the canvas methods above and [`Demo::to_svg`] share them.
+impl Demo {
+    /// The exported rows: t, w, x, y, z, s, distance, Hopf x, y, z (every number finite).
+    fn rows(&self) -> impl Iterator<Item = [f64; 10]> + '_ {
+        let s = &self.scene;
+        let path = s.path();
+        // The Hopf points as the package computes them (the scene's are of normalised samples).
+        let hopf = path.hopf_curve();
+        path.times().iter().zip(path.quaternions()).zip(hopf).enumerate().map(
+            move |(i, ((&t, &q), h))| {
+                let [w, x, y, z] = to_wxyz(q);
+                [t, w, x, y, z, s.warp()[i], s.distances()[i], h.x, h.y, h.z]
+            },
+        )
+    }
+
+    fn paint_object(&self, pen: &Pen, width: f64, height: f64, t: f64) {
+        let camera = object_camera();
+        let side_by_side = width >= height;
+        let (w, h) = if side_by_side { (width / 2.0, height) } else { (width, height / 2.0) };
+        let panels = [
+            (self.scene.integrated_at(t), KLI, format!("KLI  t = {}", fixed(t, 2))),
+            (
+                self.scene.slerp_at(t),
+                SLERP,
+                format!("SLERP  s = t/T = {}", fixed(self.scene.slerp_parameter(t), 3)),
+            ),
+        ];
+        for (i, (q, color, label)) in panels.iter().enumerate() {
+            let (left, top) = if side_by_side { (i as f64 * w, 0.0) } else { (0.0, i as f64 * h) };
+            let viewport = Viewport::fitting(left, top + 10.0, w, h - 10.0, 1.6);
+            draw_object(pen, &viewport, &camera, &self.mesh, *q, true);
+            pen.text(label, (left + 10.0, top + 14.0), color, 13.0, "left");
+        }
+    }
+
+    fn paint_filmstrip(&self, pen: &Pen, width: f64, height: f64) {
+        let camera = object_camera();
+        let moments = self.scene.moments();
+        let cell = width / moments.len() as f64;
+        let last = moments.len() - 1;
+        let labels = |short: bool| -> Vec<String> {
+            let t = |i: usize, m: f64| if i == last { fixed(m, 2) } else { number(m) };
+            let names = if short { ("", "T ") } else { ("t = ", "T = ") };
+            let name = |i: usize| if i == last { names.1 } else { names.0 };
+            moments.iter().enumerate().map(|(i, &m)| format!("{}{}", name(i), t(i, m))).collect()
+        };
+        let fits = |labels: &[String], size: f64| {
+            labels.iter().all(|l| pen.text_width(l, size) <= cell - 6.0)
+        };
+        let (labels, size) = [(false, 12.0), (true, 12.0), (true, 10.0), (true, 8.0)]
+            .into_iter()
+            .map(|(short, size)| (labels(short), size))
+            .find(|(labels, size)| fits(labels, *size))
+            .unwrap_or_else(|| (labels(true), 8.0));
+        for (i, &t) in moments.iter().enumerate() {
+            let left = i as f64 * cell;
+            let viewport = Viewport::fitting(left, 0.0, cell, height - 16.0, 1.6);
+            draw_object(pen, &viewport, &camera, &self.mesh, self.scene.integrated_at(t), false);
+            let colour = if i == last { INK } else { MUTED };
+            pen.text(&labels[i], (left + 0.5 * cell, height - 9.0), colour, size, "center");
+        }
     }
 }
 
@@ -312,6 +429,9 @@ export interface PrintedRow {
   repeats?: number;
 }
 "#;
+
+/// The figures `toSvg` draws.
+const VIEWS: [&str; 4] = ["object", "sphere", "filmstrip", "plots"];
 
 /// Drawing never fails: a non-finite time is drawn as t = 0.
 fn finite(t: f64) -> f64 {

@@ -1,16 +1,30 @@
-//! A thin layer over the canvas 2D context: the few drawing calls the views need, in CSS pixels.
-//! Drawing errors (only possible for non-finite coordinates) are ignored rather than unwrapped:
-//! nothing here may panic.
+//! The one drawing interface of the views: the few calls they need, in CSS pixels, onto either a
+//! canvas 2D context (the live pages, PNG export) or an SVG document (vector export: real paths,
+//! circles and text, not a bitmap). Drawing errors (only possible for non-finite coordinates) are
+//! ignored rather than unwrapped: nothing here may panic.
+
+use std::cell::{Cell, RefCell};
+use std::fmt::Write;
 
 use js_sys::Array;
+use kli::{ErrorKind, KliError};
 use wasm_bindgen::JsValue;
 use web_sys::CanvasRenderingContext2d;
 
 use crate::aircraft::Rgb;
 
-/// Draws on one canvas context.
+/// Where a [`Pen`] draws.
+enum Surface<'a> {
+    Canvas(&'a CanvasRenderingContext2d),
+    /// The SVG document so far, and the count of gradients defined in it (for their ids).
+    Svg(RefCell<String>, Cell<usize>),
+}
+
+/// Draws on one canvas context or into one SVG document.
 pub struct Pen<'a> {
-    ctx: &'a CanvasRenderingContext2d,
+    surface: Surface<'a>,
+    /// The opacity of what is drawn next (the canvas keeps its own; SVG elements carry it).
+    opacity: Cell<f64>,
 }
 
 /// `rgb(…)` of a colour scaled by `light` (1 = as is).
@@ -18,6 +32,23 @@ pub fn shade(color: Rgb, light: f64) -> String {
     #[allow(clippy::manual_clamp)] // f64::clamp can panic; nothing drawn may
     let [r, g, b] = color.map(|c| (c as f64 * light).round().max(0.0).min(255.0) as u8);
     format!("rgb({r},{g},{b})")
+}
+
+const FONT: &str = "system-ui, -apple-system, 'Segoe UI', sans-serif";
+
+fn ratio_or_one(pixel_ratio: f64) -> f64 {
+    if pixel_ratio.is_finite() && pixel_ratio > 0.0 { pixel_ratio } else { 1.0 }
+}
+
+/// Text safe inside SVG elements and attribute values.
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+}
+
+/// A coordinate in SVG: two decimals (a hundredth of a CSS pixel), non-finite as 0.
+fn n(x: f64) -> String {
+    let x = if x.is_finite() { (x * 100.0).round() / 100.0 } else { 0.0 };
+    format!("{x}")
 }
 
 impl<'a> Pen<'a> {
@@ -30,7 +61,7 @@ impl<'a> Pen<'a> {
         pixel_ratio: f64,
         background: &str,
     ) -> Self {
-        let ratio = if pixel_ratio.is_finite() && pixel_ratio > 0.0 { pixel_ratio } else { 1.0 };
+        let ratio = ratio_or_one(pixel_ratio);
         let _ = ctx.set_transform(ratio, 0.0, 0.0, ratio, 0.0, 0.0);
         ctx.set_global_alpha(1.0);
         let _ = ctx.set_line_dash(&Array::new());
@@ -38,41 +69,98 @@ impl<'a> Pen<'a> {
         ctx.fill_rect(0.0, 0.0, width, height);
         ctx.set_line_join("round");
         ctx.set_line_cap("round");
-        Self { ctx }
+        Self { surface: Surface::Canvas(ctx), opacity: Cell::new(1.0) }
     }
 
     /// Draws over what the canvas holds (no clearing), in CSS pixels at `pixel_ratio`.
     pub fn over(ctx: &'a CanvasRenderingContext2d, pixel_ratio: f64) -> Self {
-        let ratio = if pixel_ratio.is_finite() && pixel_ratio > 0.0 { pixel_ratio } else { 1.0 };
+        let ratio = ratio_or_one(pixel_ratio);
         let _ = ctx.set_transform(ratio, 0.0, 0.0, ratio, 0.0, 0.0);
         ctx.set_global_alpha(1.0);
-        Self { ctx }
+        Self { surface: Surface::Canvas(ctx), opacity: Cell::new(1.0) }
     }
 
-    pub fn context(&self) -> &CanvasRenderingContext2d {
-        self.ctx
+    /// A new SVG document `width` × `height` CSS pixels, filled with `background`; `title` is its
+    /// accessible name. [`Pen::finish`] returns the text.
+    pub fn svg(width: f64, height: f64, background: &str, title: &str) -> Pen<'static> {
+        let (w, h) = (n(width.max(1.0)), n(height.max(1.0)));
+        let mut doc = format!(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" \
+             viewBox=\"0 0 {w} {h}\" role=\"img\" font-family=\"{FONT}\" \
+             stroke-linecap=\"round\" stroke-linejoin=\"round\">\n<title>{}</title>\n",
+            escape(title)
+        );
+        let _ = writeln!(doc, "<rect width=\"{w}\" height=\"{h}\" fill=\"{background}\"/>");
+        Pen { surface: Surface::Svg(RefCell::new(doc), Cell::new(0)), opacity: Cell::new(1.0) }
     }
 
-    pub fn alpha(&self, alpha: f64) {
-        self.ctx.set_global_alpha(alpha);
-    }
-
-    fn trace(&self, points: &[(f64, f64)]) {
-        self.ctx.begin_path();
-        for (i, &(x, y)) in points.iter().enumerate() {
-            if i == 0 { self.ctx.move_to(x, y) } else { self.ctx.line_to(x, y) }
+    /// The SVG document, closed (empty for a canvas pen).
+    pub fn finish(self) -> String {
+        match self.surface {
+            Surface::Svg(doc, _) => doc.into_inner() + "</svg>\n",
+            Surface::Canvas(_) => String::new(),
         }
     }
 
+    /// Appends an SVG element, with the current opacity.
+    fn element(&self, doc: &RefCell<String>, tag: &str, attributes: &str, text: Option<&str>) {
+        let mut doc = doc.borrow_mut();
+        let opacity = self.opacity.get();
+        let _ = write!(doc, "<{tag} {attributes}");
+        if opacity < 1.0 {
+            let _ = write!(doc, " opacity=\"{}\"", n(opacity));
+        }
+        match text {
+            Some(text) => {
+                let _ = writeln!(doc, ">{}</{tag}>", escape(text));
+            }
+            None => doc.push_str("/>\n"),
+        }
+    }
+
+    pub fn alpha(&self, alpha: f64) {
+        self.opacity.set(alpha);
+        if let Surface::Canvas(ctx) = self.surface {
+            ctx.set_global_alpha(alpha);
+        }
+    }
+
+    fn trace(ctx: &CanvasRenderingContext2d, points: &[(f64, f64)]) {
+        ctx.begin_path();
+        for (i, &(x, y)) in points.iter().enumerate() {
+            if i == 0 { ctx.move_to(x, y) } else { ctx.line_to(x, y) }
+        }
+    }
+
+    fn points(points: &[(f64, f64)]) -> String {
+        let mut text = String::with_capacity(points.len() * 14);
+        for (i, &(x, y)) in points.iter().enumerate() {
+            let _ = write!(text, "{}{},{}", if i == 0 { "" } else { " " }, n(x), n(y));
+        }
+        text
+    }
+
     pub fn fill_polygon(&self, points: &[(f64, f64)], fill: &str, outline: Option<&str>) {
-        self.trace(points);
-        self.ctx.close_path();
-        self.ctx.set_fill_style_str(fill);
-        self.ctx.fill();
-        if let Some(color) = outline {
-            self.ctx.set_stroke_style_str(color);
-            self.ctx.set_line_width(0.6);
-            self.ctx.stroke();
+        match &self.surface {
+            Surface::Canvas(ctx) => {
+                Self::trace(ctx, points);
+                ctx.close_path();
+                ctx.set_fill_style_str(fill);
+                ctx.fill();
+                if let Some(color) = outline {
+                    ctx.set_stroke_style_str(color);
+                    ctx.set_line_width(0.6);
+                    ctx.stroke();
+                }
+            }
+            Surface::Svg(doc, _) => {
+                let stroke = outline
+                    .map(|c| format!(" stroke=\"{c}\" stroke-width=\"0.6\""))
+                    .unwrap_or_default();
+                let attributes =
+                    format!("points=\"{}\" fill=\"{fill}\"{stroke}", Self::points(points));
+                self.element(doc, "polygon", &attributes, None);
+            }
         }
     }
 
@@ -81,13 +169,29 @@ impl<'a> Pen<'a> {
         if points.len() < 2 {
             return;
         }
-        let pattern: Array = dash.iter().map(|&d| JsValue::from_f64(d)).collect();
-        let _ = self.ctx.set_line_dash(&pattern);
-        self.trace(points);
-        self.ctx.set_stroke_style_str(color);
-        self.ctx.set_line_width(width);
-        self.ctx.stroke();
-        let _ = self.ctx.set_line_dash(&Array::new());
+        match &self.surface {
+            Surface::Canvas(ctx) => {
+                let pattern: Array = dash.iter().map(|&d| JsValue::from_f64(d)).collect();
+                let _ = ctx.set_line_dash(&pattern);
+                Self::trace(ctx, points);
+                ctx.set_stroke_style_str(color);
+                ctx.set_line_width(width);
+                ctx.stroke();
+                let _ = ctx.set_line_dash(&Array::new());
+            }
+            Surface::Svg(doc, _) => {
+                let mut attributes = format!(
+                    "points=\"{}\" fill=\"none\" stroke=\"{color}\" stroke-width=\"{}\"",
+                    Self::points(points),
+                    n(width)
+                );
+                if !dash.is_empty() {
+                    let pattern: Vec<String> = dash.iter().map(|&d| n(d)).collect();
+                    let _ = write!(attributes, " stroke-dasharray=\"{}\"", pattern.join(" "));
+                }
+                self.element(doc, "polyline", &attributes, None);
+            }
+        }
     }
 
     pub fn line(&self, from: (f64, f64), to: (f64, f64), color: &str, width: f64, dash: &[f64]) {
@@ -96,16 +200,33 @@ impl<'a> Pen<'a> {
 
     /// A disc of radius `r`, optionally ringed.
     pub fn disc(&self, (x, y): (f64, f64), r: f64, fill: Option<&str>, ring: Option<(&str, f64)>) {
-        self.ctx.begin_path();
-        let _ = self.ctx.arc(x, y, r, 0.0, std::f64::consts::TAU);
-        if let Some(fill) = fill {
-            self.ctx.set_fill_style_str(fill);
-            self.ctx.fill();
-        }
-        if let Some((color, width)) = ring {
-            self.ctx.set_stroke_style_str(color);
-            self.ctx.set_line_width(width);
-            self.ctx.stroke();
+        match &self.surface {
+            Surface::Canvas(ctx) => {
+                ctx.begin_path();
+                let _ = ctx.arc(x, y, r, 0.0, std::f64::consts::TAU);
+                if let Some(fill) = fill {
+                    ctx.set_fill_style_str(fill);
+                    ctx.fill();
+                }
+                if let Some((color, width)) = ring {
+                    ctx.set_stroke_style_str(color);
+                    ctx.set_line_width(width);
+                    ctx.stroke();
+                }
+            }
+            Surface::Svg(doc, _) => {
+                let mut attributes = format!(
+                    "cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\"",
+                    n(x),
+                    n(y),
+                    n(r),
+                    fill.unwrap_or("none")
+                );
+                if let Some((color, width)) = ring {
+                    let _ = write!(attributes, " stroke=\"{color}\" stroke-width=\"{}\"", n(width));
+                }
+                self.element(doc, "circle", &attributes, None);
+            }
         }
     }
 
@@ -114,50 +235,166 @@ impl<'a> Pen<'a> {
         if points.is_empty() {
             return;
         }
-        self.ctx.begin_path();
-        for &(x, y) in points {
-            self.ctx.move_to(x + r, y);
-            let _ = self.ctx.arc(x, y, r, 0.0, std::f64::consts::TAU);
+        match &self.surface {
+            Surface::Canvas(ctx) => {
+                ctx.begin_path();
+                for &(x, y) in points {
+                    ctx.move_to(x + r, y);
+                    let _ = ctx.arc(x, y, r, 0.0, std::f64::consts::TAU);
+                }
+                ctx.set_fill_style_str(fill);
+                ctx.fill();
+            }
+            Surface::Svg(doc, _) => {
+                // Each disc as two half-circle arcs: one path element for all of them.
+                let mut d = String::with_capacity(points.len() * 40);
+                let (r_, d2) = (n(r), n(2.0 * r));
+                for &(x, y) in points {
+                    let _ = write!(
+                        d,
+                        "M{},{}a{r_},{r_} 0 1 0 {d2},0a{r_},{r_} 0 1 0 -{d2},0",
+                        n(x - r),
+                        n(y)
+                    );
+                }
+                self.element(doc, "path", &format!("d=\"{d}\" fill=\"{fill}\""), None);
+            }
         }
-        self.ctx.set_fill_style_str(fill);
-        self.ctx.fill();
     }
 
     /// A disc shaded as a sphere lit from the upper left.
     pub fn shaded_disc(&self, (x, y): (f64, f64), r: f64, light: &str, dark: &str) {
-        if let Ok(gradient) =
-            self.ctx.create_radial_gradient(x - 0.35 * r, y - 0.4 * r, 0.05 * r, x, y, r)
-        {
-            let _ = gradient.add_color_stop(0.0, light);
-            let _ = gradient.add_color_stop(1.0, dark);
-            self.ctx.set_fill_style_canvas_gradient(&gradient);
-            self.ctx.begin_path();
-            let _ = self.ctx.arc(x, y, r, 0.0, std::f64::consts::TAU);
-            self.ctx.fill();
+        match &self.surface {
+            Surface::Canvas(ctx) => {
+                if let Ok(gradient) =
+                    ctx.create_radial_gradient(x - 0.35 * r, y - 0.4 * r, 0.05 * r, x, y, r)
+                {
+                    let _ = gradient.add_color_stop(0.0, light);
+                    let _ = gradient.add_color_stop(1.0, dark);
+                    ctx.set_fill_style_canvas_gradient(&gradient);
+                    ctx.begin_path();
+                    let _ = ctx.arc(x, y, r, 0.0, std::f64::consts::TAU);
+                    ctx.fill();
+                }
+            }
+            Surface::Svg(doc, gradients) => {
+                let id = gradients.get();
+                gradients.set(id + 1);
+                let _ = writeln!(
+                    doc.borrow_mut(),
+                    "<defs><radialGradient id=\"shade{id}\" gradientUnits=\"userSpaceOnUse\" \
+                     cx=\"{}\" cy=\"{}\" r=\"{}\" fx=\"{}\" fy=\"{}\" fr=\"{}\">\
+                     <stop offset=\"0\" stop-color=\"{light}\"/><stop offset=\"1\" \
+                     stop-color=\"{dark}\"/></radialGradient></defs>",
+                    n(x),
+                    n(y),
+                    n(r),
+                    n(x - 0.35 * r),
+                    n(y - 0.4 * r),
+                    n(0.05 * r)
+                );
+                let attributes = format!(
+                    "cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"url(#shade{id})\"",
+                    n(x),
+                    n(y),
+                    n(r)
+                );
+                self.element(doc, "circle", &attributes, None);
+            }
         }
     }
 
     /// Text at `(x, y)`; `align` is "left", "center" or "right", the baseline is the middle.
     pub fn text(&self, text: &str, (x, y): (f64, f64), color: &str, size: f64, align: &str) {
-        self.font(size);
-        self.ctx.set_text_align(align);
-        self.ctx.set_text_baseline("middle");
-        self.ctx.set_fill_style_str(color);
-        let _ = self.ctx.fill_text(text, x, y);
+        match &self.surface {
+            Surface::Canvas(ctx) => {
+                ctx.set_font(&font(size));
+                ctx.set_text_align(align);
+                ctx.set_text_baseline("middle");
+                ctx.set_fill_style_str(color);
+                let _ = ctx.fill_text(text, x, y);
+            }
+            Surface::Svg(doc, _) => {
+                let anchor = match align {
+                    "center" => "middle",
+                    "right" => "end",
+                    _ => "start",
+                };
+                let attributes = format!(
+                    "x=\"{}\" y=\"{}\" fill=\"{color}\" font-size=\"{}\" text-anchor=\"{anchor}\" \
+                     dominant-baseline=\"central\"",
+                    n(x),
+                    n(y),
+                    n(size)
+                );
+                self.element(doc, "text", &attributes, Some(text));
+            }
+        }
     }
 
-    /// The width of `text` in CSS pixels at `size`.
+    /// The width of `text` in CSS pixels at `size` (in SVG, where the viewer's font decides, an
+    /// estimate of 0.56 em a character).
     pub fn text_width(&self, text: &str, size: f64) -> f64 {
-        self.font(size);
-        self.ctx.measure_text(text).map(|m| m.width()).unwrap_or(0.0)
+        match &self.surface {
+            Surface::Canvas(ctx) => {
+                ctx.set_font(&font(size));
+                ctx.measure_text(text).map(|m| m.width()).unwrap_or(0.0)
+            }
+            Surface::Svg(..) => 0.56 * size * text.chars().count() as f64,
+        }
     }
+}
 
-    fn font(&self, size: f64) {
-        let tenths = (size * 10.0).round() as u32;
-        self.ctx.set_font(&format!(
-            "{}.{}px system-ui, -apple-system, 'Segoe UI', sans-serif",
-            tenths / 10,
-            tenths % 10
+/// A figure's side in CSS pixels: 1 to 10⁴ (a non-finite size is 1).
+pub fn size(x: f64) -> f64 {
+    if x.is_finite() { x.clamp(1.0, 1e4) } else { 1.0 }
+}
+
+/// The error for a figure name `toSvg` does not know.
+pub fn unknown_view(got: &str, allowed: &'static [&'static str]) -> KliError {
+    KliError::new("view", ErrorKind::UnknownName { got: got.into(), allowed })
+}
+
+fn font(size: f64) -> String {
+    let tenths = (size * 10.0).round() as u32;
+    format!("{}.{}px {FONT}", tenths / 10, tenths % 10)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn svg_holds_real_vector_elements_and_escapes_text() {
+        let pen = Pen::svg(200.0, 100.0, "#ffffff", "A <test> & \"figure\"");
+        pen.polyline(&[(1.0, 2.0), (3.25, 4.5), (f64::NAN, 6.0)], "#c2410c", 2.0, &[6.0, 4.0]);
+        pen.alpha(0.4);
+        pen.disc((10.0, 20.0), 5.0, Some("#fff"), Some(("#000", 1.5)));
+        pen.alpha(1.0);
+        pen.dots(&[(1.0, 1.0), (5.0, 5.0)], 2.0, "#123456");
+        pen.shaded_disc((50.0, 50.0), 40.0, "#fff", "#ccc");
+        pen.text("t < 1 & s", (7.0, 8.0), "#343a40", 12.0, "center");
+        pen.fill_polygon(&[(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)], "rgb(1,2,3)", None);
+        let svg = pen.finish();
+        assert!(
+            svg.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200\""),
+            "{svg}"
+        );
+        assert!(svg.contains("<title>A &lt;test&gt; &amp; &quot;figure&quot;</title>"));
+        assert!(svg.contains("points=\"1,2 3.25,4.5 0,6\""), "{svg}");
+        assert!(svg.contains("stroke-dasharray=\"6 4\""));
+        assert!(svg.contains("<circle cx=\"10\" cy=\"20\" r=\"5\" fill=\"#fff\" stroke=\"#000\" stroke-width=\"1.5\" opacity=\"0.4\"/>"), "{svg}");
+        assert_eq!(svg.matches(" opacity=").count(), 1);
+        assert!(svg.contains("M-1,1a2,2 0 1 0 4,0a2,2 0 1 0 -4,0M3,5"), "{svg}");
+        assert!(svg.contains("fill=\"url(#shade0)\""));
+        assert!(svg.contains(
+            "text-anchor=\"middle\" dominant-baseline=\"central\">t &lt; 1 &amp; s</text>"
         ));
+        assert!(svg.contains("<polygon points=\"0,0 1,0 0,1\" fill=\"rgb(1,2,3)\"/>"));
+        assert!(svg.ends_with("</svg>\n"));
+        // Estimated text widths grow with the text and the size.
+        let pen = Pen::svg(1.0, 1.0, "#fff", "");
+        assert!(pen.text_width("abcd", 12.0) > pen.text_width("ab", 12.0));
+        assert!((pen.text_width("ab", 10.0) - 11.2).abs() < 1e-12);
     }
 }

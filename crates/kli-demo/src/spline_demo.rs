@@ -15,7 +15,7 @@ use crate::aircraft::{Face, aircraft};
 use crate::camera::{Camera, Viewport};
 use crate::object_view::{draw_object, object_camera};
 use crate::palette::{BACKGROUND, INK, KLI, MUTED, SLERP};
-use crate::pen::Pen;
+use crate::pen::{Pen, size, unknown_view};
 use crate::plots::{Panel, trim};
 use crate::sphere_view::{Side, View, draw_globe, draw_grid_back, draw_grid_front, grid};
 
@@ -276,17 +276,12 @@ impl SplineDemo {
         pixel_ratio: f64,
         t: f64,
     ) {
-        let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
-        let camera = object_camera();
-        let curves: [&dyn Curve; 3] = [&self.chain, &self.squad, &self.slerp];
-        let wide = width >= height;
-        let (w, h) = if wide { (width / 3.0, height) } else { (width, height / 3.0) };
-        for (i, curve) in curves.iter().enumerate() {
-            let (left, top) = if wide { (i as f64 * w, 0.0) } else { (0.0, i as f64 * h) };
-            let viewport = Viewport::fitting(left, top + 14.0, w, h - 14.0, 1.6);
-            draw_object(&pen, &viewport, &camera, &self.mesh, curve.at(finite(t)), false);
-            pen.text(NAMES[i], (left + 0.5 * w, top + 10.0), COLOURS[i], 12.0, "center");
-        }
+        self.paint_objects(
+            &Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND),
+            width,
+            height,
+            finite(t),
+        );
     }
 
     /// The three Hopf curves through the keys' Hopf points on S², and the points at `t`.
@@ -302,10 +297,159 @@ impl SplineDemo {
         elevation: f64,
         t: f64,
     ) {
-        let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
+        self.paint_sphere(
+            &Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND),
+            width,
+            height,
+            azimuth,
+            elevation,
+            finite(t),
+        );
+    }
+
+    /// |ω(t)| and |ω̇(t)| of the three curves, with the time `t` marked.
+    #[wasm_bindgen(js_name = drawPlots)]
+    pub fn draw_plots(
+        &self,
+        ctx: &CanvasRenderingContext2d,
+        width: f64,
+        height: f64,
+        pixel_ratio: f64,
+        t: f64,
+    ) {
+        self.paint_plots(
+            &Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND),
+            width,
+            height,
+            finite(t),
+        );
+    }
+
+    /// One figure as an SVG document (vector): `view` is "objects", "sphere" (seen from azimuth
+    /// and elevation, radians) or "plots", `width` × `height` CSS pixels, at time `t`.
+    #[wasm_bindgen(js_name = toSvg)]
+    pub fn to_svg(
+        &self,
+        view: &str,
+        width: f64,
+        height: f64,
+        t: f64,
+        azimuth: f64,
+        elevation: f64,
+    ) -> JsResult<String> {
+        let (width, height, t) = (size(width), size(height), finite(t));
+        let (title, paint): (&str, &dyn Fn(&Pen)) = match view {
+            "objects" => {
+                ("The object under each curve", &|pen| self.paint_objects(pen, width, height, t))
+            }
+            "sphere" => ("The three curves' Hopf images on S²", &|pen| {
+                self.paint_sphere(pen, width, height, azimuth, elevation, t)
+            }),
+            "plots" => ("|ω(t)| and |ω̇(t)| of the three curves", &|pen| {
+                self.paint_plots(pen, width, height, t)
+            }),
+            other => return Err(throw(unknown_view(other, &["objects", "sphere", "plots"]))),
+        };
+        let pen = Pen::svg(width, height, BACKGROUND, title);
+        paint(&pen);
+        Ok(pen.finish())
+    }
+
+    /// The three curves sampled as CSV, a row a curve and sample time: `t`, the curve
+    /// ("chain", "squad", "slerp"), its quaternion `w, x, y, z`, |ω| and its Hopf point.
+    #[wasm_bindgen(js_name = curvesCsv)]
+    pub fn curves_csv(&self) -> String {
+        let mut csv = String::from("t,curve,w,x,y,z,angularSpeed,hopfX,hopfY,hopfZ\n");
+        for (name, curve, s) in self.named_curves() {
+            for (k, &t) in self.times.iter().enumerate() {
+                let [w, x, y, z] = to_wxyz(curve.at(t));
+                let h = s.hopf[k];
+                let speed = s.speed[k];
+                csv.push_str(&format!(
+                    "{t},{name},{w},{x},{y},{z},{speed},{},{},{}\n",
+                    h.x, h.y, h.z
+                ));
+            }
+        }
+        csv
+    }
+
+    /// The keys and the three curves sampled, as JSON: `keys` ([w, x, y, z] each), `keyTimes`,
+    /// and for each curve its `samples`, `{ t, quaternion, angularSpeed, hopf }`.
+    #[wasm_bindgen(js_name = curvesJson)]
+    pub fn curves_json(&self) -> String {
+        let list = |v: &[f64]| {
+            let items: Vec<String> = v.iter().map(|x| x.to_string()).collect();
+            format!("[{}]", items.join(","))
+        };
+        let keys: Vec<String> =
+            self.keys.quaternions().iter().map(|&q| list(&to_wxyz(q))).collect();
+        let curves: Vec<String> = self
+            .named_curves()
+            .map(|(name, curve, s)| {
+                let samples: Vec<String> = self
+                    .times
+                    .iter()
+                    .enumerate()
+                    .map(|(k, &t)| {
+                        let h = s.hopf[k];
+                        format!(
+                            "{{\"t\":{t},\"quaternion\":{},\"angularSpeed\":{},\"hopf\":{}}}",
+                            list(&to_wxyz(curve.at(t))),
+                            s.speed[k],
+                            list(&[h.x, h.y, h.z])
+                        )
+                    })
+                    .collect();
+                format!("\"{name}\":[\n{}\n]", samples.join(",\n"))
+            })
+            .collect();
+        format!(
+            "{{\"keys\":[{}],\"keyTimes\":{},\"curves\":{{{}}}}}\n",
+            keys.join(","),
+            list(self.keys.times()),
+            curves.join(",\n")
+        )
+    }
+}
+
+/// The views, drawn with any [`Pen`]: the canvas methods and `toSvg` share them.
+impl SplineDemo {
+    /// Each curve with its export name and its series.
+    fn named_curves(&self) -> impl Iterator<Item = (&'static str, &dyn Curve, &Series)> {
+        let curves: [&dyn Curve; 3] = [&self.chain, &self.squad, &self.slerp];
+        ["chain", "squad", "slerp"]
+            .into_iter()
+            .zip(curves)
+            .zip(&self.series)
+            .map(|((n, c), s)| (n, c, s))
+    }
+
+    fn paint_objects(&self, pen: &Pen, width: f64, height: f64, t: f64) {
+        let camera = object_camera();
+        let curves: [&dyn Curve; 3] = [&self.chain, &self.squad, &self.slerp];
+        let wide = width >= height;
+        let (w, h) = if wide { (width / 3.0, height) } else { (width, height / 3.0) };
+        for (i, curve) in curves.iter().enumerate() {
+            let (left, top) = if wide { (i as f64 * w, 0.0) } else { (0.0, i as f64 * h) };
+            let viewport = Viewport::fitting(left, top + 14.0, w, h - 14.0, 1.6);
+            draw_object(pen, &viewport, &camera, &self.mesh, curve.at(t), false);
+            pen.text(NAMES[i], (left + 0.5 * w, top + 10.0), COLOURS[i], 12.0, "center");
+        }
+    }
+
+    fn paint_sphere(
+        &self,
+        pen: &Pen,
+        width: f64,
+        height: f64,
+        azimuth: f64,
+        elevation: f64,
+        t: f64,
+    ) {
         let viewport = sphere_viewport(width, height);
         let camera = Camera::orbit(azimuth, elevation);
-        let view = View { pen: &pen, viewport: &viewport, camera: &camera };
+        let view = View { pen, viewport: &viewport, camera: &camera };
         let grid = grid();
         let dashes: [&[f64]; 3] = [&[], &[6.0, 4.0], &[2.0, 3.0]];
         draw_grid_back(&view, &grid);
@@ -328,21 +472,11 @@ impl SplineDemo {
         pen.alpha(1.0);
         let curves: [&dyn Curve; 3] = [&self.chain, &self.squad, &self.slerp];
         for (curve, colour) in curves.iter().zip(COLOURS) {
-            pen.disc(view.at(hopf(curve.at(finite(t)))), 5.0, Some(colour), Some(("#ffffff", 1.5)));
+            pen.disc(view.at(hopf(curve.at(t))), 5.0, Some(colour), Some(("#ffffff", 1.5)));
         }
     }
 
-    /// |ω(t)| and |ω̇(t)| of the three curves, with the time `t` marked.
-    #[wasm_bindgen(js_name = drawPlots)]
-    pub fn draw_plots(
-        &self,
-        ctx: &CanvasRenderingContext2d,
-        width: f64,
-        height: f64,
-        pixel_ratio: f64,
-        t: f64,
-    ) {
-        let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
+    fn paint_plots(&self, pen: &Pen, width: f64, height: f64, t: f64) {
         let wide = width >= 1.5 * height;
         let (cell_w, cell_h) = if wide { (width / 2.0, height) } else { (width, height / 2.0) };
         let (start, end) = (self.start_time(), self.end_time());
@@ -368,11 +502,11 @@ impl SplineDemo {
             };
             let ticks: Vec<(f64, String)> =
                 [0.0, 0.5, 1.0].iter().map(|&f| (f * top_value, trim(f * top_value))).collect();
-            panel.frame_with(&pen, title, &ticks, "t");
+            panel.frame_with(pen, title, &ticks, "t");
             for (s, colour) in self.series.iter().zip(COLOURS).rev() {
-                panel.series(&pen, &self.times, values(s).into_iter(), colour, 1.8, &[]);
+                panel.series(pen, &self.times, values(s).into_iter(), colour, 1.8, &[]);
             }
-            let (x, _) = panel.at(finite(t).max(start).min(end), 0.0);
+            let (x, _) = panel.at(t.max(start).min(end), 0.0);
             pen.line((x, panel.top), (x, panel.top + panel.height), MUTED, 1.0, &[2.0, 3.0]);
         }
     }

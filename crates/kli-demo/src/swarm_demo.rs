@@ -1,6 +1,7 @@
 //! The `SwarmDemo` class: the swarm page's run, a [`Swarm`] with its history, drawing its views
 //! onto canvas contexts the page passes in.
 
+use kli::quaternion::to_wxyz;
 use kli::swarm::{Graph, Swarm, SwarmOptions};
 use kli_wasm::error::{JsResult, throw};
 use kli_wasm::swarm::{SwarmOptionsObject, read_swarm_options, whole_steps};
@@ -11,7 +12,7 @@ use crate::aircraft::{Face, aircraft};
 use crate::camera::{Camera, Viewport};
 use crate::format::fixed;
 use crate::palette::BACKGROUND;
-use crate::pen::Pen;
+use crate::pen::{Pen, size, unknown_view};
 use crate::swarm_plots::{History, draw_history, draw_sweep};
 use crate::swarm_view::{draw_swarm_objects, draw_swarm_sphere};
 
@@ -100,20 +101,12 @@ impl SwarmDemo {
         azimuth: f64,
         elevation: f64,
     ) {
-        let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
-        let viewport = Viewport::fitting(0.0, 0.0, width, height, 1.22);
-        draw_swarm_sphere(
-            &pen,
-            &viewport,
-            &Camera::orbit(azimuth, elevation),
-            &self.swarm.hopf_points(),
-        );
-        pen.text(
-            &format!("t = {}", fixed(self.swarm.time(), 2)),
-            (8.0, 12.0),
-            crate::palette::MUTED,
-            12.0,
-            "left",
+        self.paint_sphere(
+            &Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND),
+            width,
+            height,
+            azimuth,
+            elevation,
         );
     }
 
@@ -126,19 +119,7 @@ impl SwarmDemo {
         height: f64,
         pixel_ratio: f64,
     ) {
-        let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
-        let q = self.swarm.quaternions();
-        let objects: Vec<_> = if self.is_kli() {
-            let clock = format!("follower: KLI at τ = Kt/2 = {}", fixed(self.kli_time(), 2));
-            vec![(q[0], "leader r (pinned)".to_owned()), (q[1], clock)]
-        } else {
-            q.iter()
-                .take(OBJECTS)
-                .enumerate()
-                .map(|(i, &q)| (q, format!("oscillator {}", i + 1)))
-                .collect()
-        };
-        draw_swarm_objects(&pen, width, height, &self.mesh, &objects);
+        self.paint_objects(&Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND), width, height);
     }
 
     /// `R(t)`, `λ_max(t)` and the potential over the recent history.
@@ -150,8 +131,91 @@ impl SwarmDemo {
         height: f64,
         pixel_ratio: f64,
     ) {
-        let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
-        draw_history(&pen, width, height, &self.history);
+        self.paint_plots(&Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND), width, height);
+    }
+
+    /// One figure as an SVG document (vector): `view` is "sphere" (seen from azimuth and
+    /// elevation, radians), "objects" or "plots", `width` × `height` CSS pixels.
+    #[wasm_bindgen(js_name = toSvg)]
+    pub fn to_svg(
+        &self,
+        view: &str,
+        width: f64,
+        height: f64,
+        azimuth: f64,
+        elevation: f64,
+    ) -> JsResult<String> {
+        let (width, height) = (size(width), size(height));
+        let (title, paint): (&str, &dyn Fn(&Pen)) = match view {
+            "sphere" => ("The swarm's Hopf points on S²", &|pen| {
+                self.paint_sphere(pen, width, height, azimuth, elevation)
+            }),
+            "objects" => {
+                ("The first oscillators as objects", &|pen| self.paint_objects(pen, width, height))
+            }
+            "plots" => ("R, λmax and the potential over time", &|pen| {
+                self.paint_plots(pen, width, height)
+            }),
+            other => return Err(throw(unknown_view(other, &["sphere", "objects", "plots"]))),
+        };
+        let pen = Pen::svg(width, height, BACKGROUND, title);
+        paint(&pen);
+        Ok(pen.finish())
+    }
+
+    /// The sweep as an SVG document (see `drawSweep`).
+    #[wasm_bindgen(js_name = sweepSvg)]
+    pub fn sweep_svg(
+        width: f64,
+        height: f64,
+        couplings: &[f64],
+        orders: &[f64],
+        current: f64,
+    ) -> String {
+        let (width, height) = (size(width), size(height));
+        let pen =
+            Pen::svg(width, height, BACKGROUND, "The order parameter R against the coupling K");
+        draw_sweep(&pen, width, height, couplings, orders, current);
+        pen.finish()
+    }
+
+    /// The swarm now as CSV, a row an oscillator: `t`, its index, its quaternion `w, x, y, z`,
+    /// its Hopf point.
+    #[wasm_bindgen(js_name = swarmCsv)]
+    pub fn swarm_csv(&self) -> String {
+        let mut csv = String::from("t,oscillator,w,x,y,z,hopfX,hopfY,hopfZ\n");
+        let t = self.swarm.time();
+        for (i, (&q, h)) in
+            self.swarm.quaternions().iter().zip(self.swarm.hopf_points()).enumerate()
+        {
+            let [w, x, y, z] = to_wxyz(q);
+            csv.push_str(&format!("{t},{i},{w},{x},{y},{z},{},{},{}\n", h.x, h.y, h.z));
+        }
+        csv
+    }
+
+    /// The swarm now as JSON: `t`, `orderParameter`, `rotationOrder`, `potential`, and each
+    /// oscillator `{ quaternion: [w, x, y, z], hopf: [x, y, z] }`.
+    #[wasm_bindgen(js_name = swarmJson)]
+    pub fn swarm_json(&self) -> String {
+        let s = &self.swarm;
+        let oscillators: Vec<String> = s
+            .quaternions()
+            .iter()
+            .zip(s.hopf_points())
+            .map(|(&q, h)| {
+                let [w, x, y, z] = to_wxyz(q);
+                format!("{{\"quaternion\":[{w},{x},{y},{z}],\"hopf\":[{},{},{}]}}", h.x, h.y, h.z)
+            })
+            .collect();
+        format!(
+            "{{\"t\":{},\"orderParameter\":{},\"rotationOrder\":{},\"potential\":{},\"oscillators\":[\n{}\n]}}\n",
+            s.time(),
+            s.order_parameter(),
+            s.rotation_order(),
+            s.potential(),
+            oscillators.join(",\n")
+        )
     }
 
     /// The order parameter a swarm with these options but coupling `coupling` reaches: `R`
@@ -187,7 +251,52 @@ impl SwarmDemo {
         orders: &[f64],
         current: f64,
     ) {
-        let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
-        draw_sweep(&pen, width, height, couplings, orders, current);
+        draw_sweep(
+            &Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND),
+            width,
+            height,
+            couplings,
+            orders,
+            current,
+        );
+    }
+}
+
+/// The views, drawn with any [`Pen`]: the canvas methods and `toSvg` share them.
+impl SwarmDemo {
+    fn paint_sphere(&self, pen: &Pen, width: f64, height: f64, azimuth: f64, elevation: f64) {
+        let viewport = Viewport::fitting(0.0, 0.0, width, height, 1.22);
+        draw_swarm_sphere(
+            pen,
+            &viewport,
+            &Camera::orbit(azimuth, elevation),
+            &self.swarm.hopf_points(),
+        );
+        pen.text(
+            &format!("t = {}", fixed(self.swarm.time(), 2)),
+            (8.0, 12.0),
+            crate::palette::MUTED,
+            12.0,
+            "left",
+        );
+    }
+
+    fn paint_objects(&self, pen: &Pen, width: f64, height: f64) {
+        let q = self.swarm.quaternions();
+        let objects: Vec<_> = if self.is_kli() {
+            let clock = format!("follower: KLI at τ = Kt/2 = {}", fixed(self.kli_time(), 2));
+            vec![(q[0], "leader r (pinned)".to_owned()), (q[1], clock)]
+        } else {
+            q.iter()
+                .take(OBJECTS)
+                .enumerate()
+                .map(|(i, &q)| (q, format!("oscillator {}", i + 1)))
+                .collect()
+        };
+        draw_swarm_objects(pen, width, height, &self.mesh, &objects);
+    }
+
+    fn paint_plots(&self, pen: &Pen, width: f64, height: f64) {
+        draw_history(pen, width, height, &self.history);
     }
 }

@@ -1,0 +1,100 @@
+// Saving from the pages as a teacher does: click, get a file. The SVG is real vector drawing
+// that holds the curve; the PNG is twice the screen's resolution; the CSV and JSON rows are the
+// package API's own values.
+import { test } from "node:test";
+import assert from "node:assert/strict";
+import { readFile } from "node:fs/promises";
+import { setup, open } from "./browser.mjs";
+
+setup();
+
+/** Clicks the save button and returns the download's file name and bytes. */
+async function saved(page, what, format) {
+  const [download] = await Promise.all([
+    page.waitForEvent("download"),
+    page.click(`button[data-save="${what}"][data-format="${format}"]`),
+  ]);
+  return { name: download.suggestedFilename(), bytes: await readFile(await download.path()) };
+}
+
+/** A PNG's width and height, from its IHDR chunk. */
+const pngSize = (bytes) => ({ width: bytes.readUInt32BE(16), height: bytes.readUInt32BE(20) });
+
+/** Parses an SVG in the page: its root, its polylines' point counts and stroke colours. */
+const parseSvg = (page, text) => page.evaluate((text) => {
+  const doc = new DOMParser().parseFromString(text, "image/svg+xml");
+  const error = doc.querySelector("parsererror");
+  return {
+    error: error ? error.textContent : null,
+    root: doc.documentElement.localName,
+    title: doc.querySelector("title")?.textContent,
+    images: doc.querySelectorAll("image").length,
+    polylines: Array.from(doc.querySelectorAll("polyline"), (p) => ({
+      stroke: p.getAttribute("stroke"),
+      points: p.getAttribute("points").trim().split(/\s+/).map((xy) => xy.split(",").map(Number)),
+    })),
+    circles: doc.querySelectorAll("circle").length,
+    texts: Array.from(doc.querySelectorAll("text"), (t) => t.textContent),
+  };
+}, text);
+
+test("KLI page: SVG of the Hopf sphere is vector and holds the curve; PNG at 2×; the path's CSV and JSON are the API's values", async () => {
+  const { page, context, problems } = await open("?t=1.8", { deviceScaleFactor: 1 });
+  try {
+    // SVG: parses, no bitmap inside, the KLI curve as a polyline of many points inside the figure.
+    const svg = await saved(page, "sphere", "svg");
+    assert.equal(svg.name, "kli-hopf-sphere-t1.80.svg");
+    const doc = await parseSvg(page, svg.bytes.toString("utf8"));
+    assert.equal(doc.error, null);
+    assert.equal(doc.root, "svg");
+    assert.equal(doc.images, 0);
+    const box = await page.locator("#sphere-canvas").boundingBox();
+    const kli = doc.polylines.filter((p) => p.stroke === "#c2410c");
+    const points = kli.flatMap((p) => p.points);
+    assert.ok(points.length > 200, `${points.length} points of the KLI curve`);
+    assert.ok(points.every(([x, y]) => x >= 0 && x <= box.width && y >= 0 && y <= box.height));
+    // The curve runs from h(p) to h(r): the same figure drawn on the canvas has the KLI colour
+    // along it (the SVG is not a different picture).
+    const object = await parseSvg(page, (await saved(page, "object", "svg")).bytes.toString("utf8"));
+    assert.ok(object.texts.includes("KLI  t = 1.80"), object.texts.join(" | "));
+    const plots = await parseSvg(page, (await saved(page, "plots", "svg")).bytes.toString("utf8"));
+    assert.ok(plots.polylines.length >= 4 && plots.error === null);
+    // PNG: twice the CSS size.
+    const png = await saved(page, "sphere", "png");
+    assert.equal(png.name, "kli-hopf-sphere-t1.80.png");
+    assert.deepEqual(pngSize(png.bytes), { width: Math.round(box.width * 2), height: Math.round(box.height * 2) });
+    const film = await saved(page, "filmstrip", "png");
+    assert.equal(film.name, "kli-filmstrip.png");
+    // CSV and JSON against the package's own calls on the same pair.
+    const csv = (await saved(page, "path", "csv"));
+    assert.equal(csv.name, "kli-path-T11.66.csv");
+    const rows = csv.bytes.toString("utf8").trim().split("\n");
+    assert.equal(rows[0], "t,w,x,y,z,slerpParameter,distance,hopfX,hopfY,hopfZ");
+    const json = JSON.parse((await saved(page, "path", "json")).bytes.toString("utf8"));
+    const api = await page.evaluate(async () => {
+      const { kli, kliToSlerpParameter } = await import("./pkg/kli_demo.js");
+      const p = [0, 0, 0, 1], r = [0.5, 0.5, 0.5, 0.5];
+      const path = kli(p, r);
+      const times = Array.from(path.times);
+      return { times, quaternions: Array.from(path.quaternions), hopf: Array.from(path.hopfCurve), s: times.map((t) => kliToSlerpParameter(p, r, t)) };
+    });
+    assert.equal(rows.length - 1, api.times.length);
+    assert.equal(json.samples.length, api.times.length);
+    assert.equal(json.finalTime, 11.66);
+    for (const k of [0, 1, 180, 500, api.times.length - 1]) {
+      const row = rows[k + 1].split(",").map(Number);
+      assert.equal(row[0], api.times[k]);
+      assert.deepEqual(row.slice(1, 5), api.quaternions.slice(4 * k, 4 * k + 4));
+      assert.deepEqual(row.slice(7, 10), api.hopf.slice(3 * k, 3 * k + 3));
+      assert.ok(Math.abs(row[5] - api.s[k]) < 1e-12, `s at row ${k}: ${row[5]} vs ${api.s[k]}`);
+      const q = row.slice(1, 5), target = [0.5, 0.5, 0.5, 0.5];
+      assert.ok(Math.abs(row[6] - Math.hypot(...q.map((c, i) => target[i] - c))) < 1e-15);
+      assert.deepEqual(json.samples[k].quaternion, row.slice(1, 5));
+      assert.equal(json.samples[k].t, row[0]);
+    }
+    assert.match(await page.locator("#save-status").textContent(), /^Saved the path as JSON\.$/);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
