@@ -4,6 +4,7 @@
 import init, { SplineDemo, defaultSphereView, kliSpline, slerpSpline, squadSpline } from "./pkg/spline_demo.js";
 import { loadModule, observeCanvases } from "./canvases.js";
 import { $ } from "./dom.js";
+import { download, png, timeTag, wireSaving } from "./exports.js";
 import { wireKeyboard } from "./input.js";
 import { formatNumber, parseNumber } from "./numbers.js";
 import { SPLINE_URL_KEYS as KEYS, throttledUrl } from "./url.js";
@@ -220,15 +221,55 @@ function requestDraw() {
   });
 }
 
+/** @typedef {keyof typeof canvases} ViewName */
+
+/**
+ * Draws one view at the current time onto `ctx` at `ratio`: the page's canvases, or a PNG.
+ * @param {ViewName} name
+ * @param {CanvasRenderingContext2D} ctx
+ * @param {{ width: number, height: number }} size
+ * @param {number} ratio
+ */
+function paint(name, ctx, { width, height }, ratio) {
+  const demo = run.demo;
+  if (!demo) return;
+  if (name === "objects") demo.drawObjects(ctx, width, height, ratio, run.t);
+  if (name === "sphere") demo.drawSphere(ctx, width, height, ratio, run.view[0], run.view[1], run.t);
+  if (name === "plots") demo.drawPlots(ctx, width, height, ratio, run.t);
+}
+
+/** The views' names in file names. */
+const FILE_NAMES = { objects: "objects", sphere: "hopf-sphere", plots: "angular-velocity-plots" };
+
+/** Saves a view as PNG or SVG, or the three curves' samples as CSV or JSON. */
+async function save(/** @type {string} */ what, /** @type {string} */ format) {
+  const demo = run.demo;
+  if (!demo) throw new Error("there are no curves to save");
+  const keys = `${demo.keys.length / 4}-keys`;
+  if (what === "curves") {
+    const name = `kli-keyframes-curves-${keys}`;
+    if (format === "csv") return download(`${name}.csv`, "text/csv", demo.curvesCsv());
+    return download(`${name}.json`, "application/json", demo.curvesJson());
+  }
+  const view = /** @type {ViewName} */ (what);
+  const size = run.sizes[view];
+  if (!size) throw new Error(`the ${what} view is not laid out`);
+  const name = `kli-keyframes-${FILE_NAMES[view]}-${keys}-${timeTag(run.t)}`;
+  if (format === "svg") {
+    return download(`${name}.svg`, "image/svg+xml", demo.toSvg(view, size.width, size.height, run.t, run.view[0], run.view[1]));
+  }
+  download(`${name}.png`, "image/png", await png(size, (ctx, ratio) => paint(view, ctx, size, ratio)));
+}
+
 function draw() {
   const demo = run.demo;
   if (!demo) return;
   const ratio = devicePixelRatio || 1;
-  const ctx = (/** @type {keyof typeof canvases} */ name) => /** @type {CanvasRenderingContext2D} */ (canvases[name].getContext("2d"));
-  const size = (/** @type {string} */ name) => run.sizes[name];
-  if (size("objects")) demo.drawObjects(ctx("objects"), size("objects").width, size("objects").height, ratio, run.t);
-  if (size("sphere")) demo.drawSphere(ctx("sphere"), size("sphere").width, size("sphere").height, ratio, run.view[0], run.view[1], run.t);
-  if (size("plots")) demo.drawPlots(ctx("plots"), size("plots").width, size("plots").height, ratio, run.t);
+  for (const name of /** @type {ViewName[]} */ (["objects", "sphere", "plots"])) {
+    const size = run.sizes[name];
+    const ctx = canvases[name].getContext("2d");
+    if (size && ctx) paint(name, ctx, size, ratio);
+  }
   ui.time.value = String(run.t);
   ui.readout.textContent = `t = ${run.t.toFixed(2)} / ${demo.endTime.toFixed(2)}`;
 }
@@ -290,6 +331,7 @@ function wire() {
     rebuild(state);
   });
   ui.play.addEventListener("click", () => (run.playing ? pause() : play()));
+  wireSaving($("#save", HTMLElement), save, $("#save-status", HTMLElement));
   ui.time.addEventListener("input", () => {
     pause();
     run.t = Number(ui.time.value);

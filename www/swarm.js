@@ -5,6 +5,7 @@
 import init, { SwarmDemo, defaultSphereView } from "./pkg/swarm_demo.js";
 import { loadModule, observeCanvases } from "./canvases.js";
 import { $ } from "./dom.js";
+import { download, png, timeTag, wireSaving } from "./exports.js";
 import { wireDragging, wireKeyboard } from "./input.js";
 import { parseNumber } from "./numbers.js";
 import { SWARM_URL_KEYS as KEYS, throttledUrl } from "./url.js";
@@ -167,26 +168,72 @@ function requestDraw() {
   });
 }
 
+/** @typedef {keyof typeof canvases} ViewName */
+
+/**
+ * Draws one view onto `ctx` at `ratio`: the page's canvases, or a PNG being saved.
+ * @param {ViewName} name
+ * @param {CanvasRenderingContext2D} ctx
+ * @param {{ width: number, height: number }} size
+ * @param {number} ratio
+ */
+function paint(name, ctx, { width, height }, ratio) {
+  const demo = run.demo;
+  if (!demo) return;
+  if (name === "sphere") demo.drawSphere(ctx, width, height, ratio, run.view[0], run.view[1]);
+  if (name === "objects") demo.drawObjects(ctx, width, height, ratio);
+  if (name === "plots") demo.drawPlots(ctx, width, height, ratio);
+  if (name === "sweep") {
+    SwarmDemo.drawSweep(ctx, width, height, ratio, new Float64Array(run.sweep.couplings), new Float64Array(run.sweep.orders), run.state.coupling);
+  }
+}
+
+/** Paints a view onto its own canvas, once laid out. */
+function paintView(/** @type {ViewName} */ name) {
+  const size = run.sizes[name];
+  const ctx = canvases[name].getContext("2d");
+  if (size && ctx) paint(name, ctx, size, devicePixelRatio || 1);
+}
+
 function draw() {
   const demo = run.demo;
   if (!demo) return;
-  const ratio = devicePixelRatio || 1;
-  const size = (/** @type {keyof typeof canvases} */ name) => run.sizes[name];
-  const ctx = (/** @type {keyof typeof canvases} */ name) => /** @type {CanvasRenderingContext2D} */ (canvases[name].getContext("2d"));
-  if (size("sphere")) demo.drawSphere(ctx("sphere"), size("sphere").width, size("sphere").height, ratio, run.view[0], run.view[1]);
-  if (size("objects")) demo.drawObjects(ctx("objects"), size("objects").width, size("objects").height, ratio);
-  if (size("plots")) demo.drawPlots(ctx("plots"), size("plots").width, size("plots").height, ratio);
+  paintView("sphere");
+  paintView("objects");
+  paintView("plots");
   ui.readout.textContent = `t = ${demo.time.toFixed(2)}   R = ${demo.orderParameter.toFixed(3)}   λmax = ${demo.rotationOrder.toFixed(3)}` +
     (demo.isKli ? `   τ = Kt/2 = ${demo.kliTime.toFixed(2)}` : "");
   if (!run.playing) ui.status.textContent = ui.readout.textContent ?? "";
 }
 
 function drawSweep() {
-  const size = run.sizes.sweep;
-  const ctx = canvases.sweep.getContext("2d");
-  if (!size || !ctx) return;
-  SwarmDemo.drawSweep(ctx, size.width, size.height, devicePixelRatio || 1,
-    new Float64Array(run.sweep.couplings), new Float64Array(run.sweep.orders), run.state.coupling);
+  paintView("sweep");
+}
+
+/** The views' names in file names. */
+const FILE_NAMES = { sphere: "hopf-sphere", objects: "objects", plots: "order-plots", sweep: "coupling-sweep" };
+
+/** Saves a view as PNG or SVG, or the swarm as CSV or JSON, as it stands now. */
+async function save(/** @type {string} */ what, /** @type {string} */ format) {
+  const demo = run.demo;
+  if (!demo) throw new Error("there is no swarm to save");
+  const tag = timeTag(demo.time);
+  if (what === "swarm") {
+    const name = `kli-swarm-${demo.count}-oscillators-${tag}`;
+    if (format === "csv") return download(`${name}.csv`, "text/csv", demo.swarmCsv());
+    return download(`${name}.json`, "application/json", demo.swarmJson());
+  }
+  const view = /** @type {ViewName} */ (what);
+  const size = run.sizes[view];
+  if (!size) throw new Error(`the ${what} view is not laid out`);
+  const name = `kli-swarm-${FILE_NAMES[view]}${view === "sweep" ? "" : `-${tag}`}`;
+  if (format === "svg") {
+    const svg = view === "sweep"
+      ? SwarmDemo.sweepSvg(size.width, size.height, new Float64Array(run.sweep.couplings), new Float64Array(run.sweep.orders), run.state.coupling)
+      : demo.toSvg(view, size.width, size.height, run.view[0], run.view[1]);
+    return download(`${name}.svg`, "image/svg+xml", svg);
+  }
+  download(`${name}.png`, "image/png", await png(size, (ctx, ratio) => paint(view, ctx, size, ratio)));
 }
 
 /** One sweep point per task, so the page stays responsive. */
@@ -253,6 +300,7 @@ function wire() {
     rebuild(readForm());
   });
   $("#sweep", HTMLButtonElement).addEventListener("click", sweep);
+  wireSaving($("#save", HTMLElement), save, $("#save-status", HTMLElement));
   const turn = (/** @type {number} */ azimuth, /** @type {number} */ elevation) => {
     run.view[0] += azimuth;
     run.view[1] = Math.min(Math.max(run.view[1] + elevation, -1.55), 1.55);

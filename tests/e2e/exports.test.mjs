@@ -98,3 +98,78 @@ test("KLI page: SVG of the Hopf sphere is vector and holds the curve; PNG at 2×
     await context.close();
   }
 });
+
+/** h(q) of paper eq. 5, [w, x, y, z] → S²: an independent reference. */
+const hopf = ([a, b, c, d]) => [a * a + b * b - c * c - d * d, 2 * (a * d + b * c), 2 * (b * d - a * c)];
+
+test("swarm page: every view as SVG, the sweep too; the swarm's CSV and JSON hold each oscillator", async () => {
+  const { page, context, problems } = await open("swarm.html?n=40&seed=3");
+  try {
+    await page.click("#play");
+    const sphere = await saved(page, "sphere", "svg");
+    assert.match(sphere.name, /^kli-swarm-hopf-sphere-t\d+\.\d\d\.svg$/);
+    const svg = sphere.bytes.toString("utf8");
+    const doc = await parseSvg(page, svg);
+    assert.equal(doc.error, null);
+    assert.equal(doc.images, 0);
+    // The oscillators' dots: one arc pair each, in one or two paths (front and back).
+    assert.ok((svg.match(/a[\d.]+,[\d.]+ 0 1 0/g) ?? []).length >= 2 * 40, "the dots are vector arcs");
+    for (const view of ["objects", "plots", "sweep"]) {
+      const file = await saved(page, view, "svg");
+      assert.equal((await parseSvg(page, file.bytes.toString("utf8"))).error, null, view);
+    }
+    const png = await saved(page, "objects", "png");
+    const box = await page.locator("#swarm-objects").boundingBox();
+    assert.deepEqual(pngSize(png.bytes), { width: Math.round(box.width * 2), height: Math.round(box.height * 2) });
+    const csv = await saved(page, "swarm", "csv");
+    assert.match(csv.name, /^kli-swarm-40-oscillators-t\d+\.\d\d\.csv$/);
+    const rows = csv.bytes.toString("utf8").trim().split("\n").slice(1).map((r) => r.split(",").map(Number));
+    assert.equal(rows.length, 40);
+    for (const [, i, w, x, y, z, hx, hy, hz] of rows) {
+      assert.ok(Math.abs(Math.hypot(w, x, y, z) - 1) < 1e-12, `|q_${i}|`);
+      hopf([w, x, y, z]).forEach((c, k) => assert.ok(Math.abs(c - [hx, hy, hz][k]) < 1e-12));
+    }
+    const json = JSON.parse((await saved(page, "swarm", "json")).bytes.toString("utf8"));
+    assert.equal(json.oscillators.length, 40);
+    assert.ok(json.orderParameter >= 0 && json.orderParameter <= 1);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test("keyframes page: the views as SVG; the curves' CSV rows are kliSpline's, squadSpline's and slerpSpline's values", async () => {
+  const { page, context, problems } = await open("keyframes.html");
+  try {
+    for (const view of ["objects", "sphere", "plots"]) {
+      const file = await saved(page, view, "svg");
+      assert.match(file.name, new RegExp(`^kli-keyframes-.*-\\d+-keys-t\\d+\\.\\d\\d\\.svg$`));
+      const doc = await parseSvg(page, file.bytes.toString("utf8"));
+      assert.equal(doc.error, null, view);
+      assert.equal(doc.images, 0, view);
+    }
+    const csv = await saved(page, "curves", "csv");
+    const lines = csv.bytes.toString("utf8").trim().split("\n");
+    assert.equal(lines[0], "t,curve,w,x,y,z,angularSpeed,hopfX,hopfY,hopfZ");
+    const rows = lines.slice(1).map((line) => line.split(","));
+    const picks = [0, 7, 300, rows.length / 3 - 1].flatMap((k) => [k, k + rows.length / 3, k + (2 * rows.length) / 3]);
+    const expected = await page.evaluate(async (asked) => {
+      const { kliSpline, squadSpline, slerpSpline } = await import("./pkg/spline_demo.js");
+      const field = (name) => /** @type {HTMLInputElement} */ (document.querySelector(`input[name=${name}]`)).value;
+      const keys = field("keys").split(";").map((key) => key.split(",").map(Number));
+      // Empty times: the keys at 0, 1, 2, … (the default).
+      const times = field("times").trim() ? { times: field("times").split(",").map(Number) } : {};
+      const smoothness = Number(field("smoothness"));
+      const curves = { chain: kliSpline(keys, { ...times, smoothness }), squad: squadSpline(keys, times), slerp: slerpSpline(keys, times) };
+      return asked.map(([t, curve]) => Array.from(curves[curve].at(t)));
+    }, picks.map((k) => [Number(rows[k][0]), rows[k][1]]));
+    picks.forEach((k, i) => {
+      const q = rows[k].slice(2, 6).map(Number);
+      q.forEach((c, j) => assert.ok(Math.abs(c - expected[i][j]) < 1e-12, `${rows[k][1]} at t = ${rows[k][0]}: ${q} vs ${expected[i]}`));
+      hopf(q).forEach((c, j) => assert.ok(Math.abs(c - Number(rows[k][7 + j])) < 1e-12));
+    });
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
