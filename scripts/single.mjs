@@ -1,4 +1,5 @@
-// `make single`: each page of the demo as one self-contained HTML file in dist/single/, for a
+// `make single`: each page of the demo as one self-contained HTML file in dist/single/ (and the
+// <kli-figure> element as one self-contained script), for a
 // course platform that takes an uploaded file or a USB stick opened with no server: the page's
 // scripts bundled by esbuild, its module's .wasm inlined (base64) and handed to init(), the style
 // sheet inlined. Opened from file://, such a page fetches nothing.
@@ -67,3 +68,20 @@ for (const [page, script] of Object.entries(PAGES)) {
   const bytes = await single(page, script);
   console.log(`dist/single/${page}: ${bytes} bytes`);
 }
+
+// <kli-figure> as one classic script with all three modules inside: `<script src="kli-figure.js">`
+// works in documentation sites and slide decks, and from file:// (where module scripts do not).
+const element = await build({
+  entryPoints: [join(www, "kli-figure.js")],
+  bundle: true,
+  format: "iife",
+  minify: true,
+  outfile: join(out, "kli-figure.js"),
+  loader: { ".wasm": "binary" },
+  plugins: [inlineWasm],
+  logLevel: "error",
+  // The glue's default .wasm URL (import.meta.url) is never used: every init is given the bytes.
+  logOverride: { "empty-import-meta": "silent" },
+  metafile: true,
+});
+console.log(`dist/single/kli-figure.js: ${Object.values(element.metafile.outputs)[0].bytes} bytes`);

@@ -3,7 +3,7 @@
 const CACHE = "kli-demo-v6";
 const FILES = [
   "./", "index.html", "style.css", "main.js", "clock.js", "dom.js", "form.js", "input.js", "numbers.js",
-  "presets.js", "summary.js", "url.js", "views.js", "canvases.js", "exports.js", "swarm.html", "swarm.js", "keyframes.html", "keyframes.js", "pkg/kli_demo.js", "pkg/kli_demo_bg.wasm",
+  "presets.js", "summary.js", "url.js", "views.js", "canvases.js", "exports.js", "kli-figure.js", "swarm.html", "swarm.js", "keyframes.html", "keyframes.js", "pkg/kli_demo.js", "pkg/kli_demo_bg.wasm",
   "pkg/swarm_demo.js", "pkg/swarm_demo_bg.wasm", "pkg/spline_demo.js", "pkg/spline_demo_bg.wasm",
 ];
 

@@ -42,7 +42,8 @@ export async function open(query = "", options = {}) {
   });
   page.on("response", (response) => response.status() >= 400 && problems.push(`${response.status()}: ${response.url()}`));
   await page.goto(`${origin}/${query}`);
-  await page.waitForFunction(() => document.querySelector("#load-status").hidden);
+  // Pages with a load status are ready when it hides; others (the examples) once loaded.
+  await page.waitForFunction(() => document.querySelector("#load-status")?.hidden ?? document.readyState === "complete");
   return { page, context, problems };
 }
 

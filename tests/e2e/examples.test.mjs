@@ -51,3 +51,77 @@ test("three.js example: kli turns the scene's objects, THREE.Quaternion in, [x, 
     await context.close();
   }
 });
+
+/** Each <kli-figure>'s canvas: non-blank pixels, a hash of them, its text alternative and message. */
+const figures = (page) => page.evaluate(() => Array.from(document.querySelectorAll("kli-figure"), (figure) => {
+  const canvas = figure.shadowRoot.querySelector("canvas");
+  const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
+  let drawn = 0, hash = 0;
+  for (let i = 0; i < data.length; i += 4) {
+    if (data[i] < 250 || data[i + 1] < 250 || data[i + 2] < 250) drawn++;
+    hash = (hash * 31 + data[i] + 7 * data[i + 1] + 13 * data[i + 2]) % 1000000007;
+  }
+  const box = figure.getBoundingClientRect();
+  return { id: figure.id, drawn, hash, width: box.width, canvasWidth: canvas.width, label: canvas.getAttribute("aria-label"), message: figure.shadowRoot.querySelector("p").textContent };
+}));
+
+test("<kli-figure>: three figures in running text, one module shared, sized by CSS, attributes live", async () => {
+  const { page, context, problems } = await open("examples/figures.html", { reducedMotion: "reduce" });
+  try {
+    await page.waitForFunction(() => Array.from(document.querySelectorAll("kli-figure"), (f) => f.demo).every(Boolean));
+    await page.waitForTimeout(100);
+    const before = await figures(page);
+    assert.deepEqual(before.map((f) => f.id), ["hopf", "object", "keyframes"]);
+    for (const f of before) assert.ok(f.drawn > 1000, `${f.id} is blank`);
+    // Sized by CSS: the floated one is narrower; the backing store follows the box.
+    const [hopf, object] = before;
+    assert.ok(object.width < hopf.width * 0.6, `${object.width} vs ${hopf.width}`);
+    assert.equal(object.canvasWidth, Math.round(object.width - 2));
+    assert.equal(object.label, "The aircraft at t = 1.8 under KLI (left) and SLERP (right)");
+    // One module for the two KLI figures, one for the keyframes, none for the swarm.
+    const wasm = await page.evaluate(() => performance.getEntriesByType("resource").map((e) => e.name.split("/").pop()).filter((n) => n.endsWith(".wasm")).sort());
+    assert.deepEqual(wasm, ["kli_demo_bg.wasm", "spline_demo_bg.wasm"]);
+    // Live attributes: the long way round redraws the first figure; a new view, another picture.
+    await page.click("#long-way");
+    await page.waitForFunction((hash) => {
+      const canvas = document.querySelector("#hopf").shadowRoot.querySelector("canvas");
+      const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
+      let h = 0;
+      for (let i = 0; i < data.length; i += 4) h = (h * 31 + data[i] + 7 * data[i + 1] + 13 * data[i + 2]) % 1000000007;
+      return h !== hash;
+    }, hopf.hash);
+    assert.equal(await page.evaluate(() => document.querySelector("#hopf").demo.flipped), false);
+    assert.ok(Math.abs(await page.evaluate(() => document.querySelector("#hopf").demo.finalTime) - 11.66) > 0.5, "the long way takes longer");
+    await page.evaluate(() => {
+      document.querySelector("#object").removeAttribute("label");
+      document.querySelector("#object").setAttribute("view", "plots");
+    });
+    await page.waitForFunction(() => document.querySelector("#object").shadowRoot.querySelector("canvas").getAttribute("aria-label").startsWith("Distance to r"));
+    // A refused attribute is named in the figure, and a corrected one clears it.
+    await page.evaluate(() => document.querySelector("#object").setAttribute("p", "1,2"));
+    await page.waitForFunction(() => document.querySelector("#object").shadowRoot.querySelector("p").textContent !== "");
+    assert.match((await figures(page))[1].message, /^kli-figure: p must be an array of 4 numbers \[w, x, y, z\]/);
+    await page.evaluate(() => document.querySelector("#object").setAttribute("p", "1,0,0,0"));
+    await page.waitForFunction(() => document.querySelector("#object").shadowRoot.querySelector("p").textContent === "");
+    assert.deepEqual(await axeViolations(page), []);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test("<kli-figure> at 390 px: the page fits, the floated figure goes full width; autoplay animates", async () => {
+  const { page, context, problems } = await open("examples/figures.html", { viewport: { width: 390, height: 844 } });
+  try {
+    await page.waitForFunction(() => Array.from(document.querySelectorAll("kli-figure"), (f) => f.demo).every(Boolean));
+    assert.ok(await page.evaluate(() => document.documentElement.scrollWidth <= 390));
+    const [hopf, object] = await figures(page);
+    assert.ok(Math.abs(object.width - hopf.width) < 1, `${object.width} vs ${hopf.width}`);
+    const t0 = await page.evaluate(() => document.querySelector("#hopf").t);
+    await page.waitForTimeout(300);
+    assert.ok(await page.evaluate(() => document.querySelector("#hopf").t) > t0, "autoplay advances the time");
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});

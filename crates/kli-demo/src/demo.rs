@@ -11,7 +11,7 @@ use web_sys::CanvasRenderingContext2d;
 
 use crate::aircraft::{Face, aircraft};
 use crate::camera::{Camera, Viewport};
-use crate::format::{fixed, number};
+use crate::format::{fixed, joined, json_list, number};
 use crate::object_view::{draw_object, object_camera};
 use crate::palette::{BACKGROUND, INK, KLI, MUTED, SLERP};
 use crate::paper::{self, PAPER_P, PAPER_R};
@@ -305,8 +305,7 @@ impl Demo {
     pub fn path_csv(&self) -> String {
         let mut csv = String::from("t,w,x,y,z,slerpParameter,distance,hopfX,hopfY,hopfZ\n");
         for row in self.rows() {
-            let line: Vec<String> = row.iter().map(|v| v.to_string()).collect();
-            csv.push_str(&line.join(","));
+            csv.push_str(&joined(&row, ","));
             csv.push('\n');
         }
         csv
@@ -316,20 +315,17 @@ impl Demo {
     /// `{ t, quaternion: [w, x, y, z], slerpParameter, distance, hopf: [x, y, z] }`.
     #[wasm_bindgen(js_name = pathJson)]
     pub fn path_json(&self) -> String {
-        let list = |v: &[f64]| {
-            let items: Vec<String> = v.iter().map(|x| x.to_string()).collect();
-            format!("[{}]", items.join(","))
-        };
+        let list = json_list;
         let path = self.scene.path();
         let samples: Vec<String> = self
             .rows()
             .map(|r| {
                 format!(
                     "{{\"t\":{},\"quaternion\":{},\"slerpParameter\":{},\"distance\":{},\"hopf\":{}}}",
-                    r[0],
+                    number(r[0]),
                     list(&r[1..5]),
-                    r[5],
-                    r[6],
+                    number(r[5]),
+                    number(r[6]),
                     list(&r[7..10])
                 )
             })
@@ -338,7 +334,7 @@ impl Demo {
             "{{\"p\":{},\"target\":{},\"finalTime\":{},\"steps\":{},\"samples\":[\n{}\n]}}\n",
             list(&to_wxyz(path.quaternions()[0])),
             list(&to_wxyz(path.target())),
-            path.final_time(),
+            number(path.final_time()),
             path.steps(),
             samples.join(",\n")
         )

@@ -12,3 +12,21 @@ pub fn fixed(x: f64, digits: u8) -> String {
 pub fn exponential(x: f64, digits: u8) -> String {
     js_sys::Number::from(x).to_exponential(digits).map(String::from).unwrap_or_default()
 }
+
+/// Numbers joined by `separator`, each as JavaScript writes it (the shortest text that reads back
+/// as the same number): a CSV row's fields, a JSON list's items.
+pub fn joined(values: &[f64], separator: &str) -> String {
+    let mut text = String::with_capacity(values.len() * 20);
+    for (i, &v) in values.iter().enumerate() {
+        if i > 0 {
+            text.push_str(separator);
+        }
+        text.push_str(&number(v));
+    }
+    text
+}
+
+/// A JSON list of numbers, `[1,0.5]`.
+pub fn json_list(values: &[f64]) -> String {
+    format!("[{}]", joined(values, ","))
+}

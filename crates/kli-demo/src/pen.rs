@@ -12,6 +12,7 @@ use wasm_bindgen::JsValue;
 use web_sys::CanvasRenderingContext2d;
 
 use crate::aircraft::Rgb;
+use crate::format::number;
 
 /// Where a [`Pen`] draws.
 enum Surface<'a> {
@@ -45,10 +46,10 @@ fn escape(text: &str) -> String {
     text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
 }
 
-/// A coordinate in SVG: two decimals (a hundredth of a CSS pixel), non-finite as 0.
+/// A coordinate in SVG: two decimals (a hundredth of a CSS pixel), non-finite as 0, written by
+/// JavaScript (Rust's float formatting would add its code to the module).
 fn n(x: f64) -> String {
-    let x = if x.is_finite() { (x * 100.0).round() / 100.0 } else { 0.0 };
-    format!("{x}")
+    number(if x.is_finite() { (x * 100.0).round() / 100.0 } else { 0.0 })
 }
 
 impl<'a> Pen<'a> {
@@ -358,43 +359,4 @@ pub fn unknown_view(got: &str, allowed: &'static [&'static str]) -> KliError {
 fn font(size: f64) -> String {
     let tenths = (size * 10.0).round() as u32;
     format!("{}.{}px {FONT}", tenths / 10, tenths % 10)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn svg_holds_real_vector_elements_and_escapes_text() {
-        let pen = Pen::svg(200.0, 100.0, "#ffffff", "A <test> & \"figure\"");
-        pen.polyline(&[(1.0, 2.0), (3.25, 4.5), (f64::NAN, 6.0)], "#c2410c", 2.0, &[6.0, 4.0]);
-        pen.alpha(0.4);
-        pen.disc((10.0, 20.0), 5.0, Some("#fff"), Some(("#000", 1.5)));
-        pen.alpha(1.0);
-        pen.dots(&[(1.0, 1.0), (5.0, 5.0)], 2.0, "#123456");
-        pen.shaded_disc((50.0, 50.0), 40.0, "#fff", "#ccc");
-        pen.text("t < 1 & s", (7.0, 8.0), "#343a40", 12.0, "center");
-        pen.fill_polygon(&[(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)], "rgb(1,2,3)", None);
-        let svg = pen.finish();
-        assert!(
-            svg.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200\""),
-            "{svg}"
-        );
-        assert!(svg.contains("<title>A &lt;test&gt; &amp; &quot;figure&quot;</title>"));
-        assert!(svg.contains("points=\"1,2 3.25,4.5 0,6\""), "{svg}");
-        assert!(svg.contains("stroke-dasharray=\"6 4\""));
-        assert!(svg.contains("<circle cx=\"10\" cy=\"20\" r=\"5\" fill=\"#fff\" stroke=\"#000\" stroke-width=\"1.5\" opacity=\"0.4\"/>"), "{svg}");
-        assert_eq!(svg.matches(" opacity=").count(), 1);
-        assert!(svg.contains("M-1,1a2,2 0 1 0 4,0a2,2 0 1 0 -4,0M3,5"), "{svg}");
-        assert!(svg.contains("fill=\"url(#shade0)\""));
-        assert!(svg.contains(
-            "text-anchor=\"middle\" dominant-baseline=\"central\">t &lt; 1 &amp; s</text>"
-        ));
-        assert!(svg.contains("<polygon points=\"0,0 1,0 0,1\" fill=\"rgb(1,2,3)\"/>"));
-        assert!(svg.ends_with("</svg>\n"));
-        // Estimated text widths grow with the text and the size.
-        let pen = Pen::svg(1.0, 1.0, "#fff", "");
-        assert!(pen.text_width("abcd", 12.0) > pen.text_width("ab", 12.0));
-        assert!((pen.text_width("ab", 10.0) - 11.2).abs() < 1e-12);
-    }
 }

@@ -13,6 +13,7 @@ use web_sys::CanvasRenderingContext2d;
 
 use crate::aircraft::{Face, aircraft};
 use crate::camera::{Camera, Viewport};
+use crate::format::{joined, json_list, number};
 use crate::object_view::{draw_object, object_camera};
 use crate::palette::{BACKGROUND, INK, KLI, MUTED, SLERP};
 use crate::pen::{Pen, size, unknown_view};
@@ -364,11 +365,8 @@ impl SplineDemo {
             for (k, &t) in self.times.iter().enumerate() {
                 let [w, x, y, z] = to_wxyz(curve.at(t));
                 let h = s.hopf[k];
-                let speed = s.speed[k];
-                csv.push_str(&format!(
-                    "{t},{name},{w},{x},{y},{z},{speed},{},{},{}\n",
-                    h.x, h.y, h.z
-                ));
+                let fields = joined(&[w, x, y, z, s.speed[k], h.x, h.y, h.z], ",");
+                csv.push_str(&format!("{},{name},{fields}\n", number(t)));
             }
         }
         csv
@@ -378,10 +376,7 @@ impl SplineDemo {
     /// and for each curve its `samples`, `{ t, quaternion, angularSpeed, hopf }`.
     #[wasm_bindgen(js_name = curvesJson)]
     pub fn curves_json(&self) -> String {
-        let list = |v: &[f64]| {
-            let items: Vec<String> = v.iter().map(|x| x.to_string()).collect();
-            format!("[{}]", items.join(","))
-        };
+        let list = json_list;
         let keys: Vec<String> =
             self.keys.quaternions().iter().map(|&q| list(&to_wxyz(q))).collect();
         let curves: Vec<String> = self
@@ -394,9 +389,10 @@ impl SplineDemo {
                     .map(|(k, &t)| {
                         let h = s.hopf[k];
                         format!(
-                            "{{\"t\":{t},\"quaternion\":{},\"angularSpeed\":{},\"hopf\":{}}}",
+                            "{{\"t\":{},\"quaternion\":{},\"angularSpeed\":{},\"hopf\":{}}}",
+                            number(t),
                             list(&to_wxyz(curve.at(t))),
-                            s.speed[k],
+                            number(s.speed[k]),
                             list(&[h.x, h.y, h.z])
                         )
                     })

@@ -10,7 +10,7 @@ use web_sys::CanvasRenderingContext2d;
 
 use crate::aircraft::{Face, aircraft};
 use crate::camera::{Camera, Viewport};
-use crate::format::fixed;
+use crate::format::{fixed, joined, json_list, number};
 use crate::palette::BACKGROUND;
 use crate::pen::{Pen, size, unknown_view};
 use crate::swarm_plots::{History, draw_history, draw_sweep};
@@ -189,7 +189,8 @@ impl SwarmDemo {
             self.swarm.quaternions().iter().zip(self.swarm.hopf_points()).enumerate()
         {
             let [w, x, y, z] = to_wxyz(q);
-            csv.push_str(&format!("{t},{i},{w},{x},{y},{z},{},{},{}\n", h.x, h.y, h.z));
+            csv.push_str(&joined(&[t, i as f64, w, x, y, z, h.x, h.y, h.z], ","));
+            csv.push('\n');
         }
         csv
     }
@@ -204,16 +205,16 @@ impl SwarmDemo {
             .iter()
             .zip(s.hopf_points())
             .map(|(&q, h)| {
-                let [w, x, y, z] = to_wxyz(q);
-                format!("{{\"quaternion\":[{w},{x},{y},{z}],\"hopf\":[{},{},{}]}}", h.x, h.y, h.z)
+                let (q, h) = (json_list(&to_wxyz(q)), json_list(&h.to_array()));
+                format!("{{\"quaternion\":{q},\"hopf\":{h}}}")
             })
             .collect();
         format!(
             "{{\"t\":{},\"orderParameter\":{},\"rotationOrder\":{},\"potential\":{},\"oscillators\":[\n{}\n]}}\n",
-            s.time(),
-            s.order_parameter(),
-            s.rotation_order(),
-            s.potential(),
+            number(s.time()),
+            number(s.order_parameter()),
+            number(s.rotation_order()),
+            number(s.potential()),
             oscillators.join(",\n")
         )
     }

@@ -152,3 +152,80 @@ fn pixel_ratio_scales_the_drawing() {
     let end = viewport.pixel(camera.project(DVec3::Y));
     assert_eq!(pixel(&ctx, (2.0 * end.0, 2.0 * end.1)), [0x34, 0x3a, 0x40]);
 }
+
+#[wasm_bindgen_test]
+fn svg_holds_real_vector_elements_and_escapes_text() {
+    let pen = Pen::svg(200.0, 100.0, "#ffffff", "A <test> & \"figure\"");
+    pen.polyline(&[(1.0, 2.0), (3.25, 4.5), (f64::NAN, 6.0)], "#c2410c", 2.0, &[6.0, 4.0]);
+    pen.alpha(0.4);
+    pen.disc((10.0, 20.0), 5.0, Some("#fff"), Some(("#000", 1.5)));
+    pen.alpha(1.0);
+    pen.dots(&[(1.0, 1.0), (5.0, 5.0)], 2.0, "#123456");
+    pen.shaded_disc((50.0, 50.0), 40.0, "#fff", "#ccc");
+    pen.text("t < 1 & s", (7.0, 8.0), "#343a40", 12.0, "center");
+    pen.fill_polygon(&[(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)], "rgb(1,2,3)", None);
+    let svg = pen.finish();
+    assert!(svg.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200\""), "{svg}");
+    assert!(svg.contains("<title>A &lt;test&gt; &amp; &quot;figure&quot;</title>"));
+    assert!(svg.contains("points=\"1,2 3.25,4.5 0,6\""), "{svg}");
+    assert!(svg.contains("stroke-dasharray=\"6 4\""));
+    assert!(svg.contains("<circle cx=\"10\" cy=\"20\" r=\"5\" fill=\"#fff\" stroke=\"#000\" stroke-width=\"1.5\" opacity=\"0.4\"/>"), "{svg}");
+    assert_eq!(svg.matches(" opacity=").count(), 1);
+    assert!(svg.contains("M-1,1a2,2 0 1 0 4,0a2,2 0 1 0 -4,0M3,5"), "{svg}");
+    assert!(svg.contains("fill=\"url(#shade0)\""));
+    assert!(
+        svg.contains(
+            "text-anchor=\"middle\" dominant-baseline=\"central\">t &lt; 1 &amp; s</text>"
+        )
+    );
+    assert!(svg.contains("<polygon points=\"0,0 1,0 0,1\" fill=\"rgb(1,2,3)\"/>"));
+    assert!(svg.ends_with("</svg>\n"));
+    // Estimated text widths grow with the text and the size.
+    let pen = Pen::svg(1.0, 1.0, "#fff", "");
+    assert!(pen.text_width("abcd", 12.0) > pen.text_width("ab", 12.0));
+    assert!((pen.text_width("ab", 10.0) - 11.2).abs() < 1e-12);
+}
+
+#[wasm_bindgen_test]
+fn the_svg_backend_draws_the_same_curve_as_the_canvas() {
+    let (ctx, scene) = (canvas(300, 300), paper_scene());
+    let camera = Camera::orbit(135f64.to_radians(), 25f64.to_radians());
+    let viewport = Viewport::fitting(0.0, 0.0, 300.0, 300.0, 1.22);
+    draw_sphere(&Pen::begin(&ctx, 300.0, 300.0, 1.0, "#ffffff"), &viewport, &camera, &scene);
+    let svg = Pen::svg(300.0, 300.0, "#ffffff", "sphere");
+    draw_sphere(&svg, &viewport, &camera, &scene);
+    let svg = svg.finish();
+    // The KLI curve's solid polylines: every 4th point is drawn on the canvas too (within a
+    // pixel: antialiasing).
+    let kli_stroke = format!("stroke=\"{}\"", palette::KLI);
+    // Markers (discs) are drawn over the curve: points under them are left out.
+    let centres: Vec<(f64, f64)> = svg
+        .split("<circle cx=\"")
+        .skip(1)
+        .map(|c| {
+            let x = c.split('"').next().unwrap().parse().unwrap();
+            let y = c.split("cy=\"").nth(1).unwrap().split('"').next().unwrap().parse().unwrap();
+            (x, y)
+        })
+        .collect();
+    let mut checked = 0;
+    for element in svg.split("<polyline ").skip(1).filter(|e| e.contains(&kli_stroke)) {
+        if element.contains("stroke-dasharray") {
+            continue; // the dashed part behind the sphere has gaps by design
+        }
+        let points = element.split("points=\"").nth(1).unwrap().split('"').next().unwrap();
+        for xy in points.split(' ').step_by(3) {
+            let (x, y) = xy.split_once(',').unwrap();
+            let (x, y): (f64, f64) = (x.parse().unwrap(), y.parse().unwrap());
+            if centres.iter().any(|&(cx, cy)| (cx - x).hypot(cy - y) < 8.0) {
+                continue;
+            }
+            let near = [(0.0, 0.0), (1.0, 0.0), (-1.0, 0.0), (0.0, 1.0), (0.0, -1.0)]
+                .iter()
+                .any(|(dx, dy)| pixel(&ctx, (x + dx, y + dy)) != WHITE);
+            assert!(near, "({x}, {y}) of the SVG curve is blank on the canvas");
+            checked += 1;
+        }
+    }
+    assert!(checked > 20, "{checked} points checked");
+}
