@@ -1,6 +1,7 @@
-// The packed npm package in real bundlers, run in headless Chromium: an app built with esbuild
-// (the README's code and one line: the .wasm as a file) and one built with Vite 8 (the README's
-// code unchanged), each computing with all three entries.
+// The packed npm package in real bundlers, run in headless Chromium, each app computing with all
+// three entries: esbuild (the README's code and one line: the .wasm as a file), Vite 8 (build and
+// dev server, the code unchanged), webpack 5 (no configuration) and Vite 7's dev server (one line
+// of configuration, optimizeDeps.exclude; without it the .wasm is lost, and the test shows that).
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
 import { execFileSync } from "node:child_process";
@@ -44,9 +45,10 @@ after(async () => {
   await browser?.close();
 });
 
-/** Serves `dir`, opens it in Chromium, and returns the app's result (and any problem). */
-async function runApp(dir) {
-  const server = await serve(dir);
+/** Serves `dir` (or uses a running server's `origin`), opens it in Chromium, and returns the
+ *  app's result (and any problem). */
+async function runApp(dir, running) {
+  const server = running ?? (await serve(dir));
   const context = await browser.newContext();
   const tab = await context.newPage();
   const problems = [];
@@ -56,7 +58,7 @@ async function runApp(dir) {
   await tab.waitForFunction(() => document.body.dataset.result, null, { timeout: 10000 }).catch(() => {});
   const result = await tab.evaluate(() => document.body.dataset.result);
   await context.close();
-  server.close();
+  if (!running) server.close();
   return { result: result && JSON.parse(result), problems };
 }
 
@@ -85,6 +87,55 @@ test("Vite 8: the README's code unchanged (vite build)", async () => {
   writeFileSync(join(dir, "index.html"), page);
   execFileSync(bin("vite"), ["build", "--logLevel", "error"], { cwd: dir, stdio: "pipe" });
   const { result, problems } = await runApp(join(dir, "dist"));
+  assert.deepEqual(problems, []);
+  assert.deepEqual(result, expected);
+});
+
+test("webpack 5: the README's code unchanged (webpack --mode production)", async () => {
+  const dir = join(project, "webpack-app");
+  mkdirSync(join(dir, "src"), { recursive: true });
+  writeFileSync(join(dir, "src/index.js"), app(`await Promise.all([init(), initSwarm(), initSpline()]);`));
+  // No configuration: webpack's defaults (src/index.js to dist/main.js, top-level await on).
+  execFileSync("node", [join(root, "node_modules/webpack-cli/bin/cli.js"), "--mode", "production", "--no-stats"], { cwd: dir, stdio: "pipe" });
+  writeFileSync(join(dir, "dist/index.html"), page.replace('type="module" src="./main.js"', 'src="./main.js"'));
+  const { result, problems } = await runApp(join(dir, "dist"));
+  assert.deepEqual(problems, []);
+  assert.deepEqual(result, expected);
+});
+
+/** Runs an app under a Vite dev server (the version given by its module), as `npm run dev` does. */
+async function viteDev(name, viteModule, config) {
+  const dir = join(project, name);
+  mkdirSync(dir);
+  writeFileSync(join(dir, "main.js"), app(`await Promise.all([init(), initSwarm(), initSpline()]);`));
+  writeFileSync(join(dir, "index.html"), page);
+  const { createServer } = await import(viteModule);
+  const server = await createServer({ root: dir, configFile: false, logLevel: "silent", server: { port: 0, host: "127.0.0.1" }, ...config });
+  await server.listen();
+  const address = server.httpServer.address();
+  try {
+    return await runApp(dir, { origin: `http://127.0.0.1:${address.port}` });
+  } finally {
+    await server.close();
+  }
+}
+
+const vite = (module) => join(root, "node_modules", module, "dist/node/index.js");
+
+test("Vite 8 dev server: the README's code unchanged", async () => {
+  const { result, problems } = await viteDev("vite8-dev", vite("vite"), {});
+  assert.deepEqual(problems, []);
+  assert.deepEqual(result, expected);
+});
+
+// Vite 7's dev server pre-bundles dependencies into node_modules/.vite and loses the .wasm files
+// beside them (it serves index.html in their place); the one line the README gives,
+// optimizeDeps.exclude, serves the package as it is.
+test("Vite 7 dev server: without the README's line the .wasm is lost; with it, the app runs", async () => {
+  const plain = await viteDev("vite7-dev-plain", vite("vite7"), {});
+  assert.equal(plain.result, undefined);
+  assert.ok(plain.problems.some((p) => /magic word|CompileError|wasm/i.test(p)), plain.problems.join("\n"));
+  const { result, problems } = await viteDev("vite7-dev", vite("vite7"), { optimizeDeps: { exclude: ["kli"] } });
   assert.deepEqual(problems, []);
   assert.deepEqual(result, expected);
 });
