@@ -37,6 +37,9 @@ test("the tarball holds every file the package needs, and only those", () => {
   assert.equal(manifest.license, "MIT");
   assert.match(readFileSync(join(project, "node_modules/kli/LICENSE"), "utf8"), /^MIT License/);
   assert.equal(manifest.engines.node, ">=18");
+  // The repository, when Cargo.toml names one (and only then: never an invented address).
+  const repository = cargo.split("[workspace.package]")[1].match(/^repository\s*=\s*"([^"]*)"/m)?.[1];
+  assert.deepEqual(manifest.repository, repository && { type: "git", url: `git+${repository.replace(/\.git$/, "")}.git` });
 });
 
 test("imports by name in Node with initSync and gives T = 11.66", () => {

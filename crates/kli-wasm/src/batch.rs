@@ -122,15 +122,18 @@ pub fn kli_exact_batch(
 }
 
 /// Normalised linear interpolation (shorter arc) for n pairs, into `out`: the cheapest possible
-/// interpolation, not constant speed; the benchmarks' baseline.
+/// interpolation, not constant speed; the benchmarks' baseline. Of the options only `order`
+/// matters (always the shorter arc).
 #[wasm_bindgen(js_name = nlerpBatch)]
 pub fn nlerp_batch(
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] starts: &JsValue,
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] ends: &JsValue,
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] s: &JsValue,
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] out: &JsValue,
+    options: Option<KliOptionsObject>,
 ) -> JsResult<Float64Array> {
-    run(BatchKind::Nlerp, starts, ends, s, out, true).map_err(throw)?;
+    let (_, order) = read_options(options).map_err(throw)?;
+    run(BatchKind::Nlerp, starts, ends, s, out, true).map_err(|e| throw(order.batch_error(e)))?;
     Ok(out.clone().unchecked_into())
 }
 

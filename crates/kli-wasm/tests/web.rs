@@ -489,10 +489,22 @@ fn batch_errors_name_the_argument_and_element() {
         &f64s(&[0.0, 1.0, 0.0, 0.0]),
         &f64s(&[0.5]),
         &f64s(&[0.0; 4]),
+        None,
     )
     .unwrap()
     .to_vec();
     assert!(close(&half, &[0.5_f64.sqrt(), 0.5_f64.sqrt(), 0.0, 0.0], 1e-15));
+    // Scalar last, the same numbers in the other layout; a bad component named as laid out.
+    let last = || options(&[("order", "xyzw".into())]);
+    let (a, b) = (f64s(&[0.0, 0.0, 0.0, 1.0]), f64s(&[1.0, 0.0, 0.0, 0.0]));
+    let half = api::nlerp_batch(&a, &b, &f64s(&[0.5]), &f64s(&[0.0; 4]), last()).unwrap();
+    assert!(close(&half.to_vec(), &[0.5_f64.sqrt(), 0.0, 0.0, 0.5_f64.sqrt()], 1e-15));
+    let bad = f64s(&[0.0, 0.0, 0.0, f64::NAN]);
+    let result = api::nlerp_batch(&bad, &b, &f64s(&[0.5]), &f64s(&[0.0; 4]), last());
+    expect_error(
+        result,
+        "starts[0] must be a quaternion of 4 finite numbers [x, y, z, w], not all zero: its w component is NaN",
+    );
 }
 
 // ---- Errors carry their argument; the fuzzing finds of issue 7 ------------------------------
@@ -560,7 +572,7 @@ fn huge_slerp_parameters_throw_instead_of_nan() {
         );
         let batch = api::slerp_batch(&f64s(&P), &f64s(&R), &one(s), &f64s(&[0.0; 4]), None);
         expect_error(batch, "s[0] must be a finite number from -1000000 to 1000000");
-        let nlerp = api::nlerp_batch(&f64s(&P), &f64s(&R), &one(s), &f64s(&[0.0; 4]));
+        let nlerp = api::nlerp_batch(&f64s(&P), &f64s(&R), &one(s), &f64s(&[0.0; 4]), None);
         expect_error(nlerp, "s[0] must be a finite number from -1000000 to 1000000");
     }
     // Within the bound, single and batch agree exactly (both take the single call's path).
