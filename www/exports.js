@@ -8,7 +8,7 @@
  * @param {string} type MIME type
  * @param {BlobPart} content
  */
-export function download(name, type, content) {
+function download(name, type, content) {
   const url = URL.createObjectURL(new Blob([content], { type }));
   const link = Object.assign(document.createElement("a"), { href: url, download: name });
   document.body.append(link);
@@ -32,6 +32,21 @@ export function png(size, draw) {
   if (!ctx) return Promise.reject(new Error("this browser cannot draw on a canvas"));
   draw(ctx, ratio);
   return new Promise((resolve, reject) => canvas.toBlob((blob) => (blob ? resolve(blob) : reject(new Error("no PNG"))), "image/png"));
+}
+
+const TYPES = { csv: "text/csv", json: "application/json", svg: "image/svg+xml", png: "image/png" };
+
+/**
+ * Saves `name`.`format`, made by the maker for that format.
+ * @param {string} name the file name without its extension
+ * @param {string} format "csv", "json", "svg" or "png"
+ * @param {Partial<Record<"csv" | "json" | "svg" | "png", () => BlobPart | Promise<BlobPart>>>} makers
+ */
+export async function saveAs(name, format, makers) {
+  const kind = /** @type {keyof typeof TYPES} */ (format);
+  const make = Object.hasOwn(TYPES, kind) ? makers[kind] : undefined;
+  if (!make) throw new Error(`${name} cannot be saved as ${format}`);
+  download(`${name}.${format}`, TYPES[kind], await make());
 }
 
 /**

@@ -4,7 +4,7 @@
 import init, { SplineDemo, defaultSphereView, kliSpline, slerpSpline, squadSpline } from "./pkg/spline_demo.js";
 import { loadModule, observeCanvases } from "./canvases.js";
 import { $ } from "./dom.js";
-import { download, png, timeTag, wireSaving } from "./exports.js";
+import { png, saveAs, timeTag, wireSaving } from "./exports.js";
 import { wireKeyboard } from "./input.js";
 import { formatNumber, parseNumber } from "./numbers.js";
 import { SPLINE_URL_KEYS as KEYS, throttledUrl } from "./url.js";
@@ -242,23 +242,21 @@ function paint(name, ctx, { width, height }, ratio) {
 const FILE_NAMES = { objects: "objects", sphere: "hopf-sphere", plots: "angular-velocity-plots" };
 
 /** Saves a view as PNG or SVG, or the three curves' samples as CSV or JSON. */
-async function save(/** @type {string} */ what, /** @type {string} */ format) {
+function save(/** @type {string} */ what, /** @type {string} */ format) {
   const demo = run.demo;
   if (!demo) throw new Error("there are no curves to save");
   const keys = `${demo.keys.length / 4}-keys`;
   if (what === "curves") {
-    const name = `kli-keyframes-curves-${keys}`;
-    if (format === "csv") return download(`${name}.csv`, "text/csv", demo.curvesCsv());
-    return download(`${name}.json`, "application/json", demo.curvesJson());
+    return saveAs(`kli-keyframes-curves-${keys}`, format, { csv: () => demo.curvesCsv(), json: () => demo.curvesJson() });
   }
   const view = /** @type {ViewName} */ (what);
   const size = run.sizes[view];
   if (!size) throw new Error(`the ${what} view is not laid out`);
   const name = `kli-keyframes-${FILE_NAMES[view]}-${keys}-${timeTag(run.t)}`;
-  if (format === "svg") {
-    return download(`${name}.svg`, "image/svg+xml", demo.toSvg(view, size.width, size.height, run.t, run.view[0], run.view[1]));
-  }
-  download(`${name}.png`, "image/png", await png(size, (ctx, ratio) => paint(view, ctx, size, ratio)));
+  return saveAs(name, format, {
+    svg: () => demo.toSvg(view, size.width, size.height, run.t, run.view[0], run.view[1]),
+    png: () => png(size, (ctx, ratio) => paint(view, ctx, size, ratio)),
+  });
 }
 
 function draw() {

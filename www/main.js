@@ -3,13 +3,13 @@
 // checking and drawing are the module's (crates/kli-demo); each concern has its own file here.
 import init, { Demo, axisAngle, fromAxisAngle } from "./pkg/kli_demo.js";
 import { Clock } from "./clock.js";
-import { download, png, timeTag, wireSaving } from "./exports.js";
+import { png, saveAs, timeTag, wireSaving } from "./exports.js";
 import { $ } from "./dom.js";
 import { Form, stateKey } from "./form.js";
 import { wireDragging, wireKeyboard } from "./input.js";
 import { parseNumber } from "./numbers.js";
 import { DEFAULTS, PRESETS, presetName, randomQuaternion } from "./presets.js";
-import { describeFrame, describeRun, fillTable, fillTypo, printedNotes } from "./summary.js";
+import { describeFrame, describeRun, fillTable, fillTypo } from "./summary.js";
 import { readQuery, throttledUrl, writeQuery } from "./url.js";
 import { Views } from "./views.js";
 
@@ -75,8 +75,7 @@ function show(/** @type {Demo} */ demo, /** @type {State} */ state) {
   ui.time.max = String(demo.finalTime);
   ui.time.step = String(state.step);
   views.show(demo);
-  fillTable(demo, $("#moments tbody", HTMLTableSectionElement), $("#final-time", HTMLElement));
-  $("#printed-notes", HTMLUListElement).replaceChildren(...printedNotes(demo).map((note) => Object.assign(document.createElement("li"), { textContent: note })));
+  fillTable(demo, $("#moments tbody", HTMLTableSectionElement), $("#final-time", HTMLElement), $("#printed-notes", HTMLUListElement));
   fillTypo(demo, state.tolerance, $("#typo tbody", HTMLTableSectionElement), $("#typo-summary", HTMLElement));
   ui.note.textContent = describeRun(demo, state);
   form.field("preset").value = presetName(state);
@@ -238,24 +237,22 @@ function draw() {
 const FILE_NAMES = { object: "object", sphere: "hopf-sphere", filmstrip: "filmstrip", plots: "plots" };
 
 /** Saves a view as PNG or SVG, or the path as CSV or JSON, as it stands. */
-async function save(/** @type {string} */ what, /** @type {string} */ format) {
+function save(/** @type {string} */ what, /** @type {string} */ format) {
   const demo = run.demo;
   if (!demo) throw new Error("there is no run to save");
   const t = clock.t;
   if (what === "path") {
-    const name = `kli-path-T${demo.finalTime.toFixed(2)}`;
-    if (format === "csv") return download(`${name}.csv`, "text/csv", demo.pathCsv());
-    return download(`${name}.json`, "application/json", demo.pathJson());
+    return saveAs(`kli-path-T${demo.finalTime.toFixed(2)}`, format, { csv: () => demo.pathCsv(), json: () => demo.pathJson() });
   }
   const view = /** @type {import("./views.js").ViewName} */ (what);
   const size = views.sizes[view];
   if (!size) throw new Error(`the ${what} view is not laid out`);
   const name = `kli-${FILE_NAMES[view]}${view === "filmstrip" ? "" : `-${timeTag(t)}`}`;
-  if (format === "svg") {
-    const [azimuth, elevation] = views.view;
-    return download(`${name}.svg`, "image/svg+xml", demo.toSvg(view, size.width, size.height, t, azimuth, elevation));
-  }
-  download(`${name}.png`, "image/png", await png(size, (ctx, ratio) => views.drawInto(view, ctx, size, ratio, t)));
+  const [azimuth, elevation] = views.view;
+  return saveAs(name, format, {
+    svg: () => demo.toSvg(view, size.width, size.height, t, azimuth, elevation),
+    png: () => png(size, (ctx, ratio) => views.drawInto(view, ctx, size, ratio, t)),
+  });
 }
 
 // ---- Start --------------------------------------------------------------------------------

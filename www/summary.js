@@ -6,20 +6,28 @@ import { formatQuaternion } from "./numbers.js";
 /** @typedef {import("./pkg/kli_demo.js").Demo} Demo */
 
 /**
- * Table 1 at the paper's moments, integrated and closed form, and the line about T.
+ * Table 1 at the paper's moments (integrated, closed form, and as the paper prints it), the line
+ * about T, and in `notes` what the printed table gets wrong.
  * @param {Demo} demo
  * @param {HTMLTableSectionElement} body
  * @param {HTMLElement} finalLine
+ * @param {HTMLUListElement} notes
  */
-export function fillTable(demo, body, finalLine) {
+export function fillTable(demo, body, finalLine, notes) {
   body.replaceChildren();
+  notes.replaceChildren();
   const finalTime = demo.finalTime;
   for (const moment of demo.moments) {
     const row = body.insertRow();
+    const exact = demo.exactAt(moment);
+    const printed = demo.printedRow(moment);
     row.insertCell().textContent = moment === finalTime ? `T = ${moment.toFixed(2)}` : String(moment);
     row.insertCell().textContent = formatQuaternion(demo.integratedAt(moment));
-    row.insertCell().textContent = formatQuaternion(demo.exactAt(moment));
-    printedCell(row.insertCell(), demo.printedRow(moment));
+    row.insertCell().textContent = formatQuaternion(exact);
+    printedCell(row.insertCell(), printed);
+    if (!printed) continue;
+    const t = `t = ${moment === finalTime ? moment.toFixed(2) : moment}`;
+    for (const note of printedNotes(t, printed, exact)) notes.append(Object.assign(document.createElement("li"), { textContent: note }));
   }
   finalLine.textContent =
     `T = ${finalTime.toFixed(2)} after ${demo.steps} steps; the closed form predicts T* = ${demo.predictedTime.toFixed(4)}.`;
@@ -49,28 +57,23 @@ function printedCell(/** @type {HTMLTableCellElement} */ cell, /** @type {import
 }
 
 /**
- * What the printed Table 1 gets wrong, row by row, in words; empty unless the run is the paper's
- * example.
- * @param {Demo} demo
+ * What a printed row of Table 1 gets wrong, in words.
+ * @param {string} t the row's time, as "t = 0.2"
+ * @param {import("./pkg/kli_demo.js").PrintedRow} row
+ * @param {ArrayLike<number>} exact the closed form at that time
  * @returns {string[]}
  */
-export function printedNotes(demo) {
+function printedNotes(t, row, exact) {
   const notes = [];
-  for (const moment of demo.moments) {
-    const row = demo.printedRow(moment);
-    if (!row) continue;
-    const exact = demo.exactAt(moment);
-    const t = `t = ${moment === demo.finalTime ? moment.toFixed(2) : moment}`;
-    if (row.repeats !== undefined) {
-      notes.push(`${t}: the printed row is the t = ${row.repeats} row again; the closed form gives ${formatQuaternion(exact)}.`);
-    } else if (row.verdicts.includes("differs")) {
-      notes.push(`${t}: printed ${formatPrinted(row)}, computed ${formatQuaternion(exact)}.`);
-    }
-    const cut = row.verdicts.flatMap((verdict, c) => (verdict === "truncated" ? [c] : []));
-    if (cut.length > 0) {
-      const c = cut[0];
-      notes.push(`${t}: ${row.printed[c].toFixed(2)} for ${exact[c].toFixed(4)}${cut.length > 1 ? ` (and ${cut.length - 1} more)` : ""}: cut after two decimals, where rounding gives ${exact[c].toFixed(2)}.`);
-    }
+  if (row.repeats !== undefined) {
+    notes.push(`${t}: the printed row is the t = ${row.repeats} row again; the closed form gives ${formatQuaternion(exact)}.`);
+  } else if (row.verdicts.includes("differs")) {
+    notes.push(`${t}: printed ${formatPrinted(row)}, computed ${formatQuaternion(exact)}.`);
+  }
+  const cut = row.verdicts.flatMap((verdict, c) => (verdict === "truncated" ? [c] : []));
+  if (cut.length > 0) {
+    const c = cut[0];
+    notes.push(`${t}: ${row.printed[c].toFixed(2)} for ${exact[c].toFixed(4)}${cut.length > 1 ? ` (and ${cut.length - 1} more)` : ""}: cut after two decimals, where rounding gives ${exact[c].toFixed(2)}.`);
   }
   return notes;
 }

@@ -5,7 +5,7 @@
 import init, { SwarmDemo, defaultSphereView } from "./pkg/swarm_demo.js";
 import { loadModule, observeCanvases } from "./canvases.js";
 import { $ } from "./dom.js";
-import { download, png, timeTag, wireSaving } from "./exports.js";
+import { png, saveAs, timeTag, wireSaving } from "./exports.js";
 import { wireDragging, wireKeyboard } from "./input.js";
 import { parseNumber } from "./numbers.js";
 import { SWARM_URL_KEYS as KEYS, throttledUrl } from "./url.js";
@@ -214,26 +214,23 @@ function drawSweep() {
 const FILE_NAMES = { sphere: "hopf-sphere", objects: "objects", plots: "order-plots", sweep: "coupling-sweep" };
 
 /** Saves a view as PNG or SVG, or the swarm as CSV or JSON, as it stands now. */
-async function save(/** @type {string} */ what, /** @type {string} */ format) {
+function save(/** @type {string} */ what, /** @type {string} */ format) {
   const demo = run.demo;
   if (!demo) throw new Error("there is no swarm to save");
   const tag = timeTag(demo.time);
   if (what === "swarm") {
-    const name = `kli-swarm-${demo.count}-oscillators-${tag}`;
-    if (format === "csv") return download(`${name}.csv`, "text/csv", demo.swarmCsv());
-    return download(`${name}.json`, "application/json", demo.swarmJson());
+    return saveAs(`kli-swarm-${demo.count}-oscillators-${tag}`, format, { csv: () => demo.swarmCsv(), json: () => demo.swarmJson() });
   }
   const view = /** @type {ViewName} */ (what);
   const size = run.sizes[view];
   if (!size) throw new Error(`the ${what} view is not laid out`);
   const name = `kli-swarm-${FILE_NAMES[view]}${view === "sweep" ? "" : `-${tag}`}`;
-  if (format === "svg") {
-    const svg = view === "sweep"
+  return saveAs(name, format, {
+    svg: () => view === "sweep"
       ? SwarmDemo.sweepSvg(size.width, size.height, new Float64Array(run.sweep.couplings), new Float64Array(run.sweep.orders), run.state.coupling)
-      : demo.toSvg(view, size.width, size.height, run.view[0], run.view[1]);
-    return download(`${name}.svg`, "image/svg+xml", svg);
-  }
-  download(`${name}.png`, "image/png", await png(size, (ctx, ratio) => paint(view, ctx, size, ratio)));
+      : demo.toSvg(view, size.width, size.height, run.view[0], run.view[1]),
+    png: () => png(size, (ctx, ratio) => paint(view, ctx, size, ratio)),
+  });
 }
 
 /** One sweep point per task, so the page stays responsive. */

@@ -86,6 +86,7 @@ test("KLI page: SVG of the Hopf sphere is vector and holds the curve; PNG at 2×
       assert.equal(row[0], api.times[k]);
       assert.deepEqual(row.slice(1, 5), api.quaternions.slice(4 * k, 4 * k + 4));
       assert.deepEqual(row.slice(7, 10), api.hopf.slice(3 * k, 3 * k + 3));
+      hopf(row.slice(1, 5)).forEach((c, j) => assert.ok(Math.abs(c - row[7 + j]) < 1e-12, "eq. 5 by hand"));
       assert.ok(Math.abs(row[5] - api.s[k]) < 1e-12, `s at row ${k}: ${row[5]} vs ${api.s[k]}`);
       const q = row.slice(1, 5), target = [0.5, 0.5, 0.5, 0.5];
       assert.ok(Math.abs(row[6] - Math.hypot(...q.map((c, i) => target[i] - c))) < 1e-15);

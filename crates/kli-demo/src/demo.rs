@@ -15,7 +15,7 @@ use crate::format::{fixed, joined, json_list, number};
 use crate::object_view::{draw_object, object_camera};
 use crate::palette::{BACKGROUND, INK, KLI, MUTED, SLERP};
 use crate::paper::{self, PAPER_P, PAPER_R};
-use crate::pen::{Pen, size, unknown_view};
+use crate::pen::{Pen, size, svg_document, unknown_view};
 use crate::plots::{draw_plot_cursors, draw_plots};
 use crate::scene::Scene;
 use crate::sphere_view::{draw_sphere, draw_sphere_cursor};
@@ -268,35 +268,26 @@ impl Demo {
         elevation: f64,
     ) -> JsResult<String> {
         let (width, height, t) = (size(width), size(height), finite(t));
-        let pen = |title: &str| Pen::svg(width, height, BACKGROUND, title);
-        let camera = Camera::orbit(azimuth, elevation);
-        let pen = match view {
-            "object" => {
-                let pen = pen("The object under KLI and under SLERP");
-                self.paint_object(&pen, width, height, t);
-                pen
-            }
-            "sphere" => {
-                let pen = pen("The Hopf curves of KLI and SLERP on S²");
-                let viewport = sphere_viewport(width, height);
-                draw_sphere(&pen, &viewport, &camera, &self.scene);
-                draw_sphere_cursor(&pen, &viewport, &camera, &self.scene, t);
-                pen
-            }
-            "filmstrip" => {
-                let pen = pen("The object at the moments of Table 1");
-                self.paint_filmstrip(&pen, width, height);
-                pen
-            }
+        let view_from = (azimuth, elevation);
+        let (title, paint): (&str, &dyn Fn(&Pen)) = match view {
+            "object" => ("The object under KLI and under SLERP", &|pen| {
+                self.paint_object(pen, width, height, t)
+            }),
+            "sphere" => ("The Hopf curves of KLI and SLERP on S²", &|pen| {
+                self.paint_sphere(pen, width, height, t, view_from)
+            }),
+            "filmstrip" => ("The object at the moments of Table 1", &|pen| {
+                self.paint_filmstrip(pen, width, height)
+            }),
             "plots" => {
-                let pen = pen("Distance to the target, the SLERP parameter s(t), the drift of |q|");
-                draw_plots(&pen, width, height, &self.scene);
-                draw_plot_cursors(&pen, width, height, &self.scene, t);
-                pen
+                ("Distance to the target, the SLERP parameter s(t), the drift of |q|", &|pen| {
+                    draw_plots(pen, width, height, &self.scene);
+                    draw_plot_cursors(pen, width, height, &self.scene, t);
+                })
             }
             other => return Err(throw(unknown_view(other, &VIEWS))),
         };
-        Ok(pen.finish())
+        Ok(svg_document(width, height, title, paint))
     }
 
     /// The path as CSV, a row a sample: `t`, the integrated quaternion `w, x, y, z`, the SLERP
@@ -381,6 +372,13 @@ impl Demo {
             draw_object(pen, &viewport, &camera, &self.mesh, *q, true);
             pen.text(label, (left + 10.0, top + 14.0), color, 13.0, "left");
         }
+    }
+
+    /// The sphere and the points at `t` (the canvas draws them as a still layer and a moving one).
+    fn paint_sphere(&self, pen: &Pen, width: f64, height: f64, t: f64, (az, el): (f64, f64)) {
+        let (viewport, camera) = (sphere_viewport(width, height), Camera::orbit(az, el));
+        draw_sphere(pen, &viewport, &camera, &self.scene);
+        draw_sphere_cursor(pen, &viewport, &camera, &self.scene, t);
     }
 
     fn paint_filmstrip(&self, pen: &Pen, width: f64, height: f64) {

@@ -13,6 +13,7 @@ use web_sys::CanvasRenderingContext2d;
 
 use crate::aircraft::Rgb;
 use crate::format::number;
+use crate::palette::BACKGROUND;
 
 /// Where a [`Pen`] draws.
 enum Surface<'a> {
@@ -344,6 +345,14 @@ impl<'a> Pen<'a> {
             Surface::Svg(..) => 0.56 * size * text.chars().count() as f64,
         }
     }
+}
+
+/// `paint` drawn into a new SVG document of `width` × `height` CSS pixels on the pages' background,
+/// titled `title`: the document's text. What every class's `toSvg` returns.
+pub fn svg_document(width: f64, height: f64, title: &str, paint: &dyn Fn(&Pen)) -> String {
+    let pen = Pen::svg(width, height, BACKGROUND, title);
+    paint(&pen);
+    pen.finish()
 }
 
 /// A figure's side in CSS pixels: 1 to 10⁴ (a non-finite size is 1).

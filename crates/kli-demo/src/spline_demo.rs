@@ -16,7 +16,7 @@ use crate::camera::{Camera, Viewport};
 use crate::format::{joined, json_list, number};
 use crate::object_view::{draw_object, object_camera};
 use crate::palette::{BACKGROUND, INK, KLI, MUTED, SLERP};
-use crate::pen::{Pen, size, unknown_view};
+use crate::pen::{Pen, size, svg_document, unknown_view};
 use crate::plots::{Panel, trim};
 use crate::sphere_view::{Side, View, draw_globe, draw_grid_back, draw_grid_front, grid};
 
@@ -351,9 +351,7 @@ impl SplineDemo {
             }),
             other => return Err(throw(unknown_view(other, &["objects", "sphere", "plots"]))),
         };
-        let pen = Pen::svg(width, height, BACKGROUND, title);
-        paint(&pen);
-        Ok(pen.finish())
+        Ok(svg_document(width, height, title, paint))
     }
 
     /// The three curves sampled as CSV, a row a curve and sample time: `t`, the curve

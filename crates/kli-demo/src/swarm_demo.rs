@@ -12,7 +12,7 @@ use crate::aircraft::{Face, aircraft};
 use crate::camera::{Camera, Viewport};
 use crate::format::{fixed, joined, json_list, number};
 use crate::palette::BACKGROUND;
-use crate::pen::{Pen, size, unknown_view};
+use crate::pen::{Pen, size, svg_document, unknown_view};
 use crate::swarm_plots::{History, draw_history, draw_sweep};
 use crate::swarm_view::{draw_swarm_objects, draw_swarm_sphere};
 
@@ -158,9 +158,7 @@ impl SwarmDemo {
             }),
             other => return Err(throw(unknown_view(other, &["sphere", "objects", "plots"]))),
         };
-        let pen = Pen::svg(width, height, BACKGROUND, title);
-        paint(&pen);
-        Ok(pen.finish())
+        Ok(svg_document(width, height, title, paint))
     }
 
     /// The sweep as an SVG document (see `drawSweep`).
@@ -173,10 +171,10 @@ impl SwarmDemo {
         current: f64,
     ) -> String {
         let (width, height) = (size(width), size(height));
-        let pen =
-            Pen::svg(width, height, BACKGROUND, "The order parameter R against the coupling K");
-        draw_sweep(&pen, width, height, couplings, orders, current);
-        pen.finish()
+        let title = "The order parameter R against the coupling K";
+        svg_document(width, height, title, &|pen| {
+            draw_sweep(pen, width, height, couplings, orders, current)
+        })
     }
 
     /// The swarm now as CSV, a row an oscillator: `t`, its index, its quaternion `w, x, y, z`,

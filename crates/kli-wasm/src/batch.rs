@@ -43,7 +43,7 @@ fn in_place(
     disjoint.then_some(ranges)
 }
 
-fn run(
+fn run_arrays(
     kind: BatchKind,
     starts: &JsValue,
     ends: &JsValue,
@@ -88,6 +88,23 @@ fn run(
     Ok(())
 }
 
+/// A batch call: the options (`order`, and `shortestPath` but for nlerp, which always takes the
+/// shorter arc), the arrays, and errors naming components as the caller laid them out.
+fn run(
+    kind: BatchKind,
+    starts: &JsValue,
+    ends: &JsValue,
+    parameters: &JsValue,
+    out: &JsValue,
+    options: Option<KliOptionsObject>,
+) -> JsResult<Float64Array> {
+    let (options, order) = read_options(options).map_err(throw)?;
+    let shortest_path = kind == BatchKind::Nlerp || options.shortest_path;
+    run_arrays(kind, starts, ends, parameters, out, shortest_path)
+        .map_err(|e| throw(order.batch_error(e)))?;
+    Ok(out.clone().unchecked_into())
+}
+
 /// `out[4i..4i+4] = Slerp(starts[i], ends[i]; s[i])` for n pairs (arrays of 4n, 4n, n, 4n
 /// numbers, scalar first or, with `order: "xyzw"`, last, read in place either way); returns
 /// `out`. Same checks as `slerp`; errors name the element.
@@ -99,10 +116,7 @@ pub fn slerp_batch(
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] out: &JsValue,
     options: Option<KliOptionsObject>,
 ) -> JsResult<Float64Array> {
-    let (options, order) = read_options(options).map_err(throw)?;
-    run(BatchKind::Slerp, starts, ends, s, out, options.shortest_path)
-        .map_err(|e| throw(order.batch_error(e)))?;
-    Ok(out.clone().unchecked_into())
+    run(BatchKind::Slerp, starts, ends, s, out, options)
 }
 
 /// `out[4i..4i+4] = q(t[i])`, the exact KLI solution from `starts[i]` towards `ends[i]`, for n
@@ -115,10 +129,7 @@ pub fn kli_exact_batch(
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] out: &JsValue,
     options: Option<KliOptionsObject>,
 ) -> JsResult<Float64Array> {
-    let (options, order) = read_options(options).map_err(throw)?;
-    run(BatchKind::KliExact, starts, ends, t, out, options.shortest_path)
-        .map_err(|e| throw(order.batch_error(e)))?;
-    Ok(out.clone().unchecked_into())
+    run(BatchKind::KliExact, starts, ends, t, out, options)
 }
 
 /// Normalised linear interpolation (shorter arc) for n pairs, into `out`: the cheapest possible
@@ -132,9 +143,7 @@ pub fn nlerp_batch(
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] out: &JsValue,
     options: Option<KliOptionsObject>,
 ) -> JsResult<Float64Array> {
-    let (_, order) = read_options(options).map_err(throw)?;
-    run(BatchKind::Nlerp, starts, ends, s, out, true).map_err(|e| throw(order.batch_error(e)))?;
-    Ok(out.clone().unchecked_into())
+    run(BatchKind::Nlerp, starts, ends, s, out, options)
 }
 
 /// One KLI path from p towards r sampled at each of `times` (finite, ≥ 0): Float64Array(4n).
