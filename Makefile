@@ -53,7 +53,16 @@ setup-browser:
 # `kli` (kli.js, the default features), `kli/swarm` (swarm.js) and `kli/spline` (spline.js), each
 # built with its feature alone, in a target directory of its own so every build stays cached.
 ENTRIES := swarm spline
-pkg: setup-rust setup-node
+# What each build reads: a build runs again only when one of these is newer than its stamp, so
+# `make demo` serves at once when nothing changed (tests/js/build.test.mjs checks it).
+CORE_SOURCES := Cargo.toml Cargo.lock $(shell find src -name '*.rs')
+PKG_SOURCES := $(CORE_SOURCES) crates/kli-wasm/Cargo.toml $(shell find crates/kli-wasm/src -name '*.rs') \
+               scripts/package-json.mjs
+WWW_SOURCES := $(PKG_SOURCES) crates/kli-demo/Cargo.toml $(shell find crates/kli-demo/src -name '*.rs') \
+               scripts/pages.mjs www/pages.js node_modules/.installed
+pkg: setup-rust setup-node pkg/.built
+	@cmp -s README.md pkg/README.md || cp README.md pkg/
+pkg/.built: $(PKG_SOURCES)
 	cargo build --release -p kli-wasm --lib --target $(TARGET)
 	for entry in $(ENTRIES); do \
 	  cargo build --release -p kli-wasm --lib --target $(TARGET) --target-dir target/$$entry-entry \
@@ -70,24 +79,29 @@ pkg: setup-rust setup-node
 	@for module in kli $(ENTRIES); do \
 	  echo "pkg/$${module}_bg.wasm: $$(stat -c %s pkg/$${module}_bg.wasm) bytes, $$(gzip -9c pkg/$${module}_bg.wasm | wc -c) gzipped"; \
 	done
+	@touch $@
 
-# The pages' modules, one a page: a build of crates/kli-demo with the page's feature. One target
-# directory serves all three (cargo keeps each feature set's artifacts); each build is bound
-# right after it, before the next overwrites the .wasm.
-PAGES := kli:kli-page swarm:swarm-page spline:spline-page
-www: setup-rust setup-node pkg
+# The pages' modules, one a page (the pages are listed in www/pages.js): a build of
+# crates/kli-demo with the page's feature `<page>-page`, bound to www/pkg/<page>_demo.js. One
+# target directory serves all three (cargo keeps each feature set's artifacts); each build is
+# bound right after it, before the next overwrites the .wasm. Then scripts/pages.mjs writes the
+# pages' modulepreload links and the service worker's file list and cache name (a content hash).
+PAGES := $(shell node scripts/pages.mjs names)
+www: setup-rust setup-node pkg www/pkg/.built
+	node scripts/pages.mjs write
+www/pkg/.built: $(WWW_SOURCES) pkg/.built
 	rm -rf www/pkg www/examples/vendor
 	@# The examples import the package and three.js by name (an import map): both served locally.
 	mkdir -p www/examples/vendor/kli www/examples/vendor/three
 	cp pkg/kli.js pkg/kli_bg.wasm www/examples/vendor/kli/
 	cp node_modules/three/build/three.module.js node_modules/three/build/three.core.js www/examples/vendor/three/
 	for page in $(PAGES); do \
-	  name=$${page%%:*}; feature=$${page#*:}; \
-	  cargo build --release -p kli-demo --lib --target $(TARGET) --no-default-features --features $$feature; \
-	  wasm-bindgen --target web --out-dir www/pkg --out-name $${name}_demo $(RELEASE)/kli_demo.wasm; \
-	  wasm-opt -O3 $(WASM_FEATURES) www/pkg/$${name}_demo_bg.wasm -o www/pkg/$${name}_demo_bg.wasm; \
-	  echo "www/pkg/$${name}_demo_bg.wasm: $$(stat -c %s www/pkg/$${name}_demo_bg.wasm) bytes, $$(gzip -9c www/pkg/$${name}_demo_bg.wasm | wc -c) gzipped"; \
+	  cargo build --release -p kli-demo --lib --target $(TARGET) --no-default-features --features $$page-page; \
+	  wasm-bindgen --target web --out-dir www/pkg --out-name $${page}_demo $(RELEASE)/kli_demo.wasm; \
+	  wasm-opt -O3 $(WASM_FEATURES) www/pkg/$${page}_demo_bg.wasm -o www/pkg/$${page}_demo_bg.wasm; \
+	  echo "www/pkg/$${page}_demo_bg.wasm: $$(stat -c %s www/pkg/$${page}_demo_bg.wasm) bytes, $$(gzip -9c www/pkg/$${page}_demo_bg.wasm | wc -c) gzipped"; \
 	done
+	@touch $@
 
 # Each page as one self-contained HTML file (scripts, style sheet and .wasm inlined) that works
 # opened from file:// with no server and no network: dist/single/{index,swarm,keyframes}.html.

@@ -18,7 +18,7 @@ const size = (path) => {
 };
 console.log(`pkg/kli_bg.wasm (the npm package's main entry): ${size("pkg/kli_bg.wasm")} (target ≤ 32768 gzipped)`);
 for (const entry of ["swarm", "spline"]) console.log(`pkg/${entry}_bg.wasm (kli/${entry}): ${size(`pkg/${entry}_bg.wasm`)}`);
-for (const [page, module] of [["index.html", "kli_demo"], ["swarm.html", "swarm_demo"], ["keyframes.html", "spline_demo"]]) {
+for (const [page, module] of [["index.html", "kli_demo"], ["swarm.html", "swarm_demo"], ["keyframes.html", "keyframes_demo"]]) {
   console.log(`www/pkg/${module}_bg.wasm (${page}'s module): ${size(`www/pkg/${module}_bg.wasm`)}`);
 }
 

@@ -6,12 +6,11 @@
 import { build } from "esbuild";
 import { mkdir, readFile, writeFile } from "node:fs/promises";
 import { join } from "node:path";
+import { PAGES } from "../www/pages.js";
 
 const root = new URL("../", import.meta.url).pathname;
 const www = join(root, "www");
 const out = join(root, "dist/single");
-/** Page → its script. */
-const PAGES = { "index.html": "main.js", "swarm.html": "swarm.js", "keyframes.html": "keyframes.js" };
 
 /** Serves `./pkg/<name>_demo.js` as a module whose default `init()` is given the inlined .wasm. */
 const inlineWasm = {
@@ -64,9 +63,9 @@ async function single(page, script) {
 }
 
 await mkdir(out, { recursive: true });
-for (const [page, script] of Object.entries(PAGES)) {
-  const bytes = await single(page, script);
-  console.log(`dist/single/${page}: ${bytes} bytes`);
+for (const { html, script } of PAGES) {
+  const bytes = await single(html, script);
+  console.log(`dist/single/${html}: ${bytes} bytes`);
 }
 
 // <kli-figure> as one classic script with all three modules inside: `<script src="kli-figure.js">`
@@ -85,3 +84,5 @@ const element = await build({
   metafile: true,
 });
 console.log(`dist/single/kli-figure.js: ${Object.values(element.metafile.outputs)[0].bytes} bytes`);
+// The figures' boxes before the script runs (no layout shift), for pages that embed them.
+await writeFile(join(out, "kli-figure.css"), await readFile(join(www, "kli-figure.css")));

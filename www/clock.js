@@ -1,9 +1,10 @@
 // @ts-check
-// The animation clock: the time t in [0, end], whether it runs, and at what speed.
+// The animation clock: the time t in [start, end], whether it runs, and at what speed.
 
 export class Clock {
   constructor() {
     this.t = 0;
+    this.start = 0;
     this.end = 0;
     this.playing = false;
     this.speed = 1;
@@ -11,9 +12,9 @@ export class Clock {
     this.last = null;
   }
 
-  /** Runs from the current time, or from 0 when at the end. */
+  /** Runs from the current time, or from the start when at the end. */
   play() {
-    if (this.t >= this.end) this.t = 0;
+    if (this.t >= this.end) this.t = this.start;
     this.playing = true;
     this.last = null;
   }
@@ -22,13 +23,14 @@ export class Clock {
     this.playing = false;
   }
 
-  /** Moves to `t`, kept within [0, end] (NaN counts as 0). */
+  /** Moves to `t`, kept within [start, end] (NaN counts as the start). */
   seek(/** @type {number} */ t) {
-    this.t = Math.min(Math.max(Number.isNaN(t) ? 0 : t, 0), this.end);
+    this.t = Math.min(Math.max(Number.isNaN(t) ? this.start : t, this.start), this.end);
   }
 
-  /** A new end (a new run); the time stays where it was when it still fits. */
-  setEnd(/** @type {number} */ end) {
+  /** A new span (a new run); the time stays where it was when it still fits. */
+  setSpan(/** @type {number} */ start, /** @type {number} */ end) {
+    this.start = start;
     this.end = end;
     this.seek(this.t);
   }

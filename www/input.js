@@ -54,20 +54,39 @@ export function wireKeyboard(sphere, actions) {
   });
 }
 
-/** Dragging on the sphere turns it. */
-export function wireDragging(/** @type {HTMLElement} */ sphere, /** @type {Actions["turn"]} */ turn) {
-  /** @type {{ x: number, y: number } | null} */
+/**
+ * Dragging on a canvas: where `grab` claims the pointer (a key's disc, say), the pointer moves
+ * what it grabbed; anywhere else dragging turns the view. Only a draggable canvas takes
+ * `touch-action: none`, so that a swipe over any other figure scrolls the page on a phone.
+ * @param {HTMLElement} canvas
+ * @param {Actions["turn"]} turn
+ * @param {(x: number, y: number) => ((x: number, y: number) => void) | null} [grab] points in CSS pixels from the canvas's corner
+ */
+export function wireDragging(canvas, turn, grab = () => null) {
+  canvas.style.touchAction = "none";
+  /** @type {{ x: number, y: number, move: ((x: number, y: number) => void) | null } | null} */
   let drag = null;
-  sphere.addEventListener("pointerdown", (event) => {
-    drag = { x: event.clientX, y: event.clientY };
-    sphere.setPointerCapture(event.pointerId);
+  const local = (/** @type {PointerEvent} */ event) => {
+    const box = canvas.getBoundingClientRect();
+    return { x: event.clientX - box.left, y: event.clientY - box.top };
+  };
+  canvas.addEventListener("pointerdown", (event) => {
+    const { x, y } = local(event);
+    drag = { x: event.clientX, y: event.clientY, move: grab(x, y) };
+    canvas.setPointerCapture(event.pointerId);
   });
-  sphere.addEventListener("pointermove", (event) => {
+  canvas.addEventListener("pointermove", (event) => {
     if (!drag) return;
+    if (drag.move) {
+      const { x, y } = local(event);
+      drag.move(x, y);
+      return;
+    }
     turn(-(event.clientX - drag.x) * 0.01, (event.clientY - drag.y) * 0.01);
-    drag = { x: event.clientX, y: event.clientY };
+    drag.x = event.clientX;
+    drag.y = event.clientY;
   });
   const end = () => (drag = null);
-  sphere.addEventListener("pointerup", end);
-  sphere.addEventListener("pointercancel", end);
+  canvas.addEventListener("pointerup", end);
+  canvas.addEventListener("pointercancel", end);
 }

@@ -1,13 +1,18 @@
 // @ts-check
-// The keyframes page, wiring only: the keys and options to the module's SplineDemo (the three
+// The keyframes page, wiring only: the keys and options to the module's KeyframesDemo (the three
 // curves, their figures and their views) and to kliSpline/squadSpline/slerpSpline for timing.
-import init, { SplineDemo, defaultSphereView, kliSpline, slerpSpline, squadSpline } from "./pkg/spline_demo.js";
-import { loadModule, observeCanvases } from "./canvases.js";
+import init, { KeyframesDemo, defaultCamera, kliSpline, slerpSpline, squadSpline } from "./pkg/keyframes_demo.js";
+import { Camera } from "./camera.js";
+import { Clock } from "./clock.js";
+import { loadModule } from "./canvases.js";
+import { Figures } from "./figures.js";
+import { page } from "./pages.js";
 import { $ } from "./dom.js";
-import { png, saveAs, timeTag, wireSaving } from "./exports.js";
-import { wireKeyboard } from "./input.js";
+import { presetName, randomQuaternion } from "./presets.js";
+import { saveAs, timeTag, wireSaving } from "./exports.js";
+import { wireDragging, wireKeyboard } from "./input.js";
 import { formatNumber, parseNumber } from "./numbers.js";
-import { SPLINE_URL_KEYS as KEYS, throttledUrl } from "./url.js";
+import { KEYFRAMES_URL_KEYS as KEYS, throttledUrl } from "./url.js";
 
 /** @typedef {{ keys: number[][], times: number[], smoothness: number }} SplineState */
 
@@ -24,13 +29,14 @@ const PRESETS = {
   hard: { keys: [[1, 0, 0, 0], [1, 0, 0, 0], [0, 1, 0, 0], [-0.6, 0, -0.8, 0], [0.6, 0, 0.8, 0], [1, 0, 0, 0]], times: [], smoothness: 1 },
 };
 
-const form = $("#spline-inputs", HTMLFormElement);
+const form = $("#keyframes-inputs", HTMLFormElement);
 const field = (/** @type {string} */ name) => /** @type {HTMLInputElement} */ (form.elements.namedItem(name));
-const canvases = {
-  objects: $("#spline-objects", HTMLCanvasElement),
-  sphere: $("#spline-sphere", HTMLCanvasElement),
-  plots: $("#spline-plots", HTMLCanvasElement),
-};
+const figures = new Figures({
+  objects: $("#keyframes-objects", HTMLCanvasElement),
+  hopf: $("#keyframes-hopf", HTMLCanvasElement),
+  plots: $("#keyframes-plots", HTMLCanvasElement),
+}, page("keyframes"));
+const canvases = figures.canvases;
 const ui = {
   play: $("#play", HTMLButtonElement),
   time: $("#time", HTMLInputElement),
@@ -44,13 +50,9 @@ const query = new URLSearchParams(location.search);
 const embed = query.get(KEYS.embed) === "1";
 const writeUrl = throttledUrl(400, (search) => (ui.share.href = search));
 const run = {
-  demo: /** @type {SplineDemo | null} */ (null),
+  demo: /** @type {KeyframesDemo | null} */ (null),
   state: PRESETS.tumble,
-  t: 0,
-  playing: false,
-  last: /** @type {number | null} */ (null),
-  view: [0, 0],
-  sizes: /** @type {Record<string, { width: number, height: number }>} */ ({}),
+  clock: new Clock(),
 };
 
 // ---- State ----------------------------------------------------------------------------------
@@ -120,10 +122,10 @@ function urlOf(/** @type {SplineState} */ state) {
 
 /** Builds the three curves; on an Error, shows it beside its field and keeps the run on show. */
 function rebuild(/** @type {SplineState} */ state) {
-  /** @type {SplineDemo} */
+  /** @type {KeyframesDemo} */
   let demo;
   try {
-    demo = new SplineDemo(new Float64Array(state.keys.flat()), new Float64Array(state.times), state.smoothness);
+    demo = new KeyframesDemo(new Float64Array(state.keys.flat()), new Float64Array(state.times), state.smoothness);
   } catch (error) {
     showError(error);
     return false;
@@ -132,12 +134,12 @@ function rebuild(/** @type {SplineState} */ state) {
   for (const marked of form.querySelectorAll("[aria-invalid=true]")) marked.setAttribute("aria-invalid", "false");
   run.demo?.free();
   run.demo = demo;
+  figures.show(demo);
   run.state = state;
-  run.t = Math.min(Math.max(run.t, demo.startTime), demo.endTime);
+  run.clock.setSpan(demo.startTime, demo.endTime);
   ui.time.min = String(demo.startTime);
   ui.time.max = String(demo.endTime);
-  const preset = Object.entries(PRESETS).find(([, p]) => JSON.stringify(p) === JSON.stringify(state));
-  /** @type {HTMLSelectElement} */ (form.elements.namedItem("preset")).value = preset ? preset[0] : "custom";
+  /** @type {HTMLSelectElement} */ (form.elements.namedItem("preset")).value = presetName(PRESETS, state);
   fillFigures(demo, state);
   fillKeyEditor();
   writeUrl(urlOf(state));
@@ -156,7 +158,7 @@ function showError(/** @type {unknown} */ error) {
 
 /** The table: the module's figures at once, and a moment after the last change (not on every
  *  move of a dragged key) the solve and evaluation times, measured here. */
-function fillFigures(/** @type {SplineDemo} */ demo, /** @type {SplineState} */ state) {
+function fillFigures(/** @type {KeyframesDemo} */ demo, /** @type {SplineState} */ state) {
   const figures = demo.figures;
   const body = $("#figures tbody", HTMLTableSectionElement);
   body.replaceChildren();
@@ -207,39 +209,14 @@ function requestDraw() {
   pending = true;
   requestAnimationFrame((now) => {
     pending = false;
-    const demo = run.demo;
-    if (run.playing && demo) {
-      if (run.last !== null) run.t += (now - run.last) / 1000;
-      run.last = now;
-      if (run.t >= demo.endTime) {
-        run.t = demo.endTime;
-        pause();
-      }
-    }
+    if (run.clock.tick(now)) pause();
     draw();
-    if (run.playing) requestDraw();
+    if (run.clock.playing) requestDraw();
   });
 }
 
-/** @typedef {keyof typeof canvases} ViewName */
-
-/**
- * Draws one view at the current time onto `ctx` at `ratio`: the page's canvases, or a PNG.
- * @param {ViewName} name
- * @param {CanvasRenderingContext2D} ctx
- * @param {{ width: number, height: number }} size
- * @param {number} ratio
- */
-function paint(name, ctx, { width, height }, ratio) {
-  const demo = run.demo;
-  if (!demo) return;
-  if (name === "objects") demo.drawObjects(ctx, width, height, ratio, run.t);
-  if (name === "sphere") demo.drawSphere(ctx, width, height, ratio, run.view[0], run.view[1], run.t);
-  if (name === "plots") demo.drawPlots(ctx, width, height, ratio, run.t);
-}
-
 /** The views' names in file names. */
-const FILE_NAMES = { objects: "objects", sphere: "hopf-sphere", plots: "angular-velocity-plots" };
+const FILE_NAMES = { objects: "objects", hopf: "hopf", plots: "angular-velocity-plots" };
 
 /** Saves a view as PNG or SVG, or the three curves' samples as CSV or JSON. */
 function save(/** @type {string} */ what, /** @type {string} */ format) {
@@ -247,54 +224,35 @@ function save(/** @type {string} */ what, /** @type {string} */ format) {
   if (!demo) throw new Error("there are no curves to save");
   const keys = `${demo.keys.length / 4}-keys`;
   if (what === "curves") {
-    return saveAs(`kli-keyframes-curves-${keys}`, format, { csv: () => demo.curvesCsv(), json: () => demo.curvesJson() });
+    return saveAs(`kli-keyframes-curves-${keys}`, format, { csv: () => demo.export("curves", "csv"), json: () => demo.export("curves", "json") });
   }
-  const view = /** @type {ViewName} */ (what);
-  const size = run.sizes[view];
-  if (!size) throw new Error(`the ${what} view is not laid out`);
-  const name = `kli-keyframes-${FILE_NAMES[view]}-${keys}-${timeTag(run.t)}`;
-  return saveAs(name, format, {
-    svg: () => demo.toSvg(view, size.width, size.height, run.t, run.view[0], run.view[1]),
-    png: () => png(size, (ctx, ratio) => paint(view, ctx, size, ratio)),
-  });
+  const view = /** @type {keyof typeof FILE_NAMES} */ (what);
+  if (!Object.hasOwn(FILE_NAMES, view)) throw new Error(`there is no ${what} view`);
+  return figures.save(view, format, `kli-keyframes-${FILE_NAMES[view]}-${keys}-${timeTag(run.clock.t)}`, run.clock.t);
 }
 
 function draw() {
   const demo = run.demo;
   if (!demo) return;
-  const ratio = devicePixelRatio || 1;
-  for (const name of /** @type {ViewName[]} */ (["objects", "sphere", "plots"])) {
-    const size = run.sizes[name];
-    const ctx = canvases[name].getContext("2d");
-    if (size && ctx) paint(name, ctx, size, ratio);
-  }
-  ui.time.value = String(run.t);
-  ui.readout.textContent = `t = ${run.t.toFixed(2)} / ${demo.endTime.toFixed(2)}`;
+  figures.render(run.clock.t);
+  ui.time.value = String(run.clock.t);
+  ui.readout.textContent = `t = ${run.clock.t.toFixed(2)} / ${demo.endTime.toFixed(2)}`;
 }
 
 function play() {
-  if (run.demo && run.t >= run.demo.endTime) run.t = run.demo.startTime;
-  run.playing = true;
-  run.last = null;
+  run.clock.play();
   ui.play.textContent = "Pause";
   requestDraw();
 }
 
 function pause() {
-  run.playing = false;
+  run.clock.pause();
   ui.play.textContent = "Play";
 }
 
 // ---- Start ----------------------------------------------------------------------------------
 
-function randomKeys() {
-  const gaussian = () => Math.sqrt(-2 * Math.log(1 - Math.random())) * Math.cos(2 * Math.PI * Math.random());
-  return Array.from({ length: 6 }, () => {
-    const q = [gaussian(), gaussian(), gaussian(), gaussian()];
-    const n = Math.hypot(...q);
-    return q.map((c) => Number((c / n).toFixed(4)));
-  });
-}
+const randomKeys = () => Array.from({ length: 6 }, randomQuaternion);
 
 function wire() {
   form.addEventListener("submit", (event) => event.preventDefault());
@@ -328,19 +286,18 @@ function wire() {
     fillForm(state);
     rebuild(state);
   });
-  ui.play.addEventListener("click", () => (run.playing ? pause() : play()));
+  ui.play.addEventListener("click", () => (run.clock.playing ? pause() : play()));
   wireSaving($("#save", HTMLElement), save, $("#save-status", HTMLElement));
   ui.time.addEventListener("input", () => {
     pause();
-    run.t = Number(ui.time.value);
+    run.clock.seek(Number(ui.time.value));
     draw();
   });
   const turn = (/** @type {number} */ azimuth, /** @type {number} */ elevation) => {
-    run.view[0] += azimuth;
-    run.view[1] = Math.min(Math.max(run.view[1] + elevation, -1.55), 1.55);
-    if (!run.playing) draw();
+    figures.turn(azimuth, elevation);
+    if (!run.clock.playing) draw();
   };
-  wireSphereDragging(turn);
+  wireDragging(canvases.hopf, turn, grabKey);
   $("#add-key", HTMLButtonElement).addEventListener("click", () => {
     const keys = run.state.keys;
     if (keys.length >= 10) return;
@@ -352,83 +309,65 @@ function wire() {
   $("#remove-key", HTMLButtonElement).addEventListener("click", () => {
     if (run.state.keys.length > 3) withKeys(run.state.keys.slice(0, -1));
   });
-  wireKeyboard(canvases.sphere, {
-    togglePlay: () => (run.playing ? pause() : play()),
+  wireKeyboard(canvases.hopf, {
+    togglePlay: () => (run.clock.playing ? pause() : play()),
     step: () => {},
-    toStart: () => { run.t = run.demo?.startTime ?? 0; draw(); },
-    toEnd: () => { run.t = run.demo?.endTime ?? 0; draw(); },
+    toStart: () => { run.clock.seek(run.clock.start); draw(); },
+    toEnd: () => { run.clock.seek(run.clock.end); draw(); },
     speed: () => {},
     turn,
   });
 }
 
-/** Dragging on the sphere: from a key's disc it moves the key, from anywhere else it turns the sphere. */
-function wireSphereDragging(/** @type {(azimuth: number, elevation: number) => void} */ turn) {
-  const sphere = canvases.sphere;
-  /** @type {{ x: number, y: number, key: number } | null} */
-  let drag = null;
+/**
+ * A key's disc under the pointer (the nearest in front within 12 px) is grabbed: moving the
+ * pointer then turns that key so that its Hopf point follows (once a frame).
+ * @param {number} x
+ * @param {number} y
+ */
+function grabKey(x, y) {
+  const demo = run.demo;
+  const frame = figures.frame("hopf", run.clock.t);
+  if (!demo || !frame) return null;
+  const points = demo.keyPoints(frame);
+  let key = -1;
+  let nearest = 12;
+  for (let i = 0; i < points.length / 3; i++) {
+    const distance = Math.hypot(points[3 * i] - x, points[3 * i + 1] - y);
+    if (points[3 * i + 2] === 1 && distance < nearest) [key, nearest] = [i, distance];
+  }
+  if (key < 0) return null;
   let pending = false;
-  const local = (/** @type {PointerEvent} */ event) => {
-    const box = sphere.getBoundingClientRect();
-    return { x: event.clientX - box.left, y: event.clientY - box.top };
-  };
-  sphere.addEventListener("pointerdown", (event) => {
-    const demo = run.demo;
-    const size = run.sizes.sphere;
-    if (!demo || !size) return;
-    const { x, y } = local(event);
-    const points = demo.keyPoints(size.width, size.height, run.view[0], run.view[1]);
-    // The nearest key in front within 12 px, if any.
-    let key = -1;
-    let nearest = 12;
-    for (let i = 0; i < points.length / 3; i++) {
-      const distance = Math.hypot(points[3 * i] - x, points[3 * i + 1] - y);
-      if (points[3 * i + 2] === 1 && distance < nearest) [key, nearest] = [i, distance];
-    }
-    drag = { x: event.clientX, y: event.clientY, key };
-    sphere.setPointerCapture(event.pointerId);
-  });
-  sphere.addEventListener("pointermove", (event) => {
-    if (!drag) return;
-    if (drag.key < 0) {
-      turn(-(event.clientX - drag.x) * 0.01, (event.clientY - drag.y) * 0.01);
-      drag.x = event.clientX;
-      drag.y = event.clientY;
-      return;
-    }
+  let to = { x, y };
+  return (/** @type {number} */ x, /** @type {number} */ y) => {
+    to = { x, y };
     if (pending) return;
     pending = true;
-    const { x, y } = local(event);
-    const key = drag.key;
     requestAnimationFrame(() => {
       pending = false;
       const demo = run.demo;
-      const size = run.sizes.sphere;
-      if (!demo || !size) return;
-      const moved = demo.keysWithKeyAt(key, size.width, size.height, run.view[0], run.view[1], x, y);
+      const frame = figures.frame("hopf", run.clock.t);
+      if (!demo || !frame) return;
+      const moved = demo.keysWithKeyAt(key, frame, to.x, to.y);
       if (moved.length) {
         /** @type {HTMLSelectElement} */ (form.elements.namedItem("key")).value = String(key);
         withKeys(rows(moved));
       }
     });
-  });
-  const end = () => (drag = null);
-  sphere.addEventListener("pointerup", end);
-  sphere.addEventListener("pointercancel", end);
+  };
 }
-
 
 async function start() {
   if (!(await loadModule(init, ui.load))) return;
   if (embed) document.body.classList.add("embed");
-  run.view = Array.from(defaultSphereView());
+  figures.camera = new Camera(defaultCamera());
   wire();
   const state = stateFromUrl();
   fillForm(state);
   if (!rebuild(state)) rebuild(PRESETS.tumble);
   ui.load.textContent = "";
   ui.load.hidden = true;
-  observeCanvases(canvases, run.sizes, draw);
+  figures.observe(draw);
   if (!matchMedia("(prefers-reduced-motion: reduce)").matches) play();
 }
 

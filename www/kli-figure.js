@@ -9,24 +9,22 @@
 // first figure that needs it appears, and shared by every figure on the page. Every attribute is
 // live: change one and the figure is rebuilt. Computing, checking and drawing are the modules'.
 
-const KLI_VIEWS = ["object", "hopf", "plots", "filmstrip"];
-const VIEWS = [...KLI_VIEWS, "keyframes", "swarm"];
+import { Camera } from "./camera.js";
+import { Figures } from "./figures.js";
+import { parseNumber } from "./numbers.js";
+import { MODULES, PAGES, pageOfView } from "./pages.js";
+
+const VIEWS = PAGES.flatMap((page) => Object.keys(page.views));
 const ATTRIBUTES = ["view", "p", "r", "tolerance", "step", "integrator", "shortest-path", "t", "autoplay", "speed",
   "keys", "times", "smoothness", "count", "coupling", "graph", "seed", "label"];
 const SWARM_DT = 0.02;
 
-/** Each page module, initialised once for the whole page. */
-const modules = {
-  kli: () => import("./pkg/kli_demo.js"),
-  spline: () => import("./pkg/spline_demo.js"),
-  swarm: () => import("./pkg/swarm_demo.js"),
-};
-/** @type {Map<string, Promise<any>>} */
+/** @type {Map<string, Promise<any>>} each page module, initialised once for the whole page */
 const loaded = new Map();
-function load(/** @type {keyof typeof modules} */ name) {
+function load(/** @type {keyof typeof MODULES} */ name) {
   let module = loaded.get(name);
   if (!module) {
-    module = modules[name]().then(async (m) => {
+    module = MODULES[name]().then(async (m) => {
       await m.default();
       return m;
     });
@@ -35,8 +33,9 @@ function load(/** @type {keyof typeof modules} */ name) {
   return module;
 }
 
-/** "0,0,0,1" → [0, 0, 0, 1]; a word that is not a number stays NaN, for the module to name. */
-const numbers = (/** @type {string} */ text) => text.split(",").map((x) => (x.trim() === "" ? NaN : Number(x)));
+/** "0,0,0,1" → [0, 0, 0, 1], as the pages read numbers; a word that is not one stays NaN, for the
+ *  module to name. */
+const numbers = (/** @type {string} */ text) => text.split(",").map(parseNumber);
 /** "1,0,0,0; 0,1,0,0" → [[1, 0, 0, 0], [0, 1, 0, 0]]. */
 const quaternions = (/** @type {string} */ text) => text.split(";").map(numbers);
 
@@ -62,37 +61,32 @@ export class KliFigure extends HTMLElement {
     this.message = document.createElement("p");
     this.message.setAttribute("role", "status");
     root.append(style, this.canvas, this.message);
-    /** @type {any} the module's Demo, SplineDemo or SwarmDemo */
+    /** @type {any} the module's Demo, KeyframesDemo or SwarmDemo */
     this.demo = null;
-    this.size = { width: 0, height: 0 };
     this.t = 0;
-    this.view = [0, 0];
+    /** @type {Figures<string> | null} */
+    this.figures = null;
     this.frame = 0;
     this.last = 0;
     this.visible = true;
     this.built = 0;
-    this.resize = new ResizeObserver(([entry]) => {
-      this.size = { width: entry.contentRect.width, height: entry.contentRect.height };
-      const ratio = devicePixelRatio || 1;
-      this.canvas.width = Math.max(1, Math.round(this.size.width * ratio));
-      this.canvas.height = Math.max(1, Math.round(this.size.height * ratio));
-      this.draw();
-    });
-    // Off screen, an animated figure stops asking for frames.
-    this.intersection = new IntersectionObserver(([entry]) => {
-      this.visible = entry.isIntersecting;
+    // Off screen, an animated figure stops asking for frames. The browser may deliver several
+    // entries at once (hidden, then shown, on a slide that appears): the last one is the news.
+    this.intersection = new IntersectionObserver((entries) => {
+      this.visible = entries[entries.length - 1].isIntersecting;
+      if (this.visible) this.figures?.sizing?.refit(false);
       this.schedule();
     });
   }
 
   connectedCallback() {
-    this.resize.observe(this.canvas);
     this.intersection.observe(this);
     this.rebuild();
   }
 
   disconnectedCallback() {
-    this.resize.disconnect();
+    this.figures?.sizing?.disconnect();
+    this.figures = null;
     this.intersection.disconnect();
     cancelAnimationFrame(this.frame);
     this.frame = 0;
@@ -117,11 +111,11 @@ export class KliFigure extends HTMLElement {
   async rebuild() {
     const build = ++this.built;
     const view = this.kind;
-    if (!VIEWS.includes(view)) return this.fail(`view must be one of ${VIEWS.join(", ")} (got "${view}")`);
-    const name = KLI_VIEWS.includes(view) ? "kli" : view === "keyframes" ? "spline" : "swarm";
+    const page = pageOfView(view);
+    if (!page) return this.fail(`view must be one of ${VIEWS.join(", ")} (got "${view}")`);
     let module;
     try {
-      module = await load(name);
+      module = await load(/** @type {keyof typeof MODULES} */ (page.name));
     } catch (error) {
       return this.fail(`the WebAssembly module could not be loaded: ${error instanceof Error ? error.message : error}`);
     }
@@ -134,10 +128,15 @@ export class KliFigure extends HTMLElement {
     }
     this.demo?.free();
     this.demo = demo;
-    this.view = Array.from(module.defaultSphereView());
+    this.figures?.sizing?.disconnect();
+    const moduleView = page.views[view];
+    this.figures = new Figures({ [moduleView]: this.canvas }, { layered: page.layered, still: page.still });
+    this.figures.camera = new Camera(module.defaultCamera());
+    this.figures.show(demo);
+    this.figures.observe(() => this.draw());
     this.message.textContent = "";
     const t = this.getAttribute("t");
-    this.t = t === null ? 0 : Math.max(0, Number(t) || 0);
+    this.t = t === null ? 0 : Math.max(0, parseNumber(t) || 0);
     if (view === "swarm" && this.t > 0) demo.step(SWARM_DT, Math.min(Math.round(this.t / SWARM_DT), 1e5));
     this.describe();
     this.draw();
@@ -147,11 +146,11 @@ export class KliFigure extends HTMLElement {
   /** The module's object for `view`, from the attributes (its constructor checks them). */
   create(/** @type {any} */ module, /** @type {string} */ view) {
     const attr = (/** @type {string} */ name) => this.getAttribute(name);
-    const number = (/** @type {string} */ name) => (attr(name) === null ? undefined : Number(attr(name)));
+    const number = (/** @type {string} */ name) => (attr(name) === null ? undefined : parseNumber(attr(name) ?? ""));
     if (view === "keyframes") {
       const keys = quaternions(attr("keys") ?? "1,0,0,0; 0.8,0.6,0,0; 0.6,0,0.8,0; 0,0,0.6,0.8");
       const times = attr("times") ? numbers(attr("times") ?? "") : [];
-      return new module.SplineDemo(new Float64Array(keys.flat()), new Float64Array(times), number("smoothness") ?? 1);
+      return new module.KeyframesDemo(new Float64Array(keys.flat()), new Float64Array(times), number("smoothness") ?? 1);
     }
     if (view === "swarm") {
       const options = { count: number("count") ?? 200, coupling: number("coupling") ?? 1, seed: number("seed") ?? 1 };
@@ -169,6 +168,8 @@ export class KliFigure extends HTMLElement {
   fail(/** @type {string} */ text) {
     this.demo?.free();
     this.demo = null;
+    this.figures?.sizing?.disconnect();
+    this.figures = null;
     this.message.textContent = `kli-figure: ${text}`;
     this.canvas.setAttribute("aria-label", this.message.textContent);
     const context = this.canvas.getContext("2d");
@@ -207,7 +208,8 @@ export class KliFigure extends HTMLElement {
   tick(/** @type {number} */ now) {
     this.frame = 0;
     if (!this.demo || !this.playing || !this.visible) return;
-    const dt = (Math.min(Math.max(now - this.last, 0), 100) / 1000) * (Number(this.getAttribute("speed")) || 1);
+    const speed = parseNumber(this.getAttribute("speed") ?? "1");
+    const dt = (Math.min(Math.max(now - this.last, 0), 100) / 1000) * (Number.isFinite(speed) ? speed : 1);
     this.last = now;
     if (this.kind === "swarm") {
       this.demo.step(SWARM_DT, Math.max(1, Math.round(dt / SWARM_DT)));
@@ -216,31 +218,14 @@ export class KliFigure extends HTMLElement {
       const start = this.kind === "keyframes" ? this.demo.startTime : 0;
       this.t = this.t + dt > this.end ? start : this.t + dt;
     }
-    this.draw();
+    // A host may have scaled the figure since the last frame (reveal.js, on a new slide size).
+    if (this.figures?.sizing?.refit(false).length === 0) this.draw();
     this.frame = requestAnimationFrame((later) => this.tick(later));
   }
 
-  /** Draws the figure at its time, at the device's pixel ratio. */
+  /** Draws the figure at its time, at the pixels it covers on screen. */
   draw() {
-    const { demo, size } = this;
-    const ctx = this.canvas.getContext("2d");
-    if (!demo || !ctx || size.width === 0) return;
-    const ratio = devicePixelRatio || 1;
-    const { width, height } = size;
-    const [azimuth, elevation] = this.view;
-    const t = Math.min(this.t, this.end);
-    switch (this.kind) {
-      case "object": return demo.drawObject(ctx, width, height, ratio, t);
-      case "filmstrip": return demo.drawFilmstrip(ctx, width, height, ratio);
-      case "plots":
-        demo.drawPlots(ctx, width, height, ratio);
-        return demo.drawPlotsTime(ctx, width, height, ratio, t);
-      case "hopf":
-        demo.drawSphere(ctx, width, height, ratio, azimuth, elevation);
-        return demo.drawSphereTime(ctx, width, height, ratio, t, azimuth, elevation);
-      case "keyframes": return demo.drawSphere(ctx, width, height, ratio, azimuth, elevation, t);
-      case "swarm": return demo.drawSphere(ctx, width, height, ratio, azimuth, elevation);
-    }
+    this.figures?.render(Math.min(this.t, this.end));
   }
 }
 

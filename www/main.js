@@ -1,17 +1,19 @@
 // @ts-check
 // Wiring only: the module, the form, the clock, the views and the URL, joined up. Computing,
 // checking and drawing are the module's (crates/kli-demo); each concern has its own file here.
-import init, { Demo, axisAngle, fromAxisAngle } from "./pkg/kli_demo.js";
+import init, { Demo, axisAngle, defaultCamera, fromAxisAngle } from "./pkg/kli_demo.js";
+import { Camera } from "./camera.js";
 import { Clock } from "./clock.js";
-import { png, saveAs, timeTag, wireSaving } from "./exports.js";
+import { saveAs, timeTag, wireSaving } from "./exports.js";
+import { Figures } from "./figures.js";
+import { page } from "./pages.js";
 import { $ } from "./dom.js";
 import { Form, stateKey } from "./form.js";
 import { wireDragging, wireKeyboard } from "./input.js";
 import { parseNumber } from "./numbers.js";
-import { DEFAULTS, PRESETS, presetName, randomQuaternion } from "./presets.js";
+import { DEFAULTS, PRESETS, presetName, randomQuaternion, sameState } from "./presets.js";
 import { describeFrame, describeRun, fillTable, fillTypo } from "./summary.js";
 import { readQuery, throttledUrl, writeQuery } from "./url.js";
-import { Views } from "./views.js";
 
 /** @typedef {import("./form.js").State} State */
 
@@ -21,26 +23,25 @@ const clock = new Clock();
 const ui = {
   play: $("#play", HTMLButtonElement),
   time: $("#time", HTMLInputElement),
-  readout: $("#time-readout", HTMLOutputElement),
+  readout: $("#readout", HTMLOutputElement),
   status: $("#time-status", HTMLElement),
   speed: $("#speed", HTMLSelectElement),
   share: $("#share", HTMLAnchorElement),
   note: $("#note", HTMLElement),
   load: $("#load-status", HTMLElement),
 };
-const canvases = {
+const figures = new Figures({
   object: $("#object-canvas", HTMLCanvasElement),
-  sphere: $("#sphere-canvas", HTMLCanvasElement),
+  hopf: $("#hopf-canvas", HTMLCanvasElement),
   filmstrip: $("#filmstrip-canvas", HTMLCanvasElement),
   plots: $("#plots-canvas", HTMLCanvasElement),
-};
+}, page("kli"));
+const canvases = figures.canvases;
 const writeUrl = throttledUrl(400, (search) => (ui.share.href = search));
 const reducedMotion = () => matchMedia("(prefers-reduced-motion: reduce)").matches;
 
 /** The run on show: its Demo and the state it was built from. */
 const run = { demo: /** @type {Demo | null} */ (null), state: /** @type {State | null} */ (null) };
-/** @type {Views} */
-let views;
 
 // ---- Runs ---------------------------------------------------------------------------------
 
@@ -60,7 +61,7 @@ function build(candidate, fallback) {
     } catch (error) {
       errors.push(error);
       const key = stateKey(error);
-      if (!key || JSON.stringify(attempt[key]) === JSON.stringify(fallback[key])) return { demo: null, state: null, errors };
+      if (!key || sameState(attempt[key], fallback[key])) return { demo: null, state: null, errors };
       attempt = { ...attempt, [key]: fallback[key] };
     }
   }
@@ -71,14 +72,14 @@ function show(/** @type {Demo} */ demo, /** @type {State} */ state) {
   run.demo?.free();
   run.demo = demo;
   run.state = state;
-  clock.setEnd(demo.finalTime);
+  clock.setSpan(0, demo.finalTime);
   ui.time.max = String(demo.finalTime);
   ui.time.step = String(state.step);
-  views.show(demo);
+  figures.show(demo);
   fillTable(demo, $("#moments tbody", HTMLTableSectionElement), $("#final-time", HTMLElement), $("#printed-notes", HTMLUListElement));
   fillTypo(demo, state.tolerance, $("#typo tbody", HTMLTableSectionElement), $("#typo-summary", HTMLElement));
   ui.note.textContent = describeRun(demo, state);
-  form.field("preset").value = presetName(state);
+  form.field("preset").value = presetName(PRESETS, state);
   showTime();
   requestDraw();
 }
@@ -193,7 +194,7 @@ const actions = {
     clock.speed = Number(ui.speed.value);
   },
   turn: (azimuth, elevation) => {
-    views.turn(azimuth, elevation);
+    figures.turn(azimuth, elevation);
     requestDraw();
   },
 };
@@ -219,7 +220,7 @@ function frame(/** @type {number} */ now) {
 
 /** Draws the live views at the clock's time; while playing, the slider and readout follow. */
 function draw() {
-  if (!views.render(clock.t) || !run.demo) return;
+  if (!figures.render(clock.t) || !run.demo) return;
   if (clock.playing) {
     const readout = `t = ${clock.t.toFixed(2)} / T = ${run.demo.finalTime.toFixed(2)}`;
     if (readout !== lastReadout) {
@@ -233,26 +234,15 @@ function draw() {
 
 // ---- Saving -------------------------------------------------------------------------------
 
-/** The views' names in file names. */
-const FILE_NAMES = { object: "object", sphere: "hopf-sphere", filmstrip: "filmstrip", plots: "plots" };
-
 /** Saves a view as PNG or SVG, or the path as CSV or JSON, as it stands. */
 function save(/** @type {string} */ what, /** @type {string} */ format) {
   const demo = run.demo;
   if (!demo) throw new Error("there is no run to save");
-  const t = clock.t;
   if (what === "path") {
-    return saveAs(`kli-path-T${demo.finalTime.toFixed(2)}`, format, { csv: () => demo.pathCsv(), json: () => demo.pathJson() });
+    return saveAs(`kli-path-T${demo.finalTime.toFixed(2)}`, format, { csv: () => demo.export("path", "csv"), json: () => demo.export("path", "json") });
   }
-  const view = /** @type {import("./views.js").ViewName} */ (what);
-  const size = views.sizes[view];
-  if (!size) throw new Error(`the ${what} view is not laid out`);
-  const name = `kli-${FILE_NAMES[view]}${view === "filmstrip" ? "" : `-${timeTag(t)}`}`;
-  const [azimuth, elevation] = views.view;
-  return saveAs(name, format, {
-    svg: () => demo.toSvg(view, size.width, size.height, t, azimuth, elevation),
-    png: () => png(size, (ctx, ratio) => views.drawInto(view, ctx, size, ratio, t)),
-  });
+  const view = /** @type {keyof typeof canvases} */ (what);
+  return figures.save(view, format, `kli-${view}${view === "filmstrip" ? "" : `-${timeTag(clock.t)}`}`, clock.t);
 }
 
 // ---- Start --------------------------------------------------------------------------------
@@ -272,8 +262,8 @@ function wire() {
   });
   ui.speed.addEventListener("input", () => (clock.speed = Number(ui.speed.value)));
   wireSaving($("#save", HTMLElement), save, $("#save-status", HTMLElement));
-  wireKeyboard(canvases.sphere, actions);
-  wireDragging(canvases.sphere, actions.turn);
+  wireKeyboard(canvases.hopf, actions);
+  wireDragging(canvases.hopf, actions.turn);
 }
 
 /** The form as the URL gives it, over the defaults; a quaternion of the wrong length stays so,
@@ -306,7 +296,7 @@ async function start() {
   }
   performance.mark("kli:wasm-ready");
   if (query.embed) document.body.classList.add("embed");
-  views = new Views(canvases, Array.from(Demo.defaultSphereView()));
+  figures.camera = new Camera(defaultCamera());
   wire();
   const candidate = startingState();
   // The clock runs before the first URL is written, so that a playing page's URL has no time.
@@ -323,7 +313,7 @@ async function start() {
   else seek(query.t ?? 0);
   ui.load.textContent = "";
   ui.load.hidden = true;
-  views.observe(draw);
+  figures.observe(draw);
   // Offline support is registered once the page has settled, not on the way to the first frame.
   if ("serviceWorker" in navigator && location.protocol !== "file:") {
     const register = () => setTimeout(() => navigator.serviceWorker.register("sw.js").catch(() => {}));

@@ -2,10 +2,14 @@
 // The swarm page, wiring only: the form and the URL to the module's SwarmDemo, the animation,
 // the canvases and the sweep. The model, its checks and all drawing are the module's
 // (crates/kli-demo/src/swarm_demo.rs).
-import init, { SwarmDemo, defaultSphereView } from "./pkg/swarm_demo.js";
-import { loadModule, observeCanvases } from "./canvases.js";
+import init, { SwarmDemo, defaultCamera } from "./pkg/swarm_demo.js";
+import { Camera } from "./camera.js";
+import { loadModule } from "./canvases.js";
+import { Figures } from "./figures.js";
+import { page } from "./pages.js";
 import { $ } from "./dom.js";
-import { png, saveAs, timeTag, wireSaving } from "./exports.js";
+import { presetName } from "./presets.js";
+import { saveAs, timeTag, wireSaving } from "./exports.js";
 import { wireDragging, wireKeyboard } from "./input.js";
 import { parseNumber } from "./numbers.js";
 import { SWARM_URL_KEYS as KEYS, throttledUrl } from "./url.js";
@@ -30,12 +34,15 @@ const field = (/** @type {string} */ name) => {
   if (!(element instanceof HTMLInputElement || element instanceof HTMLSelectElement)) throw new Error(`no field ${name}`);
   return element;
 };
-const canvases = {
-  sphere: $("#swarm-sphere", HTMLCanvasElement),
+/** The sweep's points so far, drawn by the module. */
+const sweepPoints = () => /** @type {const} */ ([new Float64Array(run.sweep.couplings), new Float64Array(run.sweep.orders), run.state.coupling]);
+const figures = new Figures({
+  hopf: $("#swarm-hopf", HTMLCanvasElement),
   objects: $("#swarm-objects", HTMLCanvasElement),
   plots: $("#swarm-plots", HTMLCanvasElement),
   sweep: $("#swarm-sweep", HTMLCanvasElement),
-};
+}, { ...page("swarm"), painters: { sweep: (ctx, frame) => SwarmDemo.drawSweep(ctx, frame, ...sweepPoints()) } });
+const canvases = figures.canvases;
 const ui = {
   play: $("#play", HTMLButtonElement),
   readout: $("#readout", HTMLOutputElement),
@@ -54,9 +61,7 @@ const run = {
   demo: /** @type {SwarmDemo | null} */ (null),
   state: /** @type {SwarmState} */ (PRESETS.synchronise),
   playing: false,
-  view: [0, 0],
   sweep: { couplings: /** @type {number[]} */ ([]), orders: /** @type {number[]} */ ([]), timer: 0 },
-  sizes: /** @type {Record<string, { width: number, height: number }>} */ ({}),
 };
 
 // ---- State: form, URL -----------------------------------------------------------------------
@@ -134,9 +139,9 @@ function rebuild(/** @type {SwarmState} */ state) {
   for (const marked of form.querySelectorAll("[aria-invalid=true]")) marked.setAttribute("aria-invalid", "false");
   run.demo?.free();
   run.demo = demo;
+  figures.show(demo);
   run.state = state;
-  const preset = Object.entries(PRESETS).find(([, p]) => JSON.stringify(p) === JSON.stringify(state));
-  field("preset").value = preset ? preset[0] : "custom";
+  field("preset").value = presetName(PRESETS, state);
   ui.note.textContent = demo.isKli
     ? "One pinned leader and one follower: the follower obeys q′ = (K/2)(r − (q·r) q), the KLI flow at the clock τ = Kt/2."
     : "";
@@ -168,50 +173,22 @@ function requestDraw() {
   });
 }
 
-/** @typedef {keyof typeof canvases} ViewName */
-
-/**
- * Draws one view onto `ctx` at `ratio`: the page's canvases, or a PNG being saved.
- * @param {ViewName} name
- * @param {CanvasRenderingContext2D} ctx
- * @param {{ width: number, height: number }} size
- * @param {number} ratio
- */
-function paint(name, ctx, { width, height }, ratio) {
-  const demo = run.demo;
-  if (!demo) return;
-  if (name === "sphere") demo.drawSphere(ctx, width, height, ratio, run.view[0], run.view[1]);
-  if (name === "objects") demo.drawObjects(ctx, width, height, ratio);
-  if (name === "plots") demo.drawPlots(ctx, width, height, ratio);
-  if (name === "sweep") {
-    SwarmDemo.drawSweep(ctx, width, height, ratio, new Float64Array(run.sweep.couplings), new Float64Array(run.sweep.orders), run.state.coupling);
-  }
-}
-
-/** Paints a view onto its own canvas, once laid out. */
-function paintView(/** @type {ViewName} */ name) {
-  const size = run.sizes[name];
-  const ctx = canvases[name].getContext("2d");
-  if (size && ctx) paint(name, ctx, size, devicePixelRatio || 1);
-}
-
 function draw() {
   const demo = run.demo;
   if (!demo) return;
-  paintView("sphere");
-  paintView("objects");
-  paintView("plots");
+  figures.render(demo.time);
   ui.readout.textContent = `t = ${demo.time.toFixed(2)}   R = ${demo.orderParameter.toFixed(3)}   λmax = ${demo.rotationOrder.toFixed(3)}` +
     (demo.isKli ? `   τ = Kt/2 = ${demo.kliTime.toFixed(2)}` : "");
   if (!run.playing) ui.status.textContent = ui.readout.textContent ?? "";
 }
 
 function drawSweep() {
-  paintView("sweep");
+  figures.invalidate(["sweep"]);
+  figures.render(run.demo?.time ?? 0);
 }
 
 /** The views' names in file names. */
-const FILE_NAMES = { sphere: "hopf-sphere", objects: "objects", plots: "order-plots", sweep: "coupling-sweep" };
+const FILE_NAMES = { hopf: "hopf", objects: "objects", plots: "order-plots", sweep: "coupling-sweep" };
 
 /** Saves a view as PNG or SVG, or the swarm as CSV or JSON, as it stands now. */
 function save(/** @type {string} */ what, /** @type {string} */ format) {
@@ -219,18 +196,12 @@ function save(/** @type {string} */ what, /** @type {string} */ format) {
   if (!demo) throw new Error("there is no swarm to save");
   const tag = timeTag(demo.time);
   if (what === "swarm") {
-    return saveAs(`kli-swarm-${demo.count}-oscillators-${tag}`, format, { csv: () => demo.swarmCsv(), json: () => demo.swarmJson() });
+    return saveAs(`kli-swarm-${demo.count}-oscillators-${tag}`, format, { csv: () => demo.export("swarm", "csv"), json: () => demo.export("swarm", "json") });
   }
-  const view = /** @type {ViewName} */ (what);
-  const size = run.sizes[view];
-  if (!size) throw new Error(`the ${what} view is not laid out`);
+  const view = /** @type {keyof typeof FILE_NAMES} */ (what);
+  if (!Object.hasOwn(FILE_NAMES, view)) throw new Error(`there is no ${what} view`);
   const name = `kli-swarm-${FILE_NAMES[view]}${view === "sweep" ? "" : `-${tag}`}`;
-  return saveAs(name, format, {
-    svg: () => view === "sweep"
-      ? SwarmDemo.sweepSvg(size.width, size.height, new Float64Array(run.sweep.couplings), new Float64Array(run.sweep.orders), run.state.coupling)
-      : demo.toSvg(view, size.width, size.height, run.view[0], run.view[1]),
-    png: () => png(size, (ctx, ratio) => paint(view, ctx, size, ratio)),
-  });
+  return figures.save(view, format, name, demo.time, view === "sweep" ? (frame) => SwarmDemo.sweepSvg(frame, ...sweepPoints()) : undefined);
 }
 
 /** One sweep point per task, so the page stays responsive. */
@@ -299,12 +270,11 @@ function wire() {
   $("#sweep", HTMLButtonElement).addEventListener("click", sweep);
   wireSaving($("#save", HTMLElement), save, $("#save-status", HTMLElement));
   const turn = (/** @type {number} */ azimuth, /** @type {number} */ elevation) => {
-    run.view[0] += azimuth;
-    run.view[1] = Math.min(Math.max(run.view[1] + elevation, -1.55), 1.55);
+    figures.turn(azimuth, elevation);
     if (!run.playing) draw();
   };
-  wireDragging(canvases.sphere, turn);
-  wireKeyboard(canvases.sphere, {
+  wireDragging(canvases.hopf, turn);
+  wireKeyboard(canvases.hopf, {
     togglePlay: () => (run.playing ? pause() : play()),
     step: () => {},
     toStart: () => rebuild(run.state),
@@ -317,17 +287,14 @@ function wire() {
 async function start() {
   if (!(await loadModule(init, ui.load))) return;
   if (embed) document.body.classList.add("embed");
-  run.view = Array.from(defaultSphereView());
+  figures.camera = new Camera(defaultCamera());
   wire();
   const state = stateFromUrl();
   fillForm(state);
   if (!rebuild(state)) rebuild(PRESETS.synchronise);
   ui.load.textContent = "";
   ui.load.hidden = true;
-  observeCanvases(canvases, run.sizes, () => {
-    draw();
-    drawSweep();
-  });
+  figures.observe(draw);
   if (!matchMedia("(prefers-reduced-motion: reduce)").matches) play();
 }
 

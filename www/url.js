@@ -33,7 +33,7 @@ export const SWARM_URL_KEYS = Object.freeze({
 
 /** The keyframes page's URL keys (`keyframes.html?keys=1,0,0,0;0.8,0.6,0,0;…&times=0,1,2&s=1`):
  *  keys as quaternions separated by ";", their times, and the chain's smoothness. */
-export const SPLINE_URL_KEYS = Object.freeze({ keys: "keys", times: "times", smoothness: "s", embed: "embed" });
+export const KEYFRAMES_URL_KEYS = Object.freeze({ keys: "keys", times: "times", smoothness: "s", embed: "embed" });
 
 export const INTEGRATORS = /** @type {const} */ (["rk4", "euler", "geodesic"]);
 

@@ -80,7 +80,7 @@ test("<kli-figure>: three figures in running text, one module shared, sized by C
     assert.equal(object.label, "The aircraft at t = 1.8 under KLI (left) and SLERP (right)");
     // One module for the two KLI figures, one for the keyframes, none for the swarm.
     const wasm = await page.evaluate(() => performance.getEntriesByType("resource").map((e) => e.name.split("/").pop()).filter((n) => n.endsWith(".wasm")).sort());
-    assert.deepEqual(wasm, ["kli_demo_bg.wasm", "spline_demo_bg.wasm"]);
+    assert.deepEqual(wasm, ["keyframes_demo_bg.wasm", "kli_demo_bg.wasm"]);
     // Live attributes: the long way round redraws the first figure; a new view, another picture.
     await page.click("#long-way");
     await page.waitForFunction((hash) => {

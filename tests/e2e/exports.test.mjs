@@ -42,13 +42,13 @@ test("KLI page: SVG of the Hopf sphere is vector and holds the curve; PNG at 2×
   const { page, context, problems } = await open("?t=1.8", { deviceScaleFactor: 1 });
   try {
     // SVG: parses, no bitmap inside, the KLI curve as a polyline of many points inside the figure.
-    const svg = await saved(page, "sphere", "svg");
-    assert.equal(svg.name, "kli-hopf-sphere-t1.80.svg");
+    const svg = await saved(page, "hopf", "svg");
+    assert.equal(svg.name, "kli-hopf-t1.80.svg");
     const doc = await parseSvg(page, svg.bytes.toString("utf8"));
     assert.equal(doc.error, null);
     assert.equal(doc.root, "svg");
     assert.equal(doc.images, 0);
-    const box = await page.locator("#sphere-canvas").boundingBox();
+    const box = await page.locator("#hopf-canvas").boundingBox();
     const kli = doc.polylines.filter((p) => p.stroke === "#c2410c");
     const points = kli.flatMap((p) => p.points);
     assert.ok(points.length > 200, `${points.length} points of the KLI curve`);
@@ -60,8 +60,8 @@ test("KLI page: SVG of the Hopf sphere is vector and holds the curve; PNG at 2×
     const plots = await parseSvg(page, (await saved(page, "plots", "svg")).bytes.toString("utf8"));
     assert.ok(plots.polylines.length >= 4 && plots.error === null);
     // PNG: twice the CSS size.
-    const png = await saved(page, "sphere", "png");
-    assert.equal(png.name, "kli-hopf-sphere-t1.80.png");
+    const png = await saved(page, "hopf", "png");
+    assert.equal(png.name, "kli-hopf-t1.80.png");
     assert.deepEqual(pngSize(png.bytes), { width: Math.round(box.width * 2), height: Math.round(box.height * 2) });
     const film = await saved(page, "filmstrip", "png");
     assert.equal(film.name, "kli-filmstrip.png");
@@ -107,8 +107,8 @@ test("swarm page: every view as SVG, the sweep too; the swarm's CSV and JSON hol
   const { page, context, problems } = await open("swarm.html?n=40&seed=3");
   try {
     await page.click("#play");
-    const sphere = await saved(page, "sphere", "svg");
-    assert.match(sphere.name, /^kli-swarm-hopf-sphere-t\d+\.\d\d\.svg$/);
+    const sphere = await saved(page, "hopf", "svg");
+    assert.match(sphere.name, /^kli-swarm-hopf-t\d+\.\d\d\.svg$/);
     const svg = sphere.bytes.toString("utf8");
     const doc = await parseSvg(page, svg);
     assert.equal(doc.error, null);
@@ -142,7 +142,7 @@ test("swarm page: every view as SVG, the sweep too; the swarm's CSV and JSON hol
 test("keyframes page: the views as SVG; the curves' CSV rows are kliSpline's, squadSpline's and slerpSpline's values", async () => {
   const { page, context, problems } = await open("keyframes.html");
   try {
-    for (const view of ["objects", "sphere", "plots"]) {
+    for (const view of ["objects", "hopf", "plots"]) {
       const file = await saved(page, view, "svg");
       assert.match(file.name, new RegExp(`^kli-keyframes-.*-\\d+-keys-t\\d+\\.\\d\\d\\.svg$`));
       const doc = await parseSvg(page, file.bytes.toString("utf8"));
@@ -155,7 +155,7 @@ test("keyframes page: the views as SVG; the curves' CSV rows are kliSpline's, sq
     const rows = lines.slice(1).map((line) => line.split(","));
     const picks = [0, 7, 300, rows.length / 3 - 1].flatMap((k) => [k, k + rows.length / 3, k + (2 * rows.length) / 3]);
     const expected = await page.evaluate(async (asked) => {
-      const { kliSpline, squadSpline, slerpSpline } = await import("./pkg/spline_demo.js");
+      const { kliSpline, squadSpline, slerpSpline } = await import("./pkg/keyframes_demo.js");
       const field = (name) => /** @type {HTMLInputElement} */ (document.querySelector(`input[name=${name}]`)).value;
       const keys = field("keys").split(";").map((key) => key.split(",").map(Number));
       // Empty times: the keys at 0, 1, 2, … (the default).

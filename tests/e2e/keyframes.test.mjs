@@ -14,7 +14,7 @@ async function figures(page) {
 
 test("the keyframes page draws three curves through the keys and measures them", async () => {
   const { page, context, problems } = await open("keyframes.html");
-  for (const selector of ["#spline-objects", "#spline-sphere", "#spline-plots"]) {
+  for (const selector of ["#keyframes-objects", "#keyframes-hopf", "#keyframes-plots"]) {
     assert.ok((await canvasStats(page, selector)).drawn > 3000, selector);
   }
   const f = await figures(page);
@@ -67,7 +67,7 @@ test("keyframes: WCAG 2.2 AA, embedded, and at 390 px", async () => {
   assert.deepEqual(await axeViolations(page), []);
   await context.close();
   const embed = await open("keyframes.html?embed=1", { viewport: { width: 640, height: 400 } });
-  assert.equal(await embed.page.isVisible("#spline-inputs"), false);
+  assert.equal(await embed.page.isVisible("#keyframes-inputs"), false);
   assert.deepEqual(await axeViolations(embed.page), []);
   await embed.context.close();
   const narrow = await open("keyframes.html", { viewport: { width: 390, height: 844 } });
@@ -100,13 +100,13 @@ test("a key edited as axis and angle, added, removed, and dragged on the sphere"
   for (let i = 0; i < 10; i++) if (!(await page.isDisabled("#remove-key"))) await page.click("#remove-key");
   assert.equal((await keys()).length, 3);
   // Drag the disc of a key in front: the key turns, its Hopf point follows the pointer.
-  await page.locator("#spline-sphere").scrollIntoViewIfNeeded();
-  const box = await page.locator("#spline-sphere").boundingBox();
+  await page.locator("#keyframes-hopf").scrollIntoViewIfNeeded();
+  const box = await page.locator("#keyframes-hopf").boundingBox();
   const points = await page.evaluate(async ([flat, width, height]) => {
-    const { SplineDemo, defaultSphereView } = await import("./pkg/spline_demo.js");
-    const demo = new SplineDemo(new Float64Array(flat), new Float64Array(0), 1);
-    const [azimuth, elevation] = defaultSphereView();
-    const points = Array.from(demo.keyPoints(width, height, azimuth, elevation));
+    const { KeyframesDemo, defaultCamera } = await import("./pkg/keyframes_demo.js");
+    const demo = new KeyframesDemo(new Float64Array(flat), new Float64Array(0), 1);
+    const [azimuth, elevation] = defaultCamera();
+    const points = Array.from(demo.keyPoints({ width, height, azimuth, elevation }));
     demo.free();
     return points;
   }, [(await keys()).flat(), box.width, box.height]);

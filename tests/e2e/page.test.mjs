@@ -10,7 +10,7 @@ setup();
 const KLI_ORANGE = [194, 65, 12]; // crates/kli-demo/src/palette.rs
 const WING_RED = [224, 49, 49];
 const WING_GREEN = [47, 158, 68];
-const readout = (page) => page.textContent("#time-readout");
+const readout = (page) => page.textContent("#readout");
 /** The time the page shows, once the frame that a key or click asked for has been drawn. */
 const currentTime = async (page) => {
   await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
@@ -22,7 +22,7 @@ test("loads cleanly and draws every canvas with the paper's example", async () =
   await page.waitForTimeout(400);
   await page.screenshot({ path: join(artifacts, "page.png"), fullPage: true });
   const object = await canvasStats(page, "#object-canvas", { red: WING_RED, green: WING_GREEN });
-  const sphere = await canvasStats(page, "#sphere-canvas", { orange: KLI_ORANGE });
+  const sphere = await canvasStats(page, "#hopf-canvas", { orange: KLI_ORANGE });
   const film = await canvasStats(page, "#filmstrip-canvas", { red: WING_RED });
   const plots = await canvasStats(page, "#plots-canvas", { orange: KLI_ORANGE });
   assert.ok(object.red > 500 && object.green > 500, `object: ${JSON.stringify(object)}`);
@@ -111,10 +111,10 @@ test("the animation advances, then stops at T", async () => {
 
 test("changing r changes the curve and the URL", async () => {
   const { page, context, problems } = await open("?t=1");
-  const before = await canvasStats(page, "#sphere-canvas", { orange: KLI_ORANGE });
+  const before = await canvasStats(page, "#hopf-canvas", { orange: KLI_ORANGE });
   for (const [axis, value] of [["w", "0.2"], ["x", "0.9"], ["y", "-0.3"], ["z", "0.2"]]) await page.fill(`[name=r-${axis}]`, value);
   await page.waitForTimeout(100);
-  const after = await canvasStats(page, "#sphere-canvas", { orange: KLI_ORANGE });
+  const after = await canvasStats(page, "#hopf-canvas", { orange: KLI_ORANGE });
   assert.notEqual(before.hash, after.hash);
   // URL writes are throttled (at most one per 400 ms): wait for the last one.
   await page.waitForURL(/r=0\.2%2C0\.9%2C-0\.3%2C0\.2/, { timeout: 2000 });
@@ -166,7 +166,7 @@ test("every bad input shows its message and the page keeps working", async () =>
     assert.ok((await page.textContent(output)).startsWith(message), `${name} = ${JSON.stringify(text)}: ${await page.textContent(output)}`);
     // The last valid state stays: the paper's T, and the canvases still drawn.
     assert.match(await readout(page), /T = 11\.66$/);
-    assert.ok((await canvasStats(page, "#sphere-canvas")).drawn > 20000);
+    assert.ok((await canvasStats(page, "#hopf-canvas")).drawn > 20000);
     await page.fill(`[name=${name}]`, original);
     await page.waitForTimeout(50);
     assert.equal(await page.textContent(output), "", `${name}: message cleared`);
@@ -214,25 +214,25 @@ test("keyboard: space plays and pauses, End jumps to T, Home restarts", async ()
   await page.locator("body").press("Home");
   assert.equal(await currentTime(page), 0);
   // Arrow keys on the focused sphere turn it.
-  const before = await canvasStats(page, "#sphere-canvas");
-  await page.focus("#sphere-canvas");
+  const before = await canvasStats(page, "#hopf-canvas");
+  await page.focus("#hopf-canvas");
   await page.keyboard.press("ArrowLeft");
   await page.waitForTimeout(50);
-  assert.notEqual((await canvasStats(page, "#sphere-canvas")).hash, before.hash);
+  assert.notEqual((await canvasStats(page, "#hopf-canvas")).hash, before.hash);
   assert.deepEqual(problems, []);
   await context.close();
 });
 
 test("dragging turns the sphere", async () => {
   const { page, context } = await open("?t=2");
-  const box = await page.locator("#sphere-canvas").boundingBox();
-  const before = await canvasStats(page, "#sphere-canvas");
+  const box = await page.locator("#hopf-canvas").boundingBox();
+  const before = await canvasStats(page, "#hopf-canvas");
   await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
   await page.mouse.down();
   await page.mouse.move(box.x + box.width / 2 + 60, box.y + box.height / 2 + 20, { steps: 4 });
   await page.mouse.up();
   await page.waitForTimeout(50);
-  assert.notEqual((await canvasStats(page, "#sphere-canvas")).hash, before.hash);
+  assert.notEqual((await canvasStats(page, "#hopf-canvas")).hash, before.hash);
   await context.close();
 });
 
@@ -240,7 +240,7 @@ test("embed=1 is compact; reduced motion does not autoplay; high-DPI is crisp", 
   const embed = await open("?embed=1", { viewport: { width: 640, height: 360 } });
   assert.equal(await embed.page.isVisible("#inputs"), false);
   assert.equal(await embed.page.isVisible("#plots-canvas"), false);
-  assert.equal(await embed.page.isVisible("#sphere-canvas"), true);
+  assert.equal(await embed.page.isVisible("#hopf-canvas"), true);
   await embed.page.waitForTimeout(200);
   await embed.page.screenshot({ path: join(artifacts, "embed.png") });
   assert.deepEqual(embed.problems, []);
@@ -253,11 +253,11 @@ test("embed=1 is compact; reduced motion does not autoplay; high-DPI is crisp", 
   await calm.context.close();
 
   const sharp = await open("?t=1", { deviceScaleFactor: 2 });
-  const stats = await canvasStats(sharp.page, "#sphere-canvas");
+  const stats = await canvasStats(sharp.page, "#hopf-canvas");
   assert.ok(Math.abs(stats.width - 2 * stats.clientWidth) <= 2, `${stats.width} for ${stats.clientWidth} CSS px`);
   await sharp.page.setViewportSize({ width: 700, height: 900 });
   await sharp.page.waitForTimeout(200);
-  const narrow = await canvasStats(sharp.page, "#sphere-canvas");
+  const narrow = await canvasStats(sharp.page, "#hopf-canvas");
   assert.ok(narrow.width !== stats.width && narrow.drawn > 10000, "redrawn at the new size");
   await sharp.page.screenshot({ path: join(artifacts, "narrow.png"), fullPage: true });
   assert.deepEqual(sharp.problems, []);
@@ -273,7 +273,7 @@ test("works offline once loaded", async () => {
   await page.reload();
   await page.waitForFunction(() => document.querySelector("#load-status").hidden);
   assert.match(await readout(page), /T = 11\.66$/);
-  assert.ok((await canvasStats(page, "#sphere-canvas")).drawn > 20000);
+  assert.ok((await canvasStats(page, "#hopf-canvas")).drawn > 20000);
   await context.close();
 });
 
@@ -470,7 +470,7 @@ test("WCAG 2.2 AA: axe finds nothing on the page, with errors showing, and embed
   // Empty error outputs are rendered (in the accessibility tree), so that new text is announced.
   assert.equal(await page.$eval("#r-error", (o) => getComputedStyle(o).display !== "none"), true);
   // The sphere says what it does with keys: not a still picture.
-  assert.notEqual(await page.getAttribute("#sphere-canvas", "role"), "img");
+  assert.notEqual(await page.getAttribute("#hopf-canvas", "role"), "img");
   // The focus ring stands out from the white controls' background by at least 3:1 (WCAG 1.4.11).
   await page.focus("#play");
   const ring = await page.$eval("#play", (b) => getComputedStyle(b).outlineColor);

@@ -21,7 +21,7 @@ test("the swarm page draws, plays, and identical oscillators synchronise", async
   const later = await readout(page);
   // λmax ≥ R² (Q ≥ m mᵀ): both near 1 (the readout rounds to 3 decimals).
   assert.ok(later.t > start.t && later.R > 0.999 && later.lambda >= 0.999, JSON.stringify({ start, later }));
-  const sphere = await canvasStats(page, "#swarm-sphere", { blue: [24, 100, 171] });
+  const sphere = await canvasStats(page, "#swarm-hopf", { blue: [24, 100, 171] });
   assert.ok(sphere.drawn > 20000 && sphere.blue > 5, JSON.stringify(sphere));
   assert.ok((await canvasStats(page, "#swarm-objects")).drawn > 3000);
   assert.ok((await canvasStats(page, "#swarm-plots")).drawn > 3000);
@@ -90,7 +90,7 @@ test("WCAG 2.2 AA, embedded, and at 390 px", async () => {
   await context.close();
   const embed = await open("swarm.html?embed=1", { viewport: { width: 640, height: 400 } });
   assert.equal(await embed.page.isVisible("#swarm-inputs"), false);
-  assert.equal(await embed.page.isVisible("#swarm-sphere"), true);
+  assert.equal(await embed.page.isVisible("#swarm-hopf"), true);
   assert.deepEqual(await axeViolations(embed.page), []);
   await embed.context.close();
   const narrow = await open("swarm.html", { viewport: { width: 390, height: 844 } });

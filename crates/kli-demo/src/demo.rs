@@ -7,15 +7,15 @@ use kli_wasm::error::{JsResult, throw};
 use kli_wasm::options::{KliOptionsObject, read_options};
 use kli_wasm::read::{Order, QuaternionLike, quaternion};
 use wasm_bindgen::prelude::*;
-use web_sys::CanvasRenderingContext2d;
 
 use crate::aircraft::{Face, aircraft};
-use crate::camera::{Camera, Viewport};
-use crate::format::{fixed, joined, json_list, number};
+use crate::camera::Viewport;
+use crate::figure::{Figure, Frame, Layer, finite};
+use crate::format::{Json, csv_table, fixed, number};
 use crate::object_view::{draw_object, object_camera};
-use crate::palette::{BACKGROUND, INK, KLI, MUTED, SLERP};
+use crate::palette::{INK, KLI, MUTED, SLERP};
 use crate::paper::{self, PAPER_P, PAPER_R};
-use crate::pen::{Pen, size, svg_document, unknown_view};
+use crate::pen::Pen;
 use crate::plots::{draw_plot_cursors, draw_plots};
 use crate::scene::Scene;
 use crate::sphere_view::{draw_sphere, draw_sphere_cursor};
@@ -87,7 +87,7 @@ impl Demo {
     /// The integrated q at t (between samples by normalised linear interpolation).
     #[wasm_bindgen(js_name = integratedAt)]
     pub fn integrated_at(&self, t: f64) -> Vec<f64> {
-        self.order.write(self.scene.integrated_at(finite(t))).to_vec()
+        self.order.write(self.scene.integrated_at(finite(t).max(0.0))).to_vec()
     }
 
     /// The exact q(t) of the closed form, as `KliPath.exactAt`.
@@ -99,109 +99,7 @@ impl Demo {
     /// SLERP on the same clock, s = t / T.
     #[wasm_bindgen(js_name = slerpAt)]
     pub fn slerp_at(&self, t: f64) -> Vec<f64> {
-        self.order.write(self.scene.slerp_at(finite(t))).to_vec()
-    }
-
-    /// The rotating object at t: KLI, and SLERP at s = t/T beside it (Fig. 2, live).
-    #[wasm_bindgen(js_name = drawObject)]
-    pub fn draw_object(
-        &self,
-        ctx: &CanvasRenderingContext2d,
-        width: f64,
-        height: f64,
-        pixel_ratio: f64,
-        t: f64,
-    ) {
-        let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
-        self.paint_object(&pen, width, height, finite(t));
-    }
-
-    /// The object at each of Table 1's moments, in a row (Fig. 2), labelled with the time; on
-    /// a narrow canvas the labels drop "t =" and then shrink, so that they never overlap.
-    #[wasm_bindgen(js_name = drawFilmstrip)]
-    pub fn draw_filmstrip(
-        &self,
-        ctx: &CanvasRenderingContext2d,
-        width: f64,
-        height: f64,
-        pixel_ratio: f64,
-    ) {
-        self.paint_filmstrip(
-            &Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND),
-            width,
-            height,
-        );
-    }
-
-    /// The Hopf curves on S², seen from (azimuth, elevation) in radians (Fig. 1), without the
-    /// current time: draw this when the scene or the view changes, then `drawSphereTime` over
-    /// (a copy of) it each frame.
-    #[wasm_bindgen(js_name = drawSphere)]
-    pub fn draw_sphere(
-        &self,
-        ctx: &CanvasRenderingContext2d,
-        width: f64,
-        height: f64,
-        pixel_ratio: f64,
-        azimuth: f64,
-        elevation: f64,
-    ) {
-        let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
-        draw_sphere(
-            &pen,
-            &sphere_viewport(width, height),
-            &Camera::orbit(azimuth, elevation),
-            &self.scene,
-        );
-    }
-
-    /// The KLI and SLERP points at t over a drawing of `drawSphere` with the same view.
-    #[wasm_bindgen(js_name = drawSphereTime)]
-    #[allow(clippy::too_many_arguments)]
-    pub fn draw_sphere_time(
-        &self,
-        ctx: &CanvasRenderingContext2d,
-        width: f64,
-        height: f64,
-        pixel_ratio: f64,
-        t: f64,
-        azimuth: f64,
-        elevation: f64,
-    ) {
-        let pen = Pen::over(ctx, pixel_ratio);
-        draw_sphere_cursor(
-            &pen,
-            &sphere_viewport(width, height),
-            &Camera::orbit(azimuth, elevation),
-            &self.scene,
-            finite(t),
-        );
-    }
-
-    /// The distance, time-warp and |q|-drift plots, without the current time (see `drawPlotsTime`).
-    #[wasm_bindgen(js_name = drawPlots)]
-    pub fn draw_plots(
-        &self,
-        ctx: &CanvasRenderingContext2d,
-        width: f64,
-        height: f64,
-        pixel_ratio: f64,
-    ) {
-        let pen = Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND);
-        draw_plots(&pen, width, height, &self.scene);
-    }
-
-    /// The current time t as a line on each plot, over a drawing of `drawPlots`.
-    #[wasm_bindgen(js_name = drawPlotsTime)]
-    pub fn draw_plots_time(
-        &self,
-        ctx: &CanvasRenderingContext2d,
-        width: f64,
-        height: f64,
-        pixel_ratio: f64,
-        t: f64,
-    ) {
-        draw_plot_cursors(&Pen::over(ctx, pixel_ratio), width, height, &self.scene, finite(t));
+        self.order.write(self.scene.slerp_at(finite(t).max(0.0))).to_vec()
     }
 
     /// Whether this run is the paper's example (`p = k`, `r = ½(1 + i + j + k)`), whose Table 1
@@ -253,92 +151,80 @@ impl Demo {
             .flat_map(|q| [q.length(), (r - q).length()])
             .collect()
     }
+}
 
-    /// One figure as an SVG document, vector paths and text as the page draws it: `view` is
-    /// "object", "sphere", "filmstrip" or "plots", `width` × `height` CSS pixels, at time `t`,
-    /// the sphere seen from (azimuth, elevation) in radians.
-    #[wasm_bindgen(js_name = toSvg)]
-    pub fn to_svg(
-        &self,
-        view: &str,
-        width: f64,
-        height: f64,
-        t: f64,
-        azimuth: f64,
-        elevation: f64,
-    ) -> JsResult<String> {
-        let (width, height, t) = (size(width), size(height), finite(t));
-        let view_from = (azimuth, elevation);
-        let (title, paint): (&str, &dyn Fn(&Pen)) = match view {
-            "object" => ("The object under KLI and under SLERP", &|pen| {
-                self.paint_object(pen, width, height, t)
-            }),
-            "sphere" => ("The Hopf curves of KLI and SLERP on S²", &|pen| {
-                self.paint_sphere(pen, width, height, t, view_from)
-            }),
-            "filmstrip" => ("The object at the moments of Table 1", &|pen| {
-                self.paint_filmstrip(pen, width, height)
-            }),
-            "plots" => {
-                ("Distance to the target, the SLERP parameter s(t), the drift of |q|", &|pen| {
-                    draw_plots(pen, width, height, &self.scene);
-                    draw_plot_cursors(pen, width, height, &self.scene, t);
-                })
+crate::figure_class!(Demo);
+
+/// The KLI page's views: Fig. 2 live (the object), Fig. 1 (the Hopf curves), the filmstrip of
+/// Fig. 2, and the plots; its data, the path.
+impl Figure for Demo {
+    const VIEWS: &'static [&'static str] = &["object", "hopf", "filmstrip", "plots"];
+    const TITLES: &'static [&'static str] = &[
+        "The object under KLI and under SLERP",
+        "The Hopf curves of KLI and SLERP on S²",
+        "The object at the moments of Table 1",
+        "Distance to the target, KLI's SLERP parameter σ(t), the drift of |q|",
+    ];
+    const EXPORT: &'static str = "path";
+
+    fn paint(&self, view: usize, layer: Layer, pen: &Pen, frame: &Frame) {
+        let (width, height, t) = (frame.width, frame.height, frame.t.max(0.0));
+        match view {
+            0 => self.paint_object(pen, width, height, t),
+            1 => {
+                let viewport = frame.sphere_viewport();
+                if layer.still() {
+                    draw_sphere(pen, &viewport, &frame.camera, &self.scene);
+                }
+                if layer != Layer::Still {
+                    draw_sphere_cursor(pen, &viewport, &frame.camera, &self.scene, t);
+                }
             }
-            other => return Err(throw(unknown_view(other, &VIEWS))),
-        };
-        Ok(svg_document(width, height, title, paint))
-    }
-
-    /// The path as CSV, a row a sample: `t`, the integrated quaternion `w, x, y, z`, the SLERP
-    /// parameter `s(t)` it sits at, the distance `‖target − q‖`, and its Hopf point.
-    #[wasm_bindgen(js_name = pathCsv)]
-    pub fn path_csv(&self) -> String {
-        let mut csv = String::from("t,w,x,y,z,slerpParameter,distance,hopfX,hopfY,hopfZ\n");
-        for row in self.rows() {
-            csv.push_str(&joined(&row, ","));
-            csv.push('\n');
+            2 => {
+                if layer.still() {
+                    self.paint_filmstrip(pen, width, height)
+                }
+            }
+            _ => {
+                if layer.still() {
+                    draw_plots(pen, width, height, &self.scene);
+                }
+                if layer != Layer::Still {
+                    draw_plot_cursors(pen, width, height, &self.scene, t);
+                }
+            }
         }
-        csv
     }
 
-    /// The path as JSON: the run (`p`, `target`, `finalTime`, `steps`) and its samples, each
-    /// `{ t, quaternion: [w, x, y, z], slerpParameter, distance, hopf: [x, y, z] }`.
-    #[wasm_bindgen(js_name = pathJson)]
-    pub fn path_json(&self) -> String {
-        let list = json_list;
+    /// The path, a row a sample: `t`, the integrated quaternion `w, x, y, z`, KLI's SLERP
+    /// parameter σ(t) it sits at, the distance `‖target − q‖`, and its Hopf point. JSON adds the
+    /// run (`p`, `target`, `finalTime`, `steps`).
+    fn export(&self, csv: bool) -> String {
+        const COLUMNS: [&str; 10] =
+            ["t", "w", "x", "y", "z", "slerpParameter", "distance", "hopfX", "hopfY", "hopfZ"];
+        let rows: Vec<[f64; 10]> = self.rows().collect();
+        if csv {
+            return csv_table(&COLUMNS, rows.iter().map(|r| &r[..]));
+        }
         let path = self.scene.path();
-        let samples: Vec<String> = self
-            .rows()
-            .map(|r| {
-                format!(
-                    "{{\"t\":{},\"quaternion\":{},\"slerpParameter\":{},\"distance\":{},\"hopf\":{}}}",
-                    number(r[0]),
-                    list(&r[1..5]),
-                    number(r[5]),
-                    number(r[6]),
-                    list(&r[7..10])
-                )
-            })
-            .collect();
-        format!(
-            "{{\"p\":{},\"target\":{},\"finalTime\":{},\"steps\":{},\"samples\":[\n{}\n]}}\n",
-            list(&to_wxyz(path.quaternions()[0])),
-            list(&to_wxyz(path.target())),
-            number(path.final_time()),
-            path.steps(),
-            samples.join(",\n")
-        )
-    }
-
-    /// The sphere view's default (azimuth, elevation) in radians (as `defaultSphereView()`).
-    #[wasm_bindgen(js_name = defaultSphereView)]
-    pub fn default_sphere_view() -> Vec<f64> {
-        crate::default_sphere_view()
+        let samples = rows.iter().map(|r| {
+            Json::object()
+                .number("t", r[0])
+                .list("quaternion", &r[1..5])
+                .number("slerpParameter", r[5])
+                .number("distance", r[6])
+                .list("hopf", &r[7..10])
+        });
+        Json::object()
+            .list("p", &to_wxyz(path.quaternions()[0]))
+            .list("target", &to_wxyz(path.target()))
+            .number("finalTime", path.final_time())
+            .number("steps", path.steps() as f64)
+            .objects("samples", samples)
+            .document()
     }
 }
 
-/// The views, drawn with any [`Pen`]: the canvas methods above and [`Demo::to_svg`] share them.
 impl Demo {
     /// The exported rows: t, w, x, y, z, s, distance, Hopf x, y, z (every number finite).
     fn rows(&self) -> impl Iterator<Item = [f64; 10]> + '_ {
@@ -374,13 +260,6 @@ impl Demo {
         }
     }
 
-    /// The sphere and the points at `t` (the canvas draws them as a still layer and a moving one).
-    fn paint_sphere(&self, pen: &Pen, width: f64, height: f64, t: f64, (az, el): (f64, f64)) {
-        let (viewport, camera) = (sphere_viewport(width, height), Camera::orbit(az, el));
-        draw_sphere(pen, &viewport, &camera, &self.scene);
-        draw_sphere_cursor(pen, &viewport, &camera, &self.scene, t);
-    }
-
     fn paint_filmstrip(&self, pen: &Pen, width: f64, height: f64) {
         let camera = object_camera();
         let moments = self.scene.moments();
@@ -410,10 +289,6 @@ impl Demo {
     }
 }
 
-fn sphere_viewport(width: f64, height: f64) -> Viewport {
-    Viewport::fitting(0.0, 0.0, width, height, 1.22)
-}
-
 #[wasm_bindgen(typescript_custom_section)]
 const TYPES: &'static str = r#"
 /** A row of the paper's printed Table 1, judged against the closed form. */
@@ -423,11 +298,3 @@ export interface PrintedRow {
   repeats?: number;
 }
 "#;
-
-/// The figures `toSvg` draws.
-const VIEWS: [&str; 4] = ["object", "sphere", "filmstrip", "plots"];
-
-/// Drawing never fails: a non-finite time is drawn as t = 0.
-fn finite(t: f64) -> f64 {
-    if t.is_finite() { t.max(0.0) } else { 0.0 }
-}

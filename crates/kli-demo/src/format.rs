@@ -26,7 +26,110 @@ pub fn joined(values: &[f64], separator: &str) -> String {
     text
 }
 
-/// A JSON list of numbers, `[1,0.5]`.
-pub fn json_list(values: &[f64]) -> String {
-    format!("[{}]", joined(values, ","))
+/// A CSV table: the header, then a line a row, each number as JavaScript writes it.
+pub fn csv_table<'a>(columns: &[&str], rows: impl Iterator<Item = &'a [f64]>) -> String {
+    let mut csv = columns.join(",");
+    csv.push('\n');
+    for row in rows {
+        csv.push_str(&joined(row, ","));
+        csv.push('\n');
+    }
+    csv
+}
+
+/// The one JSON writer of the exports: an object built field by field, numbers as JavaScript
+/// writes them (a non-finite one as `null`, which JSON has instead).
+pub struct Json {
+    text: String,
+}
+
+impl Json {
+    pub fn object() -> Json {
+        Json { text: String::from("{") }
+    }
+
+    fn key(mut self, key: &str) -> Json {
+        if self.text.len() > 1 {
+            self.text.push(',');
+        }
+        self.text.push('"');
+        self.text.push_str(key);
+        self.text.push_str("\":");
+        self
+    }
+
+    pub fn number(self, key: &str, x: f64) -> Json {
+        let mut json = self.key(key);
+        json.text.push_str(&json_number(x));
+        json
+    }
+
+    pub fn list(self, key: &str, values: &[f64]) -> Json {
+        self.raw(key, &json_list(values))
+    }
+
+    /// A list of lists of numbers.
+    pub fn lists<'a>(self, key: &str, lists: impl Iterator<Item = &'a [f64]>) -> Json {
+        let items: Vec<String> = lists.map(json_list).collect();
+        self.raw(key, &format!("[{}]", items.join(",")))
+    }
+
+    /// A field whose value is JSON text already (an object made with [`Json::end`]).
+    pub fn raw(self, key: &str, json: &str) -> Json {
+        let mut out = self.key(key);
+        out.text.push_str(json);
+        out
+    }
+
+    /// A string field (escaped as JSON requires).
+    pub fn string(self, key: &str, value: &str) -> Json {
+        let mut json = self.key(key);
+        json.text.push('"');
+        for c in value.chars() {
+            match c {
+                '"' => json.text.push_str("\\\""),
+                '\\' => json.text.push_str("\\\\"),
+                c if (c as u32) < 0x20 => json.text.push_str(&format!("\\u{:04x}", c as u32)),
+                c => json.text.push(c),
+            }
+        }
+        json.text.push('"');
+        json
+    }
+
+    /// A list of objects, one a line.
+    pub fn objects(self, key: &str, items: impl Iterator<Item = Json>) -> Json {
+        let mut json = self.key(key);
+        json.text.push_str("[\n");
+        for (i, item) in items.enumerate() {
+            if i > 0 {
+                json.text.push_str(",\n");
+            }
+            json.text.push_str(&item.end());
+        }
+        json.text.push_str("\n]");
+        json
+    }
+
+    /// The object's text.
+    pub fn end(mut self) -> String {
+        self.text.push('}');
+        self.text
+    }
+
+    /// The object as a file: its text and a newline.
+    pub fn document(self) -> String {
+        let mut text = self.end();
+        text.push('\n');
+        text
+    }
+}
+
+fn json_list(values: &[f64]) -> String {
+    let items: Vec<String> = values.iter().map(|&v| json_number(v)).collect();
+    format!("[{}]", items.join(","))
+}
+
+fn json_number(x: f64) -> String {
+    if x.is_finite() { number(x) } else { String::from("null") }
 }

@@ -9,10 +9,10 @@ use wasm_bindgen::prelude::*;
 use web_sys::CanvasRenderingContext2d;
 
 use crate::aircraft::{Face, aircraft};
-use crate::camera::{Camera, Viewport};
-use crate::format::{fixed, joined, json_list, number};
+use crate::figure::{Figure, Frame, Layer};
+use crate::format::{Json, csv_table, fixed};
 use crate::palette::BACKGROUND;
-use crate::pen::{Pen, size, svg_document, unknown_view};
+use crate::pen::{Pen, svg_document};
 use crate::swarm_plots::{History, draw_history, draw_sweep};
 use crate::swarm_view::{draw_swarm_objects, draw_swarm_sphere};
 
@@ -90,131 +90,20 @@ impl SwarmDemo {
         0.5 * self.options.coupling * self.swarm.time()
     }
 
-    /// The oscillators' Hopf points on S², seen from (azimuth, elevation) in radians.
-    #[wasm_bindgen(js_name = drawSphere)]
-    pub fn draw_sphere(
-        &self,
-        ctx: &CanvasRenderingContext2d,
-        width: f64,
-        height: f64,
-        pixel_ratio: f64,
-        azimuth: f64,
-        elevation: f64,
-    ) {
-        self.paint_sphere(
-            &Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND),
-            width,
-            height,
-            azimuth,
-            elevation,
-        );
-    }
-
-    /// The first oscillators as whole objects; in the KLI case, the leader and the follower.
-    #[wasm_bindgen(js_name = drawObjects)]
-    pub fn draw_objects(
-        &self,
-        ctx: &CanvasRenderingContext2d,
-        width: f64,
-        height: f64,
-        pixel_ratio: f64,
-    ) {
-        self.paint_objects(&Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND), width, height);
-    }
-
-    /// `R(t)`, `λ_max(t)` and the potential over the recent history.
-    #[wasm_bindgen(js_name = drawPlots)]
-    pub fn draw_plots(
-        &self,
-        ctx: &CanvasRenderingContext2d,
-        width: f64,
-        height: f64,
-        pixel_ratio: f64,
-    ) {
-        self.paint_plots(&Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND), width, height);
-    }
-
-    /// One figure as an SVG document (vector): `view` is "sphere" (seen from azimuth and
-    /// elevation, radians), "objects" or "plots", `width` × `height` CSS pixels.
-    #[wasm_bindgen(js_name = toSvg)]
-    pub fn to_svg(
-        &self,
-        view: &str,
-        width: f64,
-        height: f64,
-        azimuth: f64,
-        elevation: f64,
-    ) -> JsResult<String> {
-        let (width, height) = (size(width), size(height));
-        let (title, paint): (&str, &dyn Fn(&Pen)) = match view {
-            "sphere" => ("The swarm's Hopf points on S²", &|pen| {
-                self.paint_sphere(pen, width, height, azimuth, elevation)
-            }),
-            "objects" => {
-                ("The first oscillators as objects", &|pen| self.paint_objects(pen, width, height))
-            }
-            "plots" => ("R, λmax and the potential over time", &|pen| {
-                self.paint_plots(pen, width, height)
-            }),
-            other => return Err(throw(unknown_view(other, &["sphere", "objects", "plots"]))),
-        };
-        Ok(svg_document(width, height, title, paint))
-    }
-
-    /// The sweep as an SVG document (see `drawSweep`).
+    /// The sweep (the final `R` at each coupling, the current coupling marked) as an SVG
+    /// document (see `drawSweep`).
     #[wasm_bindgen(js_name = sweepSvg)]
     pub fn sweep_svg(
-        width: f64,
-        height: f64,
+        #[wasm_bindgen(unchecked_param_type = "Frame")] frame: &JsValue,
         couplings: &[f64],
         orders: &[f64],
         current: f64,
     ) -> String {
-        let (width, height) = (size(width), size(height));
+        let frame = Frame::read(frame);
         let title = "The order parameter R against the coupling K";
-        svg_document(width, height, title, &|pen| {
-            draw_sweep(pen, width, height, couplings, orders, current)
+        svg_document(frame.width, frame.height, title, &|pen| {
+            draw_sweep(pen, frame.width, frame.height, couplings, orders, current)
         })
-    }
-
-    /// The swarm now as CSV, a row an oscillator: `t`, its index, its quaternion `w, x, y, z`,
-    /// its Hopf point.
-    #[wasm_bindgen(js_name = swarmCsv)]
-    pub fn swarm_csv(&self) -> String {
-        let mut csv = String::from("t,oscillator,w,x,y,z,hopfX,hopfY,hopfZ\n");
-        let t = self.swarm.time();
-        for (i, (&q, h)) in
-            self.swarm.quaternions().iter().zip(self.swarm.hopf_points()).enumerate()
-        {
-            let [w, x, y, z] = to_wxyz(q);
-            csv.push_str(&joined(&[t, i as f64, w, x, y, z, h.x, h.y, h.z], ","));
-            csv.push('\n');
-        }
-        csv
-    }
-
-    /// The swarm now as JSON: `t`, `orderParameter`, `rotationOrder`, `potential`, and each
-    /// oscillator `{ quaternion: [w, x, y, z], hopf: [x, y, z] }`.
-    #[wasm_bindgen(js_name = swarmJson)]
-    pub fn swarm_json(&self) -> String {
-        let s = &self.swarm;
-        let oscillators: Vec<String> = s
-            .quaternions()
-            .iter()
-            .zip(s.hopf_points())
-            .map(|(&q, h)| {
-                let (q, h) = (json_list(&to_wxyz(q)), json_list(&h.to_array()));
-                format!("{{\"quaternion\":{q},\"hopf\":{h}}}")
-            })
-            .collect();
-        format!(
-            "{{\"t\":{},\"orderParameter\":{},\"rotationOrder\":{},\"potential\":{},\"oscillators\":[\n{}\n]}}\n",
-            number(s.time()),
-            number(s.order_parameter()),
-            number(s.rotation_order()),
-            number(s.potential()),
-            oscillators.join(",\n")
-        )
     }
 
     /// The order parameter a swarm with these options but coupling `coupling` reaches: `R`
@@ -240,37 +129,76 @@ impl SwarmDemo {
 
     /// The sweep so far: final `R` at each coupling, and the current coupling marked.
     #[wasm_bindgen(js_name = drawSweep)]
-    #[allow(clippy::too_many_arguments)]
     pub fn draw_sweep(
         ctx: &CanvasRenderingContext2d,
-        width: f64,
-        height: f64,
-        pixel_ratio: f64,
+        #[wasm_bindgen(unchecked_param_type = "Frame")] frame: &JsValue,
         couplings: &[f64],
         orders: &[f64],
         current: f64,
     ) {
-        draw_sweep(
-            &Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND),
-            width,
-            height,
-            couplings,
-            orders,
-            current,
-        );
+        let frame = Frame::read(frame);
+        let (width, height) = (frame.width, frame.height);
+        let pen = Pen::begin(ctx, width, height, frame.pixel_ratio, BACKGROUND);
+        draw_sweep(&pen, width, height, couplings, orders, current);
     }
 }
 
-/// The views, drawn with any [`Pen`]: the canvas methods and `toSvg` share them.
+crate::figure_class!(SwarmDemo);
+
+/// The swarm page's views: the oscillators' Hopf points, the first oscillators as objects, and
+/// the history of R, λmax and the potential; its data, the swarm now.
+impl Figure for SwarmDemo {
+    const VIEWS: &'static [&'static str] = &["hopf", "objects", "plots"];
+    const TITLES: &'static [&'static str] = &[
+        "The swarm's Hopf points on S²",
+        "The first oscillators as objects",
+        "R, λmax and the potential over time",
+    ];
+    const EXPORT: &'static str = "swarm";
+
+    fn paint(&self, view: usize, layer: Layer, pen: &Pen, frame: &Frame) {
+        if !layer.still() {
+            return;
+        }
+        let (width, height) = (frame.width, frame.height);
+        match view {
+            0 => self.paint_sphere(pen, frame),
+            1 => self.paint_objects(pen, width, height),
+            _ => draw_history(pen, width, height, &self.history),
+        }
+    }
+
+    /// CSV: a row an oscillator, `t`, its index, its quaternion `w, x, y, z`, its Hopf point.
+    /// JSON: `t`, `orderParameter`, `rotationOrder`, `potential`, and each oscillator
+    /// `{ quaternion: [w, x, y, z], hopf: [x, y, z] }`.
+    fn export(&self, csv: bool) -> String {
+        let s = &self.swarm;
+        let t = s.time();
+        let rows = s.quaternions().iter().zip(s.hopf_points()).enumerate().map(|(i, (&q, h))| {
+            let [w, x, y, z] = to_wxyz(q);
+            [t, i as f64, w, x, y, z, h.x, h.y, h.z]
+        });
+        if csv {
+            let columns = ["t", "oscillator", "w", "x", "y", "z", "hopfX", "hopfY", "hopfZ"];
+            let rows: Vec<[f64; 9]> = rows.collect();
+            return csv_table(&columns, rows.iter().map(|r| &r[..]));
+        }
+        let oscillators =
+            rows.map(|r| Json::object().list("quaternion", &r[2..6]).list("hopf", &r[6..9]));
+        Json::object()
+            .number("t", t)
+            .number("orderParameter", s.order_parameter())
+            .number("rotationOrder", s.rotation_order())
+            .number("potential", s.potential())
+            .objects("oscillators", oscillators)
+            .document()
+    }
+}
+
 impl SwarmDemo {
-    fn paint_sphere(&self, pen: &Pen, width: f64, height: f64, azimuth: f64, elevation: f64) {
-        let viewport = Viewport::fitting(0.0, 0.0, width, height, 1.22);
-        draw_swarm_sphere(
-            pen,
-            &viewport,
-            &Camera::orbit(azimuth, elevation),
-            &self.swarm.hopf_points(),
-        );
+    fn paint_sphere(&self, pen: &Pen, frame: &Frame) {
+        let viewport = frame.sphere_viewport();
+        draw_swarm_sphere(pen, &viewport, &frame.camera, &self.swarm.hopf_points());
         pen.text(
             &format!("t = {}", fixed(self.swarm.time(), 2)),
             (8.0, 12.0),
@@ -293,9 +221,5 @@ impl SwarmDemo {
                 .collect()
         };
         draw_swarm_objects(pen, width, height, &self.mesh, &objects);
-    }
-
-    fn paint_plots(&self, pen: &Pen, width: f64, height: f64) {
-        draw_history(pen, width, height, &self.history);
     }
 }

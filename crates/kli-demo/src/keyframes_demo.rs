@@ -1,4 +1,4 @@
-//! The `SplineDemo` class: the keyframes page's three curves through the same keys (the
+//! The `KeyframesDemo` class: the keyframes page's three curves through the same keys (the
 //! Kuramoto–Lohe chain, Squad, piecewise SLERP), their measured figures, and their views.
 
 use glam::{DQuat, DVec3};
@@ -9,14 +9,14 @@ use kli::quaternion::{from_wxyz, to_wxyz};
 use kli::spline::{ChainOptions, Curve, Keys, KliSpline, PiecewiseSlerp, Squad};
 use kli_wasm::error::{JsResult, throw};
 use wasm_bindgen::prelude::*;
-use web_sys::CanvasRenderingContext2d;
 
 use crate::aircraft::{Face, aircraft};
-use crate::camera::{Camera, Viewport};
-use crate::format::{joined, json_list, number};
+use crate::camera::Viewport;
+use crate::figure::{Figure, Frame, Layer, finite};
+use crate::format::{Json, joined, number};
 use crate::object_view::{draw_object, object_camera};
-use crate::palette::{BACKGROUND, INK, KLI, MUTED, SLERP};
-use crate::pen::{Pen, size, svg_document, unknown_view};
+use crate::palette::{INK, KLI, MUTED, SLERP};
+use crate::pen::Pen;
 use crate::plots::{Panel, trim};
 use crate::sphere_view::{Side, View, draw_globe, draw_grid_back, draw_grid_front, grid};
 
@@ -34,7 +34,7 @@ struct Series {
 
 /// The three curves through one set of keys.
 #[wasm_bindgen]
-pub struct SplineDemo {
+pub struct KeyframesDemo {
     keys: Keys,
     chain: KliSpline,
     squad: Squad,
@@ -80,15 +80,15 @@ fn figures(curve: &dyn Curve, keys: &Keys, s: &Series, dt: f64) -> [f64; 4] {
 }
 
 #[wasm_bindgen]
-impl SplineDemo {
+impl KeyframesDemo {
     /// The three curves through `keys` (4m numbers, scalar first) at `times` (m numbers, or
     /// empty for 0, 1, …), the chain with `smoothness`; errors as kliSpline's.
     #[wasm_bindgen(constructor)]
-    pub fn new(keys: &[f64], times: &[f64], smoothness: f64) -> JsResult<SplineDemo> {
+    pub fn new(keys: &[f64], times: &[f64], smoothness: f64) -> JsResult<KeyframesDemo> {
         Self::build(keys, times, smoothness).map_err(throw)
     }
 
-    fn build(flat: &[f64], times: &[f64], smoothness: f64) -> Result<SplineDemo, KliError> {
+    fn build(flat: &[f64], times: &[f64], smoothness: f64) -> Result<KeyframesDemo, KliError> {
         if flat.len() % 4 != 0 {
             return Err(KliError::invalid(
                 "keys",
@@ -110,7 +110,7 @@ impl SplineDemo {
         let series: Vec<Series> = curves.iter().map(|c| series(*c, &sample_times)).collect();
         let figures =
             curves.iter().zip(&series).flat_map(|(c, s)| figures(*c, &keys, s, dt)).collect();
-        Ok(SplineDemo {
+        Ok(KeyframesDemo {
             keys,
             chain,
             squad,
@@ -168,18 +168,15 @@ impl SplineDemo {
         Float64Array::from(&flat[..])
     }
 
-    /// Where each key's Hopf point is drawn by `drawSphere` with the same size and view: `3m`
-    /// numbers, `x`, `y` (CSS pixels) and 1 when in front, 0 when behind.
+    /// Where each key's Hopf point is drawn in the "hopf" view at `frame`: `3m` numbers, `x`,
+    /// `y` (CSS pixels) and 1 when in front, 0 when behind.
     #[wasm_bindgen(js_name = keyPoints)]
     pub fn key_points(
         &self,
-        width: f64,
-        height: f64,
-        azimuth: f64,
-        elevation: f64,
+        #[wasm_bindgen(unchecked_param_type = "Frame")] frame: &JsValue,
     ) -> Float64Array {
-        let viewport = sphere_viewport(width, height);
-        let camera = Camera::orbit(azimuth, elevation);
+        let frame = Frame::read(frame);
+        let (viewport, camera) = (frame.sphere_viewport(), frame.camera);
         let flat: Vec<f64> = self
             .keys
             .quaternions()
@@ -194,24 +191,20 @@ impl SplineDemo {
     }
 
     /// The keys (`4m` numbers) with key `index` turned so that its Hopf point lands where the
-    /// pointer is, at CSS pixel `(x, y)` of the sphere drawn with this size and view: the turn is
-    /// the shortest rotation taking the old point to the new (`h(R q) = R h(q)`). Empty when the
+    /// pointer is, at CSS pixel `(x, y)` of the "hopf" view drawn at `frame`: the turn is the
+    /// shortest rotation taking the old point to the new (`h(R q) = R h(q)`). Empty when the
     /// pointer is off the sphere.
     #[wasm_bindgen(js_name = keysWithKeyAt)]
-    #[allow(clippy::too_many_arguments)]
     pub fn keys_with_key_at(
         &self,
         index: usize,
-        width: f64,
-        height: f64,
-        azimuth: f64,
-        elevation: f64,
+        #[wasm_bindgen(unchecked_param_type = "Frame")] frame: &JsValue,
         x: f64,
         y: f64,
     ) -> Float64Array {
-        let viewport = sphere_viewport(width, height);
-        let (sx, sy) = viewport.unpixel((x, y));
-        let target = Camera::orbit(azimuth, elevation).unproject_on_sphere(sx, sy);
+        let frame = Frame::read(frame);
+        let (sx, sy) = frame.sphere_viewport().unpixel((x, y));
+        let target = frame.camera.unproject_on_sphere(sx, sy);
         let keys = self.keys.quaternions();
         let (Some(target), Some(&key)) = (target, keys.get(index)) else {
             return Float64Array::new_with_length(0);
@@ -266,149 +259,70 @@ impl SplineDemo {
             .collect();
         Ok(Float64Array::from(&flat[..]))
     }
+}
 
-    /// The object under each curve at `t`, side by side (stacked when narrow).
-    #[wasm_bindgen(js_name = drawObjects)]
-    pub fn draw_objects(
-        &self,
-        ctx: &CanvasRenderingContext2d,
-        width: f64,
-        height: f64,
-        pixel_ratio: f64,
-        t: f64,
-    ) {
-        self.paint_objects(
-            &Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND),
-            width,
-            height,
-            finite(t),
-        );
-    }
+crate::figure_class!(KeyframesDemo);
 
-    /// The three Hopf curves through the keys' Hopf points on S², and the points at `t`.
-    #[wasm_bindgen(js_name = drawSphere)]
-    #[allow(clippy::too_many_arguments)]
-    pub fn draw_sphere(
-        &self,
-        ctx: &CanvasRenderingContext2d,
-        width: f64,
-        height: f64,
-        pixel_ratio: f64,
-        azimuth: f64,
-        elevation: f64,
-        t: f64,
-    ) {
-        self.paint_sphere(
-            &Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND),
-            width,
-            height,
-            azimuth,
-            elevation,
-            finite(t),
-        );
-    }
+/// The keyframes page's views: the object under each curve, the three Hopf curves through the
+/// keys, and |ω|, |ω̇| plotted; its data, the three curves sampled.
+impl Figure for KeyframesDemo {
+    const VIEWS: &'static [&'static str] = &["objects", "hopf", "plots"];
+    const TITLES: &'static [&'static str] = &[
+        "The object under each curve",
+        "The three curves' Hopf images on S²",
+        "|ω(t)| and |ω̇(t)| of the three curves",
+    ];
+    const EXPORT: &'static str = "curves";
 
-    /// |ω(t)| and |ω̇(t)| of the three curves, with the time `t` marked.
-    #[wasm_bindgen(js_name = drawPlots)]
-    pub fn draw_plots(
-        &self,
-        ctx: &CanvasRenderingContext2d,
-        width: f64,
-        height: f64,
-        pixel_ratio: f64,
-        t: f64,
-    ) {
-        self.paint_plots(
-            &Pen::begin(ctx, width, height, pixel_ratio, BACKGROUND),
-            width,
-            height,
-            finite(t),
-        );
-    }
-
-    /// One figure as an SVG document (vector): `view` is "objects", "sphere" (seen from azimuth
-    /// and elevation, radians) or "plots", `width` × `height` CSS pixels, at time `t`.
-    #[wasm_bindgen(js_name = toSvg)]
-    pub fn to_svg(
-        &self,
-        view: &str,
-        width: f64,
-        height: f64,
-        t: f64,
-        azimuth: f64,
-        elevation: f64,
-    ) -> JsResult<String> {
-        let (width, height, t) = (size(width), size(height), finite(t));
-        let (title, paint): (&str, &dyn Fn(&Pen)) = match view {
-            "objects" => {
-                ("The object under each curve", &|pen| self.paint_objects(pen, width, height, t))
-            }
-            "sphere" => ("The three curves' Hopf images on S²", &|pen| {
-                self.paint_sphere(pen, width, height, azimuth, elevation, t)
-            }),
-            "plots" => ("|ω(t)| and |ω̇(t)| of the three curves", &|pen| {
-                self.paint_plots(pen, width, height, t)
-            }),
-            other => return Err(throw(unknown_view(other, &["objects", "sphere", "plots"]))),
-        };
-        Ok(svg_document(width, height, title, paint))
-    }
-
-    /// The three curves sampled as CSV, a row a curve and sample time: `t`, the curve
-    /// ("chain", "squad", "slerp"), its quaternion `w, x, y, z`, |ω| and its Hopf point.
-    #[wasm_bindgen(js_name = curvesCsv)]
-    pub fn curves_csv(&self) -> String {
-        let mut csv = String::from("t,curve,w,x,y,z,angularSpeed,hopfX,hopfY,hopfZ\n");
-        for (name, curve, s) in self.named_curves() {
-            for (k, &t) in self.times.iter().enumerate() {
-                let [w, x, y, z] = to_wxyz(curve.at(t));
-                let h = s.hopf[k];
-                let fields = joined(&[w, x, y, z, s.speed[k], h.x, h.y, h.z], ",");
-                csv.push_str(&format!("{},{name},{fields}\n", number(t)));
-            }
+    fn paint(&self, view: usize, layer: Layer, pen: &Pen, frame: &Frame) {
+        if !layer.still() {
+            return;
         }
-        csv
+        let (width, height, t) = (frame.width, frame.height, frame.t);
+        match view {
+            0 => self.paint_objects(pen, width, height, t),
+            1 => self.paint_sphere(pen, frame),
+            _ => self.paint_plots(pen, width, height, t),
+        }
     }
 
-    /// The keys and the three curves sampled, as JSON: `keys` ([w, x, y, z] each), `keyTimes`,
-    /// and for each curve its `samples`, `{ t, quaternion, angularSpeed, hopf }`.
-    #[wasm_bindgen(js_name = curvesJson)]
-    pub fn curves_json(&self) -> String {
-        let list = json_list;
-        let keys: Vec<String> =
-            self.keys.quaternions().iter().map(|&q| list(&to_wxyz(q))).collect();
-        let curves: Vec<String> = self
-            .named_curves()
-            .map(|(name, curve, s)| {
-                let samples: Vec<String> = self
-                    .times
-                    .iter()
-                    .enumerate()
-                    .map(|(k, &t)| {
-                        let h = s.hopf[k];
-                        format!(
-                            "{{\"t\":{},\"quaternion\":{},\"angularSpeed\":{},\"hopf\":{}}}",
-                            number(t),
-                            list(&to_wxyz(curve.at(t))),
-                            number(s.speed[k]),
-                            list(&[h.x, h.y, h.z])
-                        )
-                    })
-                    .collect();
-                format!("\"{name}\":[\n{}\n]", samples.join(",\n"))
-            })
-            .collect();
-        format!(
-            "{{\"keys\":[{}],\"keyTimes\":{},\"curves\":{{{}}}}}\n",
-            keys.join(","),
-            list(self.keys.times()),
-            curves.join(",\n")
-        )
+    /// CSV: a row a curve and sample time, `t`, the curve ("chain", "squad", "slerp"), its
+    /// quaternion `w, x, y, z`, |ω| and its Hopf point. JSON: `keys` ([w, x, y, z] each),
+    /// `keyTimes`, and each curve's `samples`, `{ t, quaternion, angularSpeed, hopf }`.
+    fn export(&self, csv: bool) -> String {
+        if csv {
+            let mut text = String::from("t,curve,w,x,y,z,angularSpeed,hopfX,hopfY,hopfZ\n");
+            for (name, curve, s) in self.named_curves() {
+                for (k, &t) in self.times.iter().enumerate() {
+                    let [w, x, y, z] = to_wxyz(curve.at(t));
+                    let h = s.hopf[k];
+                    let fields = joined(&[w, x, y, z, s.speed[k], h.x, h.y, h.z], ",");
+                    text.push_str(&format!("{},{name},{fields}\n", number(t)));
+                }
+            }
+            return text;
+        }
+        let keys: Vec<f64> = self.keys.quaternions().iter().flat_map(|&q| to_wxyz(q)).collect();
+        let mut curves = Json::object();
+        for (name, curve, s) in self.named_curves() {
+            let samples = self.times.iter().enumerate().map(|(k, &t)| {
+                Json::object()
+                    .number("t", t)
+                    .list("quaternion", &to_wxyz(curve.at(t)))
+                    .number("angularSpeed", s.speed[k])
+                    .list("hopf", &s.hopf[k].to_array())
+            });
+            curves = curves.objects(name, samples);
+        }
+        Json::object()
+            .lists("keys", keys.chunks(4))
+            .list("keyTimes", self.keys.times())
+            .raw("curves", &curves.end())
+            .document()
     }
 }
 
-/// The views, drawn with any [`Pen`]: the canvas methods and `toSvg` share them.
-impl SplineDemo {
+impl KeyframesDemo {
     /// Each curve with its export name and its series.
     fn named_curves(&self) -> impl Iterator<Item = (&'static str, &dyn Curve, &Series)> {
         let curves: [&dyn Curve; 3] = [&self.chain, &self.squad, &self.slerp];
@@ -432,18 +346,10 @@ impl SplineDemo {
         }
     }
 
-    fn paint_sphere(
-        &self,
-        pen: &Pen,
-        width: f64,
-        height: f64,
-        azimuth: f64,
-        elevation: f64,
-        t: f64,
-    ) {
-        let viewport = sphere_viewport(width, height);
-        let camera = Camera::orbit(azimuth, elevation);
-        let view = View { pen, viewport: &viewport, camera: &camera };
+    fn paint_sphere(&self, pen: &Pen, frame: &Frame) {
+        let viewport = frame.sphere_viewport();
+        let view = View { pen, viewport: &viewport, camera: &frame.camera };
+        let t = frame.t;
         let grid = grid();
         let dashes: [&[f64]; 3] = [&[], &[6.0, 4.0], &[2.0, 3.0]];
         draw_grid_back(&view, &grid);
@@ -504,13 +410,4 @@ impl SplineDemo {
             pen.line((x, panel.top), (x, panel.top + panel.height), MUTED, 1.0, &[2.0, 3.0]);
         }
     }
-}
-
-fn sphere_viewport(width: f64, height: f64) -> Viewport {
-    Viewport::fitting(0.0, 0.0, width, height, 1.22)
-}
-
-/// Drawing never fails: a non-finite time is drawn as t = 0.
-fn finite(t: f64) -> f64 {
-    if t.is_finite() { t } else { 0.0 }
 }

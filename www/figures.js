@@ -1,0 +1,167 @@
+// @ts-check
+// A page's figures, for every page and <kli-figure>: its canvases sized to the pixels they cover,
+// the camera of its sphere views, and one drawing path through the module's figure interface
+// (`draw(view, ctx, frame, layer)`, `toSvg(view, frame)`: crates/kli-demo/src/figure.rs), with
+// still layers for the views whose picture only partly follows the time, and saving a view as
+// PNG or SVG.
+import { Camera } from "./camera.js";
+import { Canvases } from "./canvases.js";
+import { png, saveAs } from "./exports.js";
+
+/**
+ * What the module's page classes (Demo, KeyframesDemo, SwarmDemo) have in common.
+ * @typedef {object} Figure
+ * @property {(view: string, ctx: CanvasRenderingContext2D, frame: Frame, layer?: "whole" | "still" | "moving") => void} draw
+ * @property {(view: string, frame: Frame) => string} toSvg
+ */
+/** @typedef {{ width: number, height: number, pixelRatio: number, t: number, azimuth: number, elevation: number }} Frame */
+/** @typedef {(ctx: CanvasRenderingContext2D, frame: Frame) => void} Painter a view the page draws itself */
+
+/**
+ * @template {string} Name
+ */
+export class Figures {
+  /**
+   * @param {Record<Name, HTMLCanvasElement>} canvases a canvas for each view, by the view's name
+   * @param {object} [options]
+   * @param {readonly Name[]} [options.layered] views drawn as a still layer (copied) and a moving part over it
+   * @param {readonly Name[]} [options.still] views that do not follow the time (drawn when the run, size or camera changes)
+   * @param {Partial<Record<Name, Painter>>} [options.painters] views the page draws itself
+   */
+  constructor(canvases, { layered = [], still = [], painters = {} } = {}) {
+    this.canvases = canvases;
+    this.layeredViews = layered;
+    this.stillViews = still;
+    this.painters = painters;
+    /** @type {Figure | null} */
+    this.figure = null;
+    this.camera = new Camera([0, 0]);
+    /** @type {Partial<Record<Name, import("./canvases.js").Size>>} */
+    this.sizes = {};
+    /** @type {Map<Name, HTMLCanvasElement>} the still layers, offscreen */
+    this.layers = new Map();
+    /** @type {Set<Name>} views whose still part must be drawn again */
+    this.stale = new Set();
+    /** @type {Canvases<Name> | null} */
+    this.sizing = null;
+  }
+
+  /** Shows a new run (a new module object): every still part is drawn again. */
+  show(/** @type {Figure} */ figure) {
+    this.figure = figure;
+    this.invalidate();
+  }
+
+  /** After a change that the time does not explain (a new run, camera or size). */
+  invalidate(/** @type {readonly Name[]} */ names = /** @type {Name[]} */ (Object.keys(this.canvases))) {
+    for (const name of names) this.stale.add(name);
+  }
+
+  /** Turns the sphere views by (azimuth, elevation) radians. */
+  turn(/** @type {number} */ azimuth, /** @type {number} */ elevation) {
+    this.camera.turn(azimuth, elevation);
+    this.invalidate();
+  }
+
+  /**
+   * The frame of view `name` at time `t`: its CSS size, the ratio to draw at, the camera.
+   * @param {Name} name
+   * @param {number} t
+   * @param {import("./canvases.js").Size} [size] another size (a PNG at twice the ratio)
+   * @returns {Frame | null}
+   */
+  frame(name, t, size = this.sizes[name]) {
+    if (!size) return null;
+    const { azimuth, elevation } = this.camera;
+    return { width: size.width, height: size.height, pixelRatio: size.ratio, t, azimuth, elevation };
+  }
+
+  /**
+   * Draws view `name` whole onto `ctx` at `frame` (a canvas of the page, or a PNG being saved).
+   * @param {Name} name
+   * @param {CanvasRenderingContext2D} ctx
+   * @param {Frame} frame
+   */
+  paint(name, ctx, frame) {
+    const painter = this.painters[name];
+    if (painter) painter(ctx, frame);
+    else this.figure?.draw(name, ctx, frame);
+  }
+
+  /** Draws every laid-out view at time `t`; returns whether anything was drawn. */
+  render(/** @type {number} */ t) {
+    if (!this.figure) return false;
+    let drawn = false;
+    for (const name of /** @type {Name[]} */ (Object.keys(this.canvases))) {
+      const frame = this.frame(name, t);
+      if (!frame) continue;
+      drawn = true;
+      const ctx = context(this.canvases[name]);
+      if (this.layeredViews.includes(name)) this.layered(name, ctx, frame);
+      else if (!this.stillViews.includes(name) || this.stale.has(name)) this.paint(name, ctx, frame);
+      this.stale.delete(name);
+    }
+    return drawn;
+  }
+
+  /**
+   * Copies the still layer of a view (drawn again first when stale) and draws the moving part
+   * over it.
+   * @param {Name} name
+   * @param {CanvasRenderingContext2D} ctx
+   * @param {Frame} frame
+   */
+  layered(name, ctx, frame) {
+    const figure = /** @type {Figure} */ (this.figure);
+    const canvas = this.canvases[name];
+    let layer = this.layers.get(name);
+    if (!layer) this.layers.set(name, (layer = document.createElement("canvas")));
+    if (this.stale.has(name) || layer.width !== canvas.width || layer.height !== canvas.height) {
+      layer.width = canvas.width;
+      layer.height = canvas.height;
+      figure.draw(name, context(layer), frame, "still");
+    }
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.drawImage(layer, 0, 0);
+    figure.draw(name, ctx, frame, "moving");
+  }
+
+  /**
+   * Sizes every canvas to the pixels it covers, now and on every change, and calls `draw` in
+   * the same rendering update (so that a view never shows blank).
+   * @param {(resized: Name[]) => void} draw
+   */
+  observe(draw) {
+    this.sizing = new Canvases(this.canvases, (resized) => {
+      this.invalidate(resized);
+      draw(resized);
+    });
+    this.sizes = this.sizing.sizes;
+    return this.sizing;
+  }
+
+  /**
+   * Saves view `name` at time `t` as `file`.png (twice the screen's resolution) or .svg.
+   * @param {Name} name
+   * @param {string} format
+   * @param {string} file the file name without its extension
+   * @param {number} t
+   * @param {(frame: Frame) => string} [svg] the SVG of a view the page draws itself
+   */
+  save(name, format, file, t, svg) {
+    const figure = this.figure;
+    const frame = this.frame(name, t);
+    if (!figure || !frame) throw new Error(`the ${name} view is not laid out`);
+    return saveAs(file, format, {
+      svg: () => (svg ? svg(frame) : figure.toSvg(name, frame)),
+      png: () => png(frame, (ctx, ratio) => this.paint(name, ctx, { ...frame, pixelRatio: ratio })),
+    });
+  }
+}
+
+/** The 2D context of a canvas (a page whose canvases cannot draw has nothing to show). */
+export function context(/** @type {HTMLCanvasElement} */ canvas) {
+  const ctx = canvas.getContext("2d");
+  if (!ctx) throw new Error("this browser cannot draw on a canvas");
+  return ctx;
+}

@@ -1,0 +1,47 @@
+// @ts-check
+// The demo's pages, in one place. The Makefile (which modules to build), `make single` (which
+// pages to bundle), the service worker (what to cache, and its cache name), <kli-figure> (which
+// module draws which view) and the pages' modulepreload links (scripts/pages.mjs writes them)
+// all read this list.
+
+/**
+ * @typedef {object} Page
+ * @property {string} name the page's word, also its module's (`<name>_demo`) and its Cargo feature's (`<name>-page`)
+ * @property {string} html
+ * @property {string} script the page's module script
+ * @property {string} title the link text in the pages' navigation
+ * @property {Readonly<Record<string, string>>} views each <kli-figure> view its module draws: the module's name for it
+ * @property {readonly string[]} layered the module's views drawn as a still layer with a moving part over it
+ * @property {readonly string[]} still the module's views that do not follow the time
+ */
+
+/** @type {readonly Page[]} */
+export const PAGES = [
+  {
+    name: "kli", html: "index.html", script: "main.js", title: "KLI: two rotations",
+    views: { object: "object", hopf: "hopf", plots: "plots", filmstrip: "filmstrip" },
+    layered: ["hopf", "plots"], still: ["filmstrip"],
+  },
+  {
+    name: "keyframes", html: "keyframes.html", script: "keyframes.js", title: "Many rotations",
+    views: { keyframes: "hopf" }, layered: [], still: [],
+  },
+  {
+    name: "swarm", html: "swarm.html", script: "swarm.js", title: "The swarm",
+    views: { swarm: "hopf" }, layered: [], still: ["sweep"],
+  },
+];
+
+/** Each page's module, loaded on demand. One static import each, so that bundlers (`make single`)
+ *  find them; `scripts/pages.mjs` checks that the keys are the pages' names. */
+export const MODULES = {
+  kli: () => import("./pkg/kli_demo.js"),
+  keyframes: () => import("./pkg/keyframes_demo.js"),
+  swarm: () => import("./pkg/swarm_demo.js"),
+};
+
+/** The page whose module draws `view`, if any. */
+export const pageOfView = (/** @type {string} */ view) => PAGES.find((page) => Object.hasOwn(page.views, view));
+
+/** A page by name. */
+export const page = (/** @type {string} */ name) => /** @type {Page} */ (PAGES.find((p) => p.name === name));
