@@ -4,6 +4,7 @@
 // values is the module's job: the form only turns text into numbers (NaN when it is not one).
 
 import { formatNumber, parseNumber } from "./numbers.js";
+import { clearErrors, showFieldError } from "./runs.js";
 
 /**
  * The page's state: the Demo's arguments, in the JavaScript API's names.
@@ -95,8 +96,7 @@ export class Form {
 
   /** Empties every message and unmarks every field. */
   clearErrors() {
-    for (const output of this.form.querySelectorAll(".field-error")) output.textContent = "";
-    for (const field of this.form.querySelectorAll("[aria-invalid=true]")) field.setAttribute("aria-invalid", "false");
+    clearErrors(this.form);
   }
 
   /**
@@ -121,8 +121,6 @@ export class Form {
       output = OUTPUTS[/** @type {keyof typeof OUTPUTS} */ (argument)];
       fields = [this.field(output)];
     }
-    const box = this.form.querySelector(`#${output}-error`);
-    if (box) box.textContent = group && output === group ? `${group}: ${message}` : String(message ?? error);
-    for (const field of fields) field.setAttribute("aria-invalid", "true");
+    showFieldError(this.form, output, fields, group && output === group ? `${group}: ${message}` : String(message ?? error));
   }
 }

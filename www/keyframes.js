@@ -9,6 +9,7 @@ import { Figures } from "./figures.js";
 import { page } from "./pages.js";
 import { $ } from "./dom.js";
 import { presetName, randomQuaternion } from "./presets.js";
+import { argumentOf, buildAll, clearErrors, messageOf, showFieldError } from "./runs.js";
 import { saveAs, timeTag, wireSaving } from "./exports.js";
 import { wireDragging, wireKeyboard } from "./input.js";
 import { formatNumber, parseNumber } from "./numbers.js";
@@ -120,18 +121,30 @@ function urlOf(/** @type {SplineState} */ state) {
 
 // ---- Runs -----------------------------------------------------------------------------------
 
-/** Builds the three curves; on an Error, shows it beside its field and keeps the run on show. */
+/** The part of the state an Error is about. */
+const keyOf = (/** @type {unknown} */ error) => {
+  const argument = argumentOf(error);
+  return argument.startsWith("keys") ? "keys" : argument.startsWith("times") ? "times" : argument === "smoothness" ? "smoothness" : undefined;
+};
+const create = (/** @type {SplineState} */ state) =>
+  new KeyframesDemo(new Float64Array(state.keys.flat()), new Float64Array(state.times), state.smoothness);
+
+/** Builds the three curves when the module accepts the whole state; otherwise shows every
+ *  refused part beside its field and keeps the run on show. */
 function rebuild(/** @type {SplineState} */ state) {
-  /** @type {KeyframesDemo} */
-  let demo;
-  try {
-    demo = new KeyframesDemo(new Float64Array(state.keys.flat()), new Float64Array(state.times), state.smoothness);
-  } catch (error) {
-    showError(error);
+  const { run: demo, errors } = buildAll(state, run.state, create, keyOf);
+  clearErrors(form);
+  if (errors.length > 0 || !demo) {
+    demo?.free();
+    errors.forEach((error) => showError(error));
     return false;
   }
-  for (const output of form.querySelectorAll(".field-error")) output.textContent = "";
-  for (const marked of form.querySelectorAll("[aria-invalid=true]")) marked.setAttribute("aria-invalid", "false");
+  show(demo, state);
+  return true;
+}
+
+/** Shows a run: the views, the table, the key editor, the URL. */
+function show(/** @type {KeyframesDemo} */ demo, /** @type {SplineState} */ state) {
   run.demo?.free();
   run.demo = demo;
   figures.show(demo);
@@ -144,16 +157,13 @@ function rebuild(/** @type {SplineState} */ state) {
   fillKeyEditor();
   writeUrl(urlOf(state));
   draw();
-  return true;
 }
 
 function showError(/** @type {unknown} */ error) {
-  const { argument, message } = /** @type {{ argument?: string, message?: string }} */ (error ?? {});
-  const name = argument?.startsWith("keys") ? "keys" : argument?.startsWith("times") ? "times"
-    : argument === "axis" || argument === "angle" ? "key" : "smoothness";
-  $(`#${name}-error`, HTMLOutputElement).textContent = String(message ?? error);
+  const argument = argumentOf(error);
+  const name = keyOf(error) ?? (argument === "axis" || argument === "angle" ? "key" : "smoothness");
   const marked = name !== "key" ? [name] : argument === "angle" ? ["key-angle"] : ["key-ax", "key-ay", "key-az"];
-  for (const n of marked) field(n).setAttribute("aria-invalid", "true");
+  showFieldError(form, name, marked.map(field), messageOf(error));
 }
 
 /** The table: the module's figures at once, and a moment after the last change (not on every
@@ -268,6 +278,7 @@ function wire() {
       try {
         withKeys(rows(demo.keysWithAxisAngle(index, new Float64Array([x, y, z]), (degrees * Math.PI) / 180)));
       } catch (error) {
+        clearErrors(form);
         showError(error);
       }
       return;
@@ -362,9 +373,16 @@ async function start() {
   if (embed) document.body.classList.add("embed");
   figures.camera = new Camera(defaultCamera());
   wire();
-  const state = stateFromUrl();
-  fillForm(state);
-  if (!rebuild(state)) rebuild(PRESETS.tumble);
+  // The URL's parts that the module refuses are shown (their text kept in the field, to mend),
+  // and the preset's stand in for them.
+  const { run: demo, state, errors } = buildAll(stateFromUrl(), PRESETS.tumble, create, keyOf);
+  show(demo ?? create(PRESETS.tumble), state ?? PRESETS.tumble);
+  fillForm(run.state);
+  for (const error of errors) {
+    const key = keyOf(error);
+    if ((key === "keys" || key === "times") && query.has(KEYS[key])) field(key).value = query.get(KEYS[key]) ?? "";
+    showError(error);
+  }
   ui.load.textContent = "";
   ui.load.hidden = true;
   figures.observe(draw);

@@ -11,7 +11,8 @@ import { $ } from "./dom.js";
 import { Form, stateKey } from "./form.js";
 import { wireDragging, wireKeyboard } from "./input.js";
 import { parseNumber } from "./numbers.js";
-import { DEFAULTS, PRESETS, presetName, randomQuaternion, sameState } from "./presets.js";
+import { DEFAULTS, PRESETS, presetName, randomQuaternion } from "./presets.js";
+import { buildAll } from "./runs.js";
 import { describeFrame, describeRun, fillTable, fillTypo } from "./summary.js";
 import { readQuery, throttledUrl, writeQuery } from "./url.js";
 
@@ -45,26 +46,12 @@ const run = { demo: /** @type {Demo | null} */ (null), state: /** @type {State |
 
 // ---- Runs ---------------------------------------------------------------------------------
 
-/**
- * Builds the Demo for `candidate`. When the module refuses an argument, tries again with that
- * argument from `fallback`, so that every refused argument is reported at once.
- * @param {State} candidate
- * @param {State} fallback
- */
-function build(candidate, fallback) {
-  const errors = /** @type {unknown[]} */ ([]);
-  let attempt = { ...candidate };
-  for (;;) {
-    try {
-      const { p, r, tolerance, step, integrator, shortestPath } = attempt;
-      return { demo: new Demo(p, r, { tolerance, step, integrator, shortestPath }), state: attempt, errors };
-    } catch (error) {
-      errors.push(error);
-      const key = stateKey(error);
-      if (!key || sameState(attempt[key], fallback[key])) return { demo: null, state: null, errors };
-      attempt = { ...attempt, [key]: fallback[key] };
-    }
-  }
+/** The Demo for `candidate`, every refused argument taken from `fallback` (see runs.js). */
+function build(/** @type {State} */ candidate, /** @type {State} */ fallback) {
+  const create = (/** @type {State} */ { p, r, tolerance, step, integrator, shortestPath }) =>
+    new Demo(p, r, { tolerance, step, integrator, shortestPath });
+  const { run, state, errors } = buildAll(candidate, fallback, create, stateKey);
+  return { demo: run, state, errors };
 }
 
 /** Shows a run: the views, the table, the notes, the URL. */

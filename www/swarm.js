@@ -9,6 +9,7 @@ import { Figures } from "./figures.js";
 import { page } from "./pages.js";
 import { $ } from "./dom.js";
 import { presetName } from "./presets.js";
+import { argumentOf, buildAll, clearErrors, messageOf, showFieldError } from "./runs.js";
 import { saveAs, timeTag, wireSaving } from "./exports.js";
 import { wireDragging, wireKeyboard } from "./input.js";
 import { parseNumber } from "./numbers.js";
@@ -126,17 +127,30 @@ function urlOf(/** @type {SwarmState} */ state) {
 
 // ---- Runs -----------------------------------------------------------------------------------
 
-/** Builds the swarm for `state`; on an Error, shows it beside its field and keeps the run. */
+/** The options of the state an Error is about ("options" itself: the coupling's field). */
+const keyOf = (/** @type {unknown} */ error) => {
+  const argument = argumentOf(error);
+  return /** @type {(keyof SwarmState)[]} */ (["coupling", "count", "graph", "leaders", "frequencySpread", "startSpread", "seed"])
+    .find((key) => key === argument);
+};
+const create = (/** @type {SwarmState} */ state) => new SwarmDemo(state);
+
+/** Builds the swarm for `state` when the module accepts all of it; otherwise shows every refused
+ *  option beside its field and keeps the run on show. */
 function rebuild(/** @type {SwarmState} */ state) {
-  let demo;
-  try {
-    demo = new SwarmDemo(state);
-  } catch (error) {
-    showError(error);
+  const { run: demo, errors } = buildAll(state, run.state, create, keyOf);
+  clearErrors(form);
+  if (errors.length > 0 || !demo) {
+    demo?.free();
+    errors.forEach(showError);
     return false;
   }
-  for (const output of form.querySelectorAll(".field-error")) output.textContent = "";
-  for (const marked of form.querySelectorAll("[aria-invalid=true]")) marked.setAttribute("aria-invalid", "false");
+  show(demo, state);
+  return true;
+}
+
+/** Shows a run: the views, the note, the URL. */
+function show(/** @type {SwarmDemo} */ demo, /** @type {SwarmState} */ state) {
   run.demo?.free();
   run.demo = demo;
   figures.show(demo);
@@ -148,15 +162,11 @@ function rebuild(/** @type {SwarmState} */ state) {
   writeUrl(urlOf(state));
   draw();
   drawSweep(); // its marker follows K; otherwise it changes only while a sweep runs
-  return true;
 }
 
 function showError(/** @type {unknown} */ error) {
-  const { argument, message } = /** @type {{ argument?: string, message?: string }} */ (error ?? {});
-  const name = argument === "options" || !argument ? "coupling" : argument;
-  const box = form.querySelector(`#${name}-error`);
-  if (box) box.textContent = String(message ?? error);
-  form.querySelector(`[name=${name}]`)?.setAttribute("aria-invalid", "true");
+  const name = keyOf(error) ?? "coupling";
+  showFieldError(form, name, [field(name)], messageOf(error));
 }
 
 // ---- Frames ---------------------------------------------------------------------------------
@@ -289,9 +299,11 @@ async function start() {
   if (embed) document.body.classList.add("embed");
   figures.camera = new Camera(defaultCamera());
   wire();
-  const state = stateFromUrl();
-  fillForm(state);
-  if (!rebuild(state)) rebuild(PRESETS.synchronise);
+  // The URL's options that the module refuses are shown, and the preset's stand in for them.
+  const { run: demo, state, errors } = buildAll(stateFromUrl(), PRESETS.synchronise, create, keyOf);
+  show(demo ?? create(PRESETS.synchronise), state ?? PRESETS.synchronise);
+  fillForm(run.state);
+  errors.forEach(showError);
   ui.load.textContent = "";
   ui.load.hidden = true;
   figures.observe(draw);

@@ -72,6 +72,8 @@ test("keyframes: WCAG 2.2 AA, embedded, and at 390 px", async () => {
   await embed.context.close();
   const narrow = await open("keyframes.html", { viewport: { width: 390, height: 844 } });
   assert.ok(await narrow.page.evaluate(() => document.documentElement.scrollWidth <= 390), "no horizontal scrolling");
+  // The measured table scrolls sideways here: a region the keyboard can reach and scroll.
+  assert.deepEqual(await axeViolations(narrow.page), []);
   await narrow.page.screenshot({ path: join(artifacts, "keyframes-390px.png"), fullPage: true });
   await narrow.context.close();
 });

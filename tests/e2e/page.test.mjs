@@ -2,8 +2,9 @@
 // playwright-core. Screenshots go to test-artifacts/.
 import { test } from "node:test";
 import assert from "node:assert/strict";
+import { readFileSync } from "node:fs";
 import { join } from "node:path";
-import { artifacts, axeViolations, canvasStats, open, setup } from "./browser.mjs";
+import { artifacts, axeViolations, canvasStats, open, root, setup } from "./browser.mjs";
 
 setup();
 
@@ -274,6 +275,11 @@ test("works offline once loaded", async () => {
   await page.waitForFunction(() => document.querySelector("#load-status").hidden);
   assert.match(await readout(page), /T = 11\.66$/);
   assert.ok((await canvasStats(page, "#hopf-canvas")).drawn > 20000);
+  // One cache, named by the build (a hash of the files, written by make www from www/pages.js).
+  const build = readFileSync(join(root, "www/pkg/build.js"), "utf8");
+  const name = /"cache": "(kli-[0-9a-f]{12})"/.exec(build)?.[1];
+  assert.ok(name, build.slice(0, 200));
+  assert.deepEqual(await page.evaluate(() => caches.keys()), [name]);
   await context.close();
 });
 

@@ -1,0 +1,153 @@
+// The figure contract (issue 14): what every page and <kli-figure> do alike, and the defects
+// found using them as teachers and students do (a deck, a projector, a phone), one test each.
+import { test } from "node:test";
+import assert from "node:assert/strict";
+import { execFileSync } from "node:child_process";
+import { setup, open, root } from "./browser.mjs";
+
+setup();
+
+/** A figure's canvas: its backing store, its layout width, and the figure's time. */
+const figureCanvas = (page, selector) => page.evaluate((selector) => {
+  const figure = document.querySelector(selector);
+  const canvas = figure.shadowRoot.querySelector("canvas");
+  return { width: canvas.width, height: canvas.height, layoutWidth: canvas.offsetWidth, t: figure.t };
+}, selector);
+
+test("<kli-figure autoplay> reads the latest visibility entry: hidden then shown at once, it animates", async () => {
+  // A browser may deliver two entries in one callback (a slide shown: hidden, then visible); the
+  // first is stale. This IntersectionObserver delivers exactly that, as reveal.js's first slide got.
+  const init = () => {
+    window.IntersectionObserver = class {
+      constructor(callback) { this.callback = callback; }
+      observe(target) {
+        setTimeout(() => this.callback([{ target, isIntersecting: false }, { target, isIntersecting: true }], this));
+      }
+      unobserve() {}
+      disconnect() {}
+    };
+  };
+  const { page, context, problems } = await open("examples/figures.html", { init });
+  try {
+    await page.waitForFunction(() => document.querySelector("#hopf").demo);
+    const t0 = (await figureCanvas(page, "#hopf")).t;
+    await page.waitForTimeout(400);
+    const t1 = (await figureCanvas(page, "#hopf")).t;
+    assert.ok(t1 > t0 + 0.1, `the figure animates: t ${t0} → ${t1}`);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test("<kli-figure> scaled by its host (as reveal.js scales a slide) renders at the pixels it covers", async () => {
+  const { page, context, problems } = await open("examples/figures.html", { reducedMotion: "reduce", deviceScaleFactor: 2 });
+  try {
+    await page.evaluate(() => document.querySelector("article").insertAdjacentHTML("afterbegin", `
+      <div id="slide" style="width: 400px; transform: scale(1.48); transform-origin: 0 0">
+        <kli-figure id="scaled" view="hopf" style="width: 400px; height: 300px"></kli-figure>
+      </div>`));
+    await page.waitForFunction(() => document.querySelector("#scaled").demo && document.querySelector("#scaled").shadowRoot.querySelector("canvas").width > 1000);
+    const scaled = await figureCanvas(page, "#scaled");
+    // 398 CSS px (the figure's border inside its 400) × 1.48 (the host) × 2 (the screen).
+    const [width, height] = await page.evaluate(() => {
+      const canvas = document.querySelector("#scaled").shadowRoot.querySelector("canvas");
+      return [canvas.clientWidth, canvas.clientHeight];
+    });
+    assert.equal(scaled.layoutWidth, width);
+    assert.equal(scaled.width, Math.round(width * 1.48 * 2));
+    assert.equal(scaled.height, Math.round(height * 1.48 * 2));
+    // The host rescales (a new window size): the figure follows with the window's resize event.
+    await page.evaluate(() => (document.querySelector("#slide").style.transform = "scale(0.5)"));
+    await page.setViewportSize({ width: 1200, height: 900 });
+    await page.waitForFunction((width) => document.querySelector("#scaled").shadowRoot.querySelector("canvas").width === width, width);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+/** A finger drawn 200 px up the screen from (x, y). */
+async function swipeUp(cdp, x, y) {
+  await cdp.send("Input.dispatchTouchEvent", { type: "touchStart", touchPoints: [{ x, y }] });
+  for (let i = 1; i <= 10; i++) await cdp.send("Input.dispatchTouchEvent", { type: "touchMove", touchPoints: [{ x, y: y - 20 * i }] });
+  await cdp.send("Input.dispatchTouchEvent", { type: "touchEnd", touchPoints: [] });
+}
+
+test("touch-action: none only on the canvases that can be dragged, so a swipe elsewhere scrolls", async () => {
+  for (const [url, draggable] of [["index.html", ["hopf-canvas"]], ["keyframes.html", ["keyframes-hopf"]], ["swarm.html", ["swarm-hopf"]]]) {
+    const { page, context, problems } = await open(url, { viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true });
+    try {
+      const actions = await page.evaluate(() => Array.from(document.querySelectorAll("canvas"), (c) => [c.id, getComputedStyle(c).touchAction]));
+      assert.ok(actions.length >= 3, url);
+      for (const [id, action] of actions) assert.equal(action, draggable.includes(id) ? "none" : "auto", `${url} #${id}`);
+      // A swipe up over a figure that is not draggable scrolls the page.
+      const id = actions.find(([id]) => !draggable.includes(id))[0];
+      await page.locator(`#${id}`).scrollIntoViewIfNeeded();
+      const box = await page.locator(`#${id}`).boundingBox();
+      const before = await page.evaluate(() => scrollY);
+      await swipeUp(await context.newCDPSession(page), box.x + box.width / 2, box.y + box.height / 2);
+      assert.ok((await page.evaluate(() => scrollY)) > before + 50, `${url}: a swipe over #${id} scrolls`);
+      assert.deepEqual(problems, []);
+    } finally {
+      await context.close();
+    }
+  }
+});
+
+test("embedded figures reserve their box before their module loads: no layout shift", async () => {
+  // The element's script is held back for a while, as on a slow network: the figures must hold
+  // their place from the first paint (www/kli-figure.css), not jump when the element is defined.
+  const init = () => {
+    window.__shifts = 0;
+    new PerformanceObserver((list) => {
+      for (const entry of list.getEntries()) if (!entry.hadRecentInput) window.__shifts += entry.value;
+    }).observe({ type: "layout-shift", buffered: true });
+  };
+  const { page, context, problems } = await open("examples/figures.html", { init, reducedMotion: "reduce" }).catch(async (error) => { throw error; });
+  try {
+    await page.waitForFunction(() => Array.from(document.querySelectorAll("kli-figure"), (f) => f.demo).every(Boolean));
+    await page.waitForTimeout(300);
+    const shift = await page.evaluate(() => window.__shifts);
+    assert.ok(shift <= 0.1, `cumulative layout shift ${shift}`);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test("make: nothing to build when nothing changed, so make demo serves at once", () => {
+  // `make -q` exits 0 only when every target named is up to date (the test run built them).
+  execFileSync("make", ["-q", "pkg/.built", "www/pkg/.built"], { cwd: root, stdio: "pipe" });
+  // The page list and the pages' modulepreload links agree (scripts/pages.mjs writes them).
+  execFileSync("node", ["scripts/pages.mjs", "check"], { cwd: root, stdio: "pipe" });
+});
+
+test("every page shows every refused URL value beside its field at once, and runs on valid values", async () => {
+  const cases = [
+    ["index.html?eps=-1&step=0", { tolerance: /tolerance/, step: /step/ }],
+    ["swarm.html?K=abc&n=0", { coupling: /coupling/, count: /count/ }],
+    ["keyframes.html?keys=1,0,0,0;nan,0,0,1;0,1,0,0&s=5", { keys: /keys\[1\]/, smoothness: /smoothness/ }],
+  ];
+  for (const [url, refused] of cases) {
+    const { page, context, problems } = await open(url, { reducedMotion: "reduce" });
+    try {
+      const marked = await page.evaluate(() => Array.from(document.querySelectorAll("[aria-invalid=true]"), (f) => f.getAttribute("name")));
+      for (const [name, message] of Object.entries(refused)) {
+        assert.match(await page.textContent(`#${name}-error`), message, `${url}: ${name}`);
+        assert.ok(marked.some((m) => m === name || m.startsWith(`${name}`)), `${url}: ${name} marked (${marked})`);
+      }
+      // A valid run is on show: its figures are drawn, and no readout shows the refused value.
+      const text = await page.evaluate(() => {
+        const copy = /** @type {HTMLElement} */ (document.body.cloneNode(true));
+        copy.querySelectorAll(".field-error").forEach((message) => message.remove());
+        return copy.textContent;
+      });
+      assert.doesNotMatch(text, /NaN|Infinity/, url);
+      if (url.startsWith("keyframes")) assert.equal(await page.textContent("#smoothness-value"), "1");
+      assert.deepEqual(problems, []);
+    } finally {
+      await context.close();
+    }
+  }
+});
