@@ -30,10 +30,11 @@ export function setup() {
 }
 
 /** A fresh page that records problems: console errors, page errors, failed or foreign requests.
- *  `init` runs in the page before any of its scripts. */
-export async function open(query = "", { init, ...options } = {}) {
+ *  `init` runs in the page before any of its scripts; `prepare(context)` before it loads. */
+export async function open(query = "", { init, prepare, ...options } = {}) {
   const context = await browser.newContext({ viewport: { width: 1280, height: 900 }, deviceScaleFactor: 1, ...options });
   if (init) await context.addInitScript(init);
+  if (prepare) await prepare(context);
   const page = await context.newPage();
   const problems = [];
   page.on("console", (message) => message.type() === "error" && problems.push(`console: ${message.text()}`));

@@ -104,7 +104,11 @@ test("embedded figures reserve their box before their module loads: no layout sh
       for (const entry of list.getEntries()) if (!entry.hadRecentInput) window.__shifts += entry.value;
     }).observe({ type: "layout-shift", buffered: true });
   };
-  const { page, context, problems } = await open("examples/figures.html", { init, reducedMotion: "reduce" }).catch(async (error) => { throw error; });
+  const prepare = (context) => context.route(/kli-figure\.js$/, async (route) => {
+    await new Promise((resolve) => setTimeout(resolve, 600));
+    await route.continue();
+  });
+  const { page, context, problems } = await open("examples/figures.html", { init, prepare, reducedMotion: "reduce" });
   try {
     await page.waitForFunction(() => Array.from(document.querySelectorAll("kli-figure"), (f) => f.demo).every(Boolean));
     await page.waitForTimeout(300);
