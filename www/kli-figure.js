@@ -184,7 +184,7 @@ export class KliFigure extends HTMLElement {
     const what = {
       object: "The object turning from p to r under KLI and under SLERP",
       hopf: "The Hopf curves of KLI and SLERP on the sphere S²",
-      plots: "Distance to r, the SLERP parameter s(t) and the drift of |q| over time",
+      plots: "Distance to r, KLI's SLERP parameter s(t) beside SLERP's u = t/T, and the drift of |q| over time",
       filmstrip: "The object at the moments of the paper's Table 1",
       keyframes: "The Hopf curves of the Kuramoto–Lohe chain, Squad and piecewise SLERP through the keys",
       swarm: "The swarm's oscillators as points on the sphere S²",

@@ -130,5 +130,5 @@ export function describeRun(demo, state) {
 /** The object view's text alternative at time t. */
 export function describeFrame(/** @type {Demo} */ demo, /** @type {number} */ t) {
   return `The aircraft at t = ${t.toFixed(2)}: KLI rotation ${formatQuaternion(demo.integratedAt(t))}; ` +
-    `SLERP at the same time ${formatQuaternion(demo.slerpAt(t))}.`;
+    `SLERP at the same time (u = t/T) ${formatQuaternion(demo.slerpAt(t))}.`;
 }

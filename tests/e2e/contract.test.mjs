@@ -155,3 +155,27 @@ test("every page shows every refused URL value beside its field at once, and run
     }
   }
 });
+
+test("two SLERP parameters, two names: SLERP's clock u = t/T in the object view, KLI's s(t) in the plots and the path", async () => {
+  const { page, context, problems } = await open("index.html?t=1.8", { reducedMotion: "reduce" });
+  try {
+    const svgs = await page.evaluate(async () => {
+      const { Demo } = await import("./pkg/kli_demo.js");
+      const demo = new Demo([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]);
+      const frame = { width: 600, height: 300, t: 1.8 };
+      const result = { object: demo.toSvg("object", frame), plots: demo.toSvg("plots", frame), csv: demo.export("path", "csv") };
+      demo.free();
+      return result;
+    });
+    // MATH.md: at t = 1.8 KLI sits at s = 0.818; SLERP's clock is 1.8 / 11.66 = 0.154.
+    assert.match(svgs.object, /u = t\/T = 0\.154/);
+    assert.doesNotMatch(svgs.object + svgs.plots, /s = t\/T/);
+    assert.match(svgs.plots, /KLI, s\(t\)/);
+    assert.match(svgs.plots, /SLERP, u = t\/T/);
+    const row = svgs.csv.split("\n").find((line) => line.startsWith("1.8,"));
+    assert.ok(Math.abs(Number(row.split(",")[5]) - 0.818) < 1e-3, row);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});

@@ -163,7 +163,7 @@ impl Figure for Demo {
         "The object under KLI and under SLERP",
         "The Hopf curves of KLI and SLERP on S²",
         "The object at the moments of Table 1",
-        "Distance to the target, KLI's SLERP parameter σ(t), the drift of |q|",
+        "Distance to the target, KLI's SLERP parameter s(t) beside SLERP's u = t/T, the drift of |q|",
     ];
     const EXPORT: &'static str = "path";
 
@@ -197,7 +197,7 @@ impl Figure for Demo {
     }
 
     /// The path, a row a sample: `t`, the integrated quaternion `w, x, y, z`, KLI's SLERP
-    /// parameter σ(t) it sits at, the distance `‖target − q‖`, and its Hopf point. JSON adds the
+    /// parameter s(t) it sits at (not SLERP's clock u = t/T), the distance `‖target − q‖`, and its Hopf point. JSON adds the
     /// run (`p`, `target`, `finalTime`, `steps`).
     fn export(&self, csv: bool) -> String {
         const COLUMNS: [&str; 10] =
@@ -249,7 +249,7 @@ impl Demo {
             (
                 self.scene.slerp_at(t),
                 SLERP,
-                format!("SLERP  s = t/T = {}", fixed(self.scene.slerp_parameter(t), 3)),
+                format!("SLERP  u = t/T = {}", fixed(self.scene.clock_fraction(t), 3)),
             ),
         ];
         for (i, (q, color, label)) in panels.iter().enumerate() {

@@ -146,17 +146,18 @@ fn draw_distance(pen: &Pen, scene: &Scene, panel: impl Fn(f64) -> Panel) {
     pen.text(&times_label, (right, panel.top + 8.0), INK, 10.5, "right");
 }
 
-/// The time warp `s(t)` of KLI against SLERP's linear clock `t / T`.
+/// The time warp: KLI's SLERP parameter `s(t)` against SLERP's linear clock `u = t / T` (two
+/// different numbers: at t = 1.8 of the paper's example, s = 0.818 and u = 0.154).
 fn draw_warp(pen: &Pen, scene: &Scene, panel: &Panel) {
     let times = scene.path().times();
     let ticks: Vec<(f64, String)> =
         [0.0, 0.25, 0.5, 0.75, 1.0].iter().map(|&y| (y, trim(y))).collect();
-    panel.frame(pen, "SLERP parameter s(t)", &ticks);
-    let slerp = times.iter().map(|&x| scene.slerp_parameter(x));
+    panel.frame(pen, "SLERP parameter: KLI's s(t), SLERP's u = t/T", &ticks);
+    let slerp = times.iter().map(|&x| scene.clock_fraction(x));
     panel.series(pen, times, slerp, SLERP, 1.5, &[5.0, 4.0]);
     panel.series(pen, times, scene.warp().iter().copied(), KLI, 2.0, &[]);
-    pen.text("KLI", panel.at(panel.x_max * 0.08, 0.93), KLI, 11.0, "left");
-    pen.text("SLERP, s = t/T", panel.at(panel.x_max * 0.55, 0.3), SLERP, 11.0, "left");
+    pen.text("KLI, s(t)", panel.at(panel.x_max * 0.08, 0.93), KLI, 11.0, "left");
+    pen.text("SLERP, u = t/T", panel.at(panel.x_max * 0.55, 0.3), SLERP, 11.0, "left");
 }
 
 /// How far the chosen integrator lets `|q|` drift from 1, on a log scale; `panel` makes the

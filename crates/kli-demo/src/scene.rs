@@ -69,15 +69,16 @@ impl Scene {
         (q[n] * (1.0 - f) + q[next] * f).normalize()
     }
 
-    /// SLERP's parameter on the same clock: `s = t / T` (constant angular speed), in `[0, 1]`.
+    /// SLERP's parameter on the same clock, `u = t / T` (constant angular speed), in `[0, 1]`: not
+    /// KLI's SLERP parameter `s(t)` ([`Scene::warp`]).
     #[allow(clippy::manual_clamp)] // f64::clamp panics on bad bounds; nothing drawn may panic
-    pub fn slerp_parameter(&self, t: f64) -> f64 {
+    pub fn clock_fraction(&self, t: f64) -> f64 {
         if self.final_time() > 0.0 { (t / self.final_time()).max(0.0).min(1.0) } else { 1.0 }
     }
 
-    /// SLERP at [`Scene::slerp_parameter`]`(t)`.
+    /// SLERP at [`Scene::clock_fraction`]`(t)`.
     pub fn slerp_at(&self, t: f64) -> DQuat {
-        slerp::point_at(self.path.arc(), self.slerp_parameter(t))
+        slerp::point_at(self.path.arc(), self.clock_fraction(t))
     }
 
     /// Hopf images of the integrated samples.
