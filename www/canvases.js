@@ -2,8 +2,7 @@
 // Sizing canvases, for every page and <kli-figure>: each canvas's backing store is the number of
 // device pixels it covers on screen, so figures stay sharp on high-DPI screens and when a host
 // scales them (reveal.js scales a 960×700 slide by 1.48 on a 1920×1080 screen, with a CSS
-// transform that leaves the layout size, and so ResizeObserver, unchanged). Also the module
-// loader with its message on failure.
+// transform that leaves the layout size, and so ResizeObserver, unchanged).
 
 /** @typedef {{ width: number, height: number, ratio: number }} Size CSS pixels, and device pixels per CSS pixel */
 
@@ -84,21 +83,5 @@ export class Canvases {
   disconnect() {
     this.observer.disconnect();
     removeEventListener("resize", this.onResize);
-  }
-}
-
-/**
- * Loads the page's module; on failure says why in `status` and resolves to false.
- * @param {() => Promise<unknown>} init
- * @param {HTMLElement} status
- */
-export async function loadModule(init, status) {
-  try {
-    await init();
-    return true;
-  } catch (error) {
-    status.textContent = `The WebAssembly module could not be loaded: ${error instanceof Error ? error.message : error}`;
-    status.classList.add("error");
-    return false;
   }
 }

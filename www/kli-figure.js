@@ -12,11 +12,24 @@
 import { Camera } from "./camera.js";
 import { Figures } from "./figures.js";
 import { parseNumber } from "./numbers.js";
+import { DEFAULTS as KLI_DEFAULTS } from "./presets.js";
+import { parseText } from "./schema.js";
+import { STATES } from "./states.js";
 import { MODULES, PAGES, pageOfView } from "./pages.js";
 
 const VIEWS = PAGES.flatMap((page) => Object.keys(page.views));
-const ATTRIBUTES = ["view", "p", "r", "tolerance", "step", "integrator", "shortest-path", "t", "autoplay", "speed",
-  "keys", "times", "smoothness", "count", "coupling", "graph", "seed", "label"];
+/** A state key as an attribute: `shortestPath` → `shortest-path`. */
+const attributeName = (/** @type {string} */ key) => key.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`);
+/** The figure's own attributes, then each page state's keys (states.js), read as the pages read
+ *  their URL (schema.js). */
+const ATTRIBUTES = ["view", "t", "autoplay", "speed", "label",
+  ...new Set(Object.values(STATES).flatMap((state) => state.schema.map((entry) => attributeName(entry.key))))];
+/** What a figure shows when its attributes do not say. */
+const DEFAULTS = {
+  kli: KLI_DEFAULTS,
+  keyframes: { keys: [[1, 0, 0, 0], [0.8, 0.6, 0, 0], [0.6, 0, 0.8, 0], [0, 0, 0.6, 0.8]], times: [], smoothness: 1 },
+  swarm: { count: 200, coupling: 1, seed: 1 },
+};
 const SWARM_DT = 0.02;
 
 /** @type {Map<string, Promise<any>>} each page module, initialised once for the whole page */
@@ -33,11 +46,6 @@ function load(/** @type {keyof typeof MODULES} */ name) {
   return module;
 }
 
-/** "0,0,0,1" → [0, 0, 0, 1], as the pages read numbers; a word that is not one stays NaN, for the
- *  module to name. */
-const numbers = (/** @type {string} */ text) => text.split(",").map(parseNumber);
-/** "1,0,0,0; 0,1,0,0" → [[1, 0, 0, 0], [0, 1, 0, 0]]. */
-const quaternions = (/** @type {string} */ text) => text.split(";").map(numbers);
 
 const STYLE = `
 :host { display: block; position: relative; aspect-ratio: 4 / 3; min-height: 120px; contain: content; }
@@ -122,7 +130,7 @@ export class KliFigure extends HTMLElement {
     if (build !== this.built || !this.isConnected) return; // a newer rebuild is under way
     let demo;
     try {
-      demo = this.create(module, view);
+      demo = this.create(module, /** @type {keyof typeof STATES} */ (page.name));
     } catch (error) {
       return this.fail(error instanceof Error ? error.message : String(error));
     }
@@ -143,26 +151,16 @@ export class KliFigure extends HTMLElement {
     this.schedule();
   }
 
-  /** The module's object for `view`, from the attributes (its constructor checks them). */
-  create(/** @type {any} */ module, /** @type {string} */ view) {
-    const attr = (/** @type {string} */ name) => this.getAttribute(name);
-    const number = (/** @type {string} */ name) => (attr(name) === null ? undefined : parseNumber(attr(name) ?? ""));
-    if (view === "keyframes") {
-      const keys = quaternions(attr("keys") ?? "1,0,0,0; 0.8,0.6,0,0; 0.6,0,0.8,0; 0,0,0.6,0.8");
-      const times = attr("times") ? numbers(attr("times") ?? "") : [];
-      return new module.KeyframesDemo(new Float64Array(keys.flat()), new Float64Array(times), number("smoothness") ?? 1);
+  /** The module's object for the page `name`, from the attributes over the defaults, read as
+   *  the page reads its URL (its constructor checks them). */
+  create(/** @type {any} */ module, /** @type {keyof typeof STATES} */ name) {
+    /** @type {Record<string, any>} */
+    const state = { ...DEFAULTS[name] };
+    for (const { key, kind } of STATES[name].schema) {
+      const text = this.getAttribute(attributeName(key));
+      if (text !== null) state[key] = parseText(kind, text);
     }
-    if (view === "swarm") {
-      const options = { count: number("count") ?? 200, coupling: number("coupling") ?? 1, seed: number("seed") ?? 1 };
-      return new module.SwarmDemo(attr("graph") ? { ...options, graph: attr("graph") } : options);
-    }
-    const options = Object.fromEntries(Object.entries({
-      tolerance: number("tolerance"),
-      step: number("step"),
-      integrator: attr("integrator") ?? undefined,
-      shortestPath: attr("shortest-path") === null ? undefined : attr("shortest-path") !== "false",
-    }).filter(([, value]) => value !== undefined));
-    return new module.Demo(numbers(attr("p") ?? "0,0,0,1"), numbers(attr("r") ?? "0.5,0.5,0.5,0.5"), options);
+    return STATES[name].create(module, /** @type {any} */ (state));
   }
 
   fail(/** @type {string} */ text) {

@@ -324,7 +324,7 @@ test("keyboard and slider time changes update the object's label and the URL at 
   assert.match(await label(), /^The aircraft at t = 3\.30:/);
   await page.waitForFunction(() => new URL(location.href).searchParams.get("t") === "3.30", null, { timeout: 2000 });
   // …and the time is announced once it rests.
-  await page.waitForFunction(() => document.querySelector("#time-status").textContent === "t = 3.30 / T = 11.66");
+  await page.waitForFunction(() => document.querySelector("#status").textContent === "t = 3.30 / T = 11.66");
   assert.deepEqual(problems, []);
   await context.close();
 });

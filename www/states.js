@@ -1,0 +1,65 @@
+// @ts-check
+// Each page's state, for its page and for <kli-figure> alike: the schema (each key's URL key and
+// kind: schema.js), the module's run built from a state, and the key of the state an Error of the
+// module is about (by `error.argument`, never by its text).
+import { argumentOf } from "./runs.js";
+
+/** The KLI page's key of each argument the module can refuse; `maxTime` is the step's business. */
+const KLI_KEYS = /** @type {const} */ ({ p: "p", r: "r", tolerance: "tolerance", step: "step", maxTime: "step", integrator: "integrator", shortestPath: "shortestPath" });
+
+/** Two rotations (index.html, and the figures object, hopf, plots, filmstrip):
+ *  `?p=0,0,0,1&r=…&eps=1e-5&step=0.01&int=rk4&short=1`. */
+export const KLI = {
+  schema: /** @type {const} */ ([
+    { key: "p", url: "p", kind: "quaternion" },
+    { key: "r", url: "r", kind: "quaternion" },
+    { key: "tolerance", url: "eps", kind: "number" },
+    { key: "step", url: "step", kind: "number" },
+    { key: "integrator", url: "int", kind: "word" },
+    { key: "shortestPath", url: "short", kind: "flag" },
+  ]),
+  /** @param {any} module @param {import("./form.js").State} state */
+  create: (module, { p, r, tolerance, step, integrator, shortestPath }) =>
+    new module.Demo(p, r, { tolerance, step, integrator, shortestPath }),
+  /** @returns {keyof import("./form.js").State | undefined} */
+  keyOf: (/** @type {unknown} */ error) => {
+    const argument = argumentOf(error);
+    return Object.hasOwn(KLI_KEYS, argument) ? KLI_KEYS[/** @type {keyof typeof KLI_KEYS} */ (argument)] : undefined;
+  },
+};
+
+/** Many rotations (keyframes.html, and the keyframes figure): keys separated by ";", their
+ *  times, the chain's smoothness, `?keys=1,0,0,0;0.8,0.6,0,0;…&times=0,1,2&s=1`. */
+export const KEYFRAMES = {
+  schema: /** @type {const} */ ([
+    { key: "keys", url: "keys", kind: "quaternions" },
+    { key: "times", url: "times", kind: "numbers" },
+    { key: "smoothness", url: "s", kind: "number" },
+  ]),
+  /** @param {any} module @param {{ keys: number[][], times: number[], smoothness: number }} state */
+  create: (module, state) => new module.KeyframesDemo(new Float64Array(state.keys.flat()), new Float64Array(state.times), state.smoothness),
+  keyOf: (/** @type {unknown} */ error) => {
+    const argument = argumentOf(error);
+    return argument.startsWith("keys") ? "keys" : argument.startsWith("times") ? "times" : argument === "smoothness" ? "smoothness" : undefined;
+  },
+};
+
+/** The swarm (swarm.html, and the swarm figure): the LoheSwarm options,
+ *  `?K=1&n=500&graph=all&leaders=1&w=0&seed=1&spread=0.5` (`spread` absent: a uniform start). */
+export const SWARM = {
+  schema: /** @type {const} */ ([
+    { key: "coupling", url: "K", kind: "number" },
+    { key: "count", url: "n", kind: "number" },
+    { key: "graph", url: "graph", kind: "word" },
+    { key: "leaders", url: "leaders", kind: "number" },
+    { key: "frequencySpread", url: "w", kind: "number" },
+    { key: "seed", url: "seed", kind: "number" },
+    { key: "startSpread", url: "spread", kind: "number", optional: { flag: "uniform", shown: 0.5 } },
+  ]),
+  /** @param {any} module @param {object} state */
+  create: (module, state) => new module.SwarmDemo(state),
+  keyOf: (/** @type {unknown} */ error) => SWARM.schema.find((entry) => entry.key === argumentOf(error))?.key,
+};
+
+/** Each page's state, by the page's name (pages.js). */
+export const STATES = { kli: KLI, keyframes: KEYFRAMES, swarm: SWARM };
