@@ -136,6 +136,8 @@ export class KliFigure extends HTMLElement {
     }
     this.demo?.free();
     this.demo = demo;
+    /** @type {number | undefined} */
+    this.finalTime = undefined;
     this.figures?.sizing?.disconnect();
     const moduleView = page.views[view];
     this.figures = new Figures({ [moduleView]: this.canvas }, { layered: page.layered, still: page.still });
@@ -194,7 +196,15 @@ export class KliFigure extends HTMLElement {
   get end() {
     const demo = this.demo;
     if (!demo) return 0;
-    return this.kind === "keyframes" ? demo.endTime : this.kind === "swarm" ? Infinity : demo.finalTime;
+    if (this.kind === "keyframes") return demo.endTime;
+    if (this.kind === "swarm") return Infinity;
+    // A KLI run's T, read once from its path.
+    if (this.finalTime === undefined) {
+      const path = demo.path;
+      this.finalTime = path.finalTime;
+      path.free();
+    }
+    return this.finalTime;
   }
 
   schedule() {

@@ -33,16 +33,17 @@ const page = new Page({
   create: (state) => KLI.create(kli, state),
   keyOf: KLI.keyOf,
   route: (error) => errorPlace(page.form, error),
-  span: (run) => [0, run.finalTime],
-  readout: ({ run }, t) => (run ? `t = ${t.toFixed(2)} / T = ${run.finalTime.toFixed(2)}` : ""),
+  span: (run) => [0, pathOf(run).finalTime],
+  readout: ({ run }, t) => (run ? `t = ${t.toFixed(2)} / T = ${pathOf(run).finalTime.toFixed(2)}` : ""),
   timeInUrl: true,
-  data: { kind: "path", file: (run) => `kli-path-T${run.finalTime.toFixed(2)}` },
+  data: { kind: "path", file: (run) => `kli-path-T${pathOf(run).finalTime.toFixed(2)}` },
   file: (_, view, t) => `kli-${view}${view === "filmstrip" ? "" : `-${timeTag(t)}`}`,
   shown: (page, run, state) => {
     if (page.ui.time) page.ui.time.step = String(state.step);
-    fillTable(run, $("#moments tbody", HTMLTableSectionElement), $("#final-time", HTMLElement), $("#printed-notes", HTMLUListElement));
-    fillTypo(run, state.tolerance, $("#typo tbody", HTMLTableSectionElement), $("#typo-summary", HTMLElement));
-    if (page.ui.note) page.ui.note.textContent = describeRun(run, state);
+    const path = pathOf(run);
+    fillTable(run, path, $("#moments tbody", HTMLTableSectionElement), $("#final-time", HTMLElement), $("#printed-notes", HTMLUListElement));
+    fillTypo(run, path, state.tolerance, $("#typo tbody", HTMLTableSectionElement), $("#typo-summary", HTMLElement));
+    if (page.ui.note) page.ui.note.textContent = describeRun(run, path, state);
     if (!typingAxisAngle) fillAxisAngles(state);
   },
   rested: (page) => {
@@ -69,6 +70,16 @@ const page = new Page({
     return true;
   },
 });
+
+/** The run on show's path (the package's KliPath), asked of the module once a run. */
+let current = { run: /** @type {kli.Demo | null} */ (null), path: /** @type {kli.KliPath | null} */ (null) };
+function pathOf(/** @type {kli.Demo} */ run) {
+  if (current.run === run && current.path) return current.path;
+  current.path?.free();
+  const path = run.path;
+  current = { run, path };
+  return path;
+}
 
 /** p's and r's axis and angle fields from the state (a value that is no quaternion is left:
  *  its own message is shown already). */

@@ -84,7 +84,7 @@ test("dist/single/kli-figure.js: one classic script, the element with every modu
       return count;
     }));
     drawn.forEach((count, i) => assert.ok(count > 1000, `figure ${i} is blank`));
-    assert.ok(await page.evaluate(() => Math.abs(document.querySelector("kli-figure").demo.finalTime - 11.66) < 1e-9));
+    assert.ok(await page.evaluate(() => Math.abs(document.querySelector("kli-figure").end - 11.66) < 1e-9));
     assert.deepEqual(problems, []);
   } finally {
     await context.close();

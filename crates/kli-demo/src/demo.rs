@@ -5,6 +5,7 @@ use js_sys::{Array, Float64Array, Object, Reflect};
 use kli::quaternion::to_wxyz;
 use kli_wasm::error::{JsResult, throw};
 use kli_wasm::options::{KliOptionsObject, read_options};
+use kli_wasm::path::JsKliPath;
 use kli_wasm::read::{Order, QuaternionLike, quaternion};
 use wasm_bindgen::prelude::*;
 
@@ -54,28 +55,17 @@ impl Demo {
         self.flipped
     }
 
-    /// T, measured by Algorithm 1.
-    #[wasm_bindgen(getter, js_name = finalTime)]
-    pub fn final_time(&self) -> f64 {
-        self.scene.final_time()
+    /// The run's path, the package's own `KliPath` (its `finalTime`, `steps`, `target`,
+    /// `exactAt`, …): a new object each time it is asked for, for the page to keep and free.
+    #[wasm_bindgen(getter)]
+    pub fn path(&self) -> JsKliPath {
+        JsKliPath::new(self.scene.path().clone(), self.order)
     }
 
     /// T*, the closed form's reach time for the same tolerance.
     #[wasm_bindgen(getter, js_name = predictedTime)]
     pub fn predicted_time(&self) -> f64 {
         self.scene.predicted_time()
-    }
-
-    /// The number of steps n.
-    #[wasm_bindgen(getter)]
-    pub fn steps(&self) -> usize {
-        self.scene.path().steps()
-    }
-
-    /// The end actually used: r, or −r when shortestPath and p·r < 0.
-    #[wasm_bindgen(getter)]
-    pub fn target(&self) -> Vec<f64> {
-        self.order.write(self.scene.path().target()).to_vec()
     }
 
     /// Table 1's moments that lie before T, then T.
@@ -90,13 +80,7 @@ impl Demo {
         self.order.write(self.scene.integrated_at(finite(t).max(0.0))).to_vec()
     }
 
-    /// The exact q(t) of the closed form, as `KliPath.exactAt`.
-    #[wasm_bindgen(js_name = exactAt)]
-    pub fn exact_at(&self, t: f64) -> JsResult<Vec<f64>> {
-        self.scene.path().exact_at(t).map(|q| self.order.write(q).to_vec()).map_err(throw)
-    }
-
-    /// SLERP on the same clock, s = t / T.
+    /// SLERP on the same clock, at its parameter u = t / T.
     #[wasm_bindgen(js_name = slerpAt)]
     pub fn slerp_at(&self, t: f64) -> Vec<f64> {
         self.order.write(self.scene.slerp_at(finite(t).max(0.0))).to_vec()
