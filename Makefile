@@ -155,6 +155,7 @@ bench: pkg www setup-browser
 	node bench/swarm.mjs
 	node bench/spline.mjs
 	node bench/page.mjs
+	node bench/lighthouse.mjs
 
 clean:
 	cargo clean

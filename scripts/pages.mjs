@@ -1,86 +1,101 @@
 // What follows from the page list (www/pages.js):
 //   node scripts/pages.mjs names   the pages' names, for the Makefile
-//   node scripts/pages.mjs write   each page's modulepreload links (its script's static imports)
-//                                  and www/pkg/build.js, the service worker's file list and cache
-//                                  name (a hash of those files' contents)
-//   node scripts/pages.mjs check   exits 1 when a page's links are not what `write` would write
+//   node scripts/pages.mjs write   each page's bundle (its script and every module it imports,
+//                                  minified: one request beside the .wasm module's glue instead of
+//                                  a dozen) into www/pkg/<name>-page.js, the
+//                                  page's script tag pointing at it, and www/pkg/build.js, the
+//                                  service worker's file list and cache name (a hash of those files)
+//   node scripts/pages.mjs check   exits 1 when a page's script tag is not its bundle
 import { createHash } from "node:crypto";
 import { existsSync, readFileSync, writeFileSync } from "node:fs";
-import { dirname, join, normalize, relative } from "node:path";
-import { MODULES, PAGES } from "../www/pages.js";
+import { join, relative, resolve } from "node:path";
+import { build } from "esbuild";
+import { PAGES, bundle } from "../www/pages.js";
 
 const www = new URL("../www/", import.meta.url).pathname;
+const SCRIPT = /<script type="module" src="[^"]*"><\/script>/;
 
-/** The files a module script imports statically, itself first, relative to www/. */
-function importClosure(/** @type {string} */ script) {
-  const seen = new Set();
-  const visit = (file) => {
-    if (seen.has(file)) return;
-    seen.add(file);
-    const path = join(www, file);
-    if (!existsSync(path)) return; // a module not built yet (www/pkg): listed, not read
-    const text = readFileSync(path, "utf8");
-    for (const [, target] of text.matchAll(/^\s*(?:import|export)\s[^;]*?from\s*"(\.{1,2}\/[^"]+)"/gms)) {
-      visit(normalize(relative(www, join(dirname(path), target))));
-    }
-  };
-  visit(script);
-  return [...seen];
-}
-
-/** The page's HTML with its modulepreload links in place of the old ones. */
-function withPreloads(html, page) {
-  const links = importClosure(page.script).map((file) => `<link rel="modulepreload" href="${file}">\n`).join("");
-  const stripped = html.replace(/^<link rel="modulepreload"[^>]*>\n/gm, "");
+/** The page's HTML loading its bundle, and its .wasm from the start (the bundle asks for it
+ *  only once it runs). */
+function withBundle(html, page) {
+  if (!SCRIPT.test(html)) throw new Error(`${page.html}: no <script type="module" src="…"> to point at the bundle`);
   const anchor = '<link rel="stylesheet" href="style.css">\n';
-  if (!stripped.includes(anchor)) throw new Error(`${page.html}: no ${anchor.trim()} to put the links after`);
-  return stripped.replace(anchor, anchor + links);
+  if (!html.includes(anchor)) throw new Error(`${page.html}: no ${anchor.trim()} to put the preload after`);
+  const preload = `<link rel="modulepreload" href="pkg/${page.name}_demo.js">\n` +
+    `<link rel="preload" href="pkg/${page.name}_demo_bg.wasm" as="fetch" type="application/wasm" crossorigin>\n`;
+  return html
+    .replace(/^<link rel="(modulepreload|preload)"[^>]*>\n/gm, "")
+    .replace(anchor, anchor + preload)
+    .replace(SCRIPT, `<script type="module" src="${bundle(page)}"></script>`);
 }
 
-/** Every file a page needs offline, relative to www/. */
-function offlineFiles() {
-  const files = new Set(["style.css", "pages.js", "kli-figure.js"]);
+/** Every file the pages need offline, relative to www/: the element and its modules too. */
+async function offlineFiles() {
+  const element = await build({
+    entryPoints: [join(www, "kli-figure.js")], bundle: true, write: false, metafile: true, format: "esm",
+    external: ["./pkg/*"], logLevel: "error",
+  });
+  const modules = Object.keys(element.metafile.inputs).map((input) => relative(www, resolve(input)));
+  const files = new Set(["style.css", "kli-figure.css", ...modules]);
   for (const page of PAGES) {
     files.add(page.html);
-    for (const file of importClosure(page.script)) files.add(file);
+    files.add(bundle(page));
     files.add(`pkg/${page.name}_demo.js`);
     files.add(`pkg/${page.name}_demo_bg.wasm`);
   }
-  for (const file of importClosure("kli-figure.js")) files.add(file);
   return [...files].sort();
 }
 
+/** The .wasm modules' glue stays a module of its own beside the bundle (pkg/<name>_demo.js), so
+ *  that the page and anything else on it (a test, the console) share one instance. */
+const sharedModules = {
+  name: "shared-modules",
+  setup(build) {
+    build.onResolve({ filter: /\/pkg\/\w+_demo\.js$/ }, (args) => ({ path: `./${args.path.split("/").pop()}`, external: true }));
+  },
+};
+
 const command = process.argv[2];
-if (JSON.stringify(Object.keys(MODULES).sort()) !== JSON.stringify(PAGES.map((p) => p.name).sort())) {
-  throw new Error("www/pages.js: MODULES must have one loader a page, under the page's name");
-}
 if (command === "names") {
   console.log(PAGES.map((page) => page.name).join(" "));
 } else if (command === "write" || command === "check") {
-  let stale = [];
+  const stale = [];
   for (const page of PAGES) {
     const path = join(www, page.html);
     const html = readFileSync(path, "utf8");
-    const wanted = withPreloads(html, page);
+    const wanted = withBundle(html, page);
     if (wanted === html) continue;
     if (command === "write") writeFileSync(path, wanted);
     stale.push(page.html);
   }
   if (command === "check") {
     if (stale.length) {
-      console.error(`modulepreload links out of date in ${stale.join(", ")}: run node scripts/pages.mjs write`);
+      console.error(`not loading their bundle: ${stale.join(", ")}: run node scripts/pages.mjs write`);
       process.exit(1);
     }
   } else {
-    const files = offlineFiles();
+    await Promise.all(PAGES.map((page) => build({
+      entryPoints: [join(www, page.script)],
+      bundle: true,
+      format: "esm",
+      minify: true,
+      sourcemap: "linked",
+      target: "es2022",
+      outfile: join(www, bundle(page)),
+      logLevel: "error",
+      plugins: [sharedModules],
+    })));
+    const files = await offlineFiles();
+    const missing = files.filter((file) => !existsSync(join(www, file)));
+    if (missing.length) throw new Error(`files to cache that are not there: ${missing.join(", ")}`);
     const hash = createHash("sha256");
-    for (const file of files) hash.update(file).update(existsSync(join(www, file)) ? readFileSync(join(www, file)) : "");
-    const build = `// Written by scripts/pages.mjs from www/pages.js: what the service worker caches, and under which name.
+    for (const file of files) hash.update(file).update(readFileSync(join(www, file)));
+    const build_ = `// Written by scripts/pages.mjs from www/pages.js: what the service worker caches, and under which name.
 self.KLI_BUILD = ${JSON.stringify({ cache: `kli-${hash.digest("hex").slice(0, 12)}`, files: ["./", ...files] }, null, 1)};
 `;
     const out = join(www, "pkg/build.js");
-    if (!existsSync(out) || readFileSync(out, "utf8") !== build) writeFileSync(out, build);
-    if (stale.length) console.log(`modulepreload links written in ${stale.join(", ")}`);
+    if (!existsSync(out) || readFileSync(out, "utf8") !== build_) writeFileSync(out, build_);
+    if (stale.length) console.log(`script tags pointed at the bundles in ${stale.join(", ")}`);
   }
 } else {
   console.error("usage: node scripts/pages.mjs names | write | check");

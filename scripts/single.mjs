@@ -6,7 +6,7 @@
 import { build } from "esbuild";
 import { mkdir, readFile, writeFile } from "node:fs/promises";
 import { join } from "node:path";
-import { PAGES } from "../www/pages.js";
+import { PAGES, bundle as bundleOf } from "../www/pages.js";
 
 const root = new URL("../", import.meta.url).pathname;
 const www = join(root, "www");
@@ -33,7 +33,7 @@ const inlineWasm = {
 };
 
 /** The page's HTML with its style sheet and bundled script inside, and nothing to fetch. */
-async function single(page, script) {
+async function single({ html: page, script, ...rest }) {
   const bundle = await build({
     entryPoints: [join(www, script)],
     bundle: true,
@@ -55,7 +55,7 @@ async function single(page, script) {
   };
   replace(/^<link rel="(modulepreload|preload)"[^>]*>\n/gm, "");
   replace('<link rel="stylesheet" href="style.css">', () => `<style>\n${css}</style>`);
-  replace(`<script type="module" src="${script}"></script>`, () => `<script type="module">\n${code}</script>`);
+  replace(`<script type="module" src="${bundleOf({ html: page, script, ...rest })}"></script>`, () => `<script type="module">\n${code}</script>`);
   // The examples need the site's import map and vendored files: not part of the one-file pages.
   replace(/ · <a href="examples\/three\.html">With three\.js<\/a>/, "");
   await writeFile(join(out, page), html);
@@ -63,9 +63,9 @@ async function single(page, script) {
 }
 
 await mkdir(out, { recursive: true });
-for (const { html, script } of PAGES) {
-  const bytes = await single(html, script);
-  console.log(`dist/single/${html}: ${bytes} bytes`);
+for (const page of PAGES) {
+  const bytes = await single(page);
+  console.log(`dist/single/${page.html}: ${bytes} bytes`);
 }
 
 // <kli-figure> as one classic script with all three modules inside: `<script src="kli-figure.js">`

@@ -2,18 +2,29 @@
 import { createServer } from "node:http";
 import { readFile } from "node:fs/promises";
 import { extname, join, normalize } from "node:path";
+import { gzipSync } from "node:zlib";
 
 const TYPES = { ".html": "text/html", ".js": "text/javascript", ".css": "text/css", ".wasm": "application/wasm", ".json": "application/json" };
 
-/** Serves `root`; resolves to { origin, close }. */
-export async function serve(root) {
+/** Serves `root`; resolves to { origin, close }. With `hosted`, it answers as a static host does
+ *  (gzip for clients that take it, and a day's caching), for page-speed measurements. */
+export async function serve(root, { hosted = false } = {}) {
   const server = createServer(async (request, response) => {
     const path = normalize(decodeURIComponent(new URL(request.url, "http://x").pathname));
     const file = join(root, path.endsWith("/") ? path + "index.html" : path);
     try {
       if (!file.startsWith(root)) throw new Error("outside the root");
       const body = await readFile(file);
-      response.writeHead(200, { "content-type": TYPES[extname(file)] ?? "application/octet-stream" });
+      const headers = { "content-type": TYPES[extname(file)] ?? "application/octet-stream" };
+      if (hosted) {
+        headers["cache-control"] = "public, max-age=86400";
+        if (/\bgzip\b/.test(request.headers["accept-encoding"] ?? "")) {
+          headers["content-encoding"] = "gzip";
+          response.writeHead(200, headers);
+          return response.end(gzipSync(body));
+        }
+      }
+      response.writeHead(200, headers);
       response.end(body);
     } catch {
       response.writeHead(404).end();

@@ -15,7 +15,7 @@ import { parseNumber } from "./numbers.js";
 import { DEFAULTS as KLI_DEFAULTS } from "./presets.js";
 import { parseText } from "./schema.js";
 import { STATES } from "./states.js";
-import { MODULES, PAGES, pageOfView } from "./pages.js";
+import { PAGES, pageOfView } from "./pages.js";
 
 const VIEWS = PAGES.flatMap((page) => Object.keys(page.views));
 /** A state key as an attribute: `shortestPath` → `shortest-path`. */
@@ -32,6 +32,13 @@ const DEFAULTS = {
 };
 const SWARM_DT = 0.02;
 
+/** Each page's module, loaded when the first figure that needs it appears: one static import
+ *  each, so that bundlers (`make single`) find them; one a page of pages.js. */
+const MODULES = {
+  kli: () => import("./pkg/kli_demo.js"),
+  keyframes: () => import("./pkg/keyframes_demo.js"),
+  swarm: () => import("./pkg/swarm_demo.js"),
+};
 /** @type {Map<string, Promise<any>>} each page module, initialised once for the whole page */
 const loaded = new Map();
 function load(/** @type {keyof typeof MODULES} */ name) {

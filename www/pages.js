@@ -1,14 +1,14 @@
 // @ts-check
-// The demo's pages, in one place. The Makefile (which modules to build), `make single` (which
-// pages to bundle), the service worker (what to cache, and its cache name), <kli-figure> (which
-// module draws which view) and the pages' modulepreload links (scripts/pages.mjs writes them)
+// The demo's pages, in one place. The Makefile (which modules to build), the pages' bundles and
+// their script tags (scripts/pages.mjs), `make single` (which pages to inline), the service
+// worker (what to cache, and its cache name) and <kli-figure> (which module draws which view)
 // all read this list.
 
 /**
  * @typedef {object} Page
  * @property {string} name the page's word, also its module's (`<name>_demo`) and its Cargo feature's (`<name>-page`)
  * @property {string} html
- * @property {string} script the page's module script
+ * @property {string} script the page's module script (bundled by `make www` into pkg/<name>-page.js)
  * @property {string} title the link text in the pages' navigation
  * @property {Readonly<Record<string, string>>} views each <kli-figure> view its module draws: the module's name for it
  * @property {readonly string[]} layered the module's views drawn as a still layer with a moving part over it
@@ -24,7 +24,7 @@ export const PAGES = [
   },
   {
     name: "keyframes", html: "keyframes.html", script: "keyframes.js", title: "Many rotations",
-    views: { keyframes: "hopf" }, layered: [], still: [],
+    views: { keyframes: "hopf" }, layered: ["hopf", "plots"], still: [],
   },
   {
     name: "swarm", html: "swarm.html", script: "swarm.js", title: "The swarm",
@@ -32,16 +32,11 @@ export const PAGES = [
   },
 ];
 
-/** Each page's module, loaded on demand. One static import each, so that bundlers (`make single`)
- *  find them; `scripts/pages.mjs` checks that the keys are the pages' names. */
-export const MODULES = {
-  kli: () => import("./pkg/kli_demo.js"),
-  keyframes: () => import("./pkg/keyframes_demo.js"),
-  swarm: () => import("./pkg/swarm_demo.js"),
-};
-
 /** The page whose module draws `view`, if any. */
 export const pageOfView = (/** @type {string} */ view) => PAGES.find((page) => Object.hasOwn(page.views, view));
+
+/** A page's bundle, which its HTML loads. */
+export const bundle = (/** @type {Page} */ page) => `pkg/${page.name}-page.js`;
 
 /** A page by name. */
 export const page = (/** @type {string} */ name) => /** @type {Page} */ (PAGES.find((p) => p.name === name));

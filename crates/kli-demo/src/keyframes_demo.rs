@@ -275,14 +275,12 @@ impl Figure for KeyframesDemo {
     const EXPORT: &'static str = "curves";
 
     fn paint(&self, view: usize, layer: Layer, pen: &Pen, frame: &Frame) {
-        if !layer.still() {
-            return;
-        }
         let (width, height, t) = (frame.width, frame.height, frame.t);
         match view {
-            0 => self.paint_objects(pen, width, height, t),
-            1 => self.paint_sphere(pen, frame),
-            _ => self.paint_plots(pen, width, height, t),
+            0 if layer.still() => self.paint_objects(pen, width, height, t),
+            0 => {}
+            1 => self.paint_sphere(pen, frame, layer),
+            _ => self.paint_plots(pen, width, height, t, layer),
         }
     }
 
@@ -346,10 +344,24 @@ impl KeyframesDemo {
         }
     }
 
-    fn paint_sphere(&self, pen: &Pen, frame: &Frame) {
+    /// The curves and the keys (the still part), and each curve's point at t (the moving part).
+    fn paint_sphere(&self, pen: &Pen, frame: &Frame, layer: Layer) {
         let viewport = frame.sphere_viewport();
         let view = View { pen, viewport: &viewport, camera: &frame.camera };
-        let t = frame.t;
+        if layer.still() {
+            self.paint_curves(&view);
+        }
+        if layer != Layer::Still {
+            let curves: [&dyn Curve; 3] = [&self.chain, &self.squad, &self.slerp];
+            for (curve, colour) in curves.iter().zip(COLOURS) {
+                let point = view.at(hopf(curve.at(frame.t)));
+                pen.disc(point, 5.0, Some(colour), Some(("#ffffff", 1.5)));
+            }
+        }
+    }
+
+    fn paint_curves(&self, view: &View) {
+        let pen = view.pen;
         let grid = grid();
         let dashes: [&[f64]; 3] = [&[], &[6.0, 4.0], &[2.0, 3.0]];
         draw_grid_back(&view, &grid);
@@ -370,13 +382,10 @@ impl KeyframesDemo {
             pen.text(&format!("k{i}"), (x + 9.0, y - 9.0), INK, 11.0, "left");
         }
         pen.alpha(1.0);
-        let curves: [&dyn Curve; 3] = [&self.chain, &self.squad, &self.slerp];
-        for (curve, colour) in curves.iter().zip(COLOURS) {
-            pen.disc(view.at(hopf(curve.at(t))), 5.0, Some(colour), Some(("#ffffff", 1.5)));
-        }
     }
 
-    fn paint_plots(&self, pen: &Pen, width: f64, height: f64, t: f64) {
+    /// The two panels and their curves (the still part), and the time t on each (the moving part).
+    fn paint_plots(&self, pen: &Pen, width: f64, height: f64, t: f64, layer: Layer) {
         let wide = width >= 1.5 * height;
         let (cell_w, cell_h) = if wide { (width / 2.0, height) } else { (width, height / 2.0) };
         let (start, end) = (self.start_time(), self.end_time());
@@ -402,12 +411,16 @@ impl KeyframesDemo {
             };
             let ticks: Vec<(f64, String)> =
                 [0.0, 0.5, 1.0].iter().map(|&f| (f * top_value, trim(f * top_value))).collect();
-            panel.frame_with(pen, title, &ticks, "t");
-            for (s, colour) in self.series.iter().zip(COLOURS).rev() {
-                panel.series(pen, &self.times, values(s).into_iter(), colour, 1.8, &[]);
+            if layer.still() {
+                panel.frame_with(pen, title, &ticks, "t");
+                for (s, colour) in self.series.iter().zip(COLOURS).rev() {
+                    panel.series(pen, &self.times, values(s).into_iter(), colour, 1.8, &[]);
+                }
             }
-            let (x, _) = panel.at(t.max(start).min(end), 0.0);
-            pen.line((x, panel.top), (x, panel.top + panel.height), MUTED, 1.0, &[2.0, 3.0]);
+            if layer != Layer::Still {
+                let (x, _) = panel.at(t.max(start).min(end), 0.0);
+                pen.line((x, panel.top), (x, panel.top + panel.height), MUTED, 1.0, &[2.0, 3.0]);
+            }
         }
     }
 }

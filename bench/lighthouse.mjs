@@ -1,0 +1,44 @@
+// Lighthouse (mobile: its default, a mid-range phone on a slow 4G network, simulated) on every
+// page and both examples, served as a static host serves them (gzip, caching): performance,
+// accessibility and best practices, and the cumulative layout shift. Targets (issue 14):
+// performance ≥ 0.95, accessibility 1.0, best practices 1.0, CLS ≤ 0.1.
+//   node bench/lighthouse.mjs
+// Lighthouse is installed on first use into target/bench-tools (not a dev dependency: it is large
+// and only the benchmark needs it).
+import { execFile, execFileSync } from "node:child_process";
+import { promisify } from "node:util";
+import { existsSync, readFileSync } from "node:fs";
+import { join } from "node:path";
+import { serve } from "../scripts/static-server.mjs";
+
+const root = new URL("../", import.meta.url).pathname;
+const tools = join(root, "target/bench-tools");
+const bin = join(tools, "node_modules/.bin/lighthouse");
+if (!existsSync(bin)) {
+  console.log("installing lighthouse 12 into target/bench-tools (once)");
+  execFileSync("npm", ["install", "--prefix", tools, "--no-audit", "--no-fund", "--silent", "lighthouse@12"], { stdio: "inherit" });
+}
+
+const PAGES = ["index.html", "keyframes.html", "swarm.html", "examples/figures.html", "examples/three.html"];
+const www = await serve(join(root, "www"), { hosted: true });
+try {
+  for (const page of PAGES) {
+    const out = join(tools, `lighthouse-${page.replace(/\W/g, "-")}.json`);
+    // Asynchronously: the server answering Lighthouse runs in this process.
+    await promisify(execFile)(bin, [`${www.origin}/${page}`, "--quiet", "--output=json", `--output-path=${out}`,
+      "--only-categories=performance,accessibility,best-practices",
+      "--chrome-flags=--headless --no-sandbox --disable-gpu --disable-background-networking --disable-component-update --disable-sync"],
+    { env: { ...process.env, CHROME_PATH: "/usr/bin/chromium" } });
+    const report = JSON.parse(readFileSync(out, "utf8"));
+    const score = (name) => report.categories[name].score.toFixed(2);
+    const audit = (name) => report.audits[name].displayValue;
+    const met = report.categories.performance.score >= 0.95 && report.categories.accessibility.score === 1 &&
+      report.categories["best-practices"].score === 1 && report.audits["cumulative-layout-shift"].numericValue <= 0.1;
+    console.log(`lighthouse ${page}: performance ${score("performance")}, accessibility ${score("accessibility")}, ` +
+      `best practices ${score("best-practices")}, CLS ${audit("cumulative-layout-shift")} ` +
+      `(FCP ${audit("first-contentful-paint")}, LCP ${audit("largest-contentful-paint")}, TBT ${audit("total-blocking-time")}): ` +
+      `${met ? "met" : "MISSED"} (targets ≥ 0.95, 1, 1, ≤ 0.1)`);
+  }
+} finally {
+  www.close();
+}
