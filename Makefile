@@ -94,7 +94,9 @@ www/pkg/.built: $(WWW_SOURCES) pkg/.built
 	@# The examples import the package and three.js by name (an import map): both served locally.
 	mkdir -p www/examples/vendor/kli www/examples/vendor/three
 	cp pkg/kli.js pkg/kli_bg.wasm www/examples/vendor/kli/
-	cp node_modules/three/build/three.module.js node_modules/three/build/three.core.js www/examples/vendor/three/
+	@# three.js as one minified module with its source map, as an app's bundler would serve it.
+	esbuild node_modules/three/build/three.module.js --bundle --format=esm --minify --sourcemap \
+	  --log-level=warning --outfile=www/examples/vendor/three/three.module.js
 	for page in $(PAGES); do \
 	  cargo build --release -p kli-demo --lib --target $(TARGET) --no-default-features --features $$page-page; \
 	  wasm-bindgen --target web --out-dir www/pkg --out-name $${page}_demo $(RELEASE)/kli_demo.wasm; \

@@ -42,6 +42,8 @@ export class Figures {
     this.layers = new Map();
     /** @type {Set<Name>} views whose still part must be drawn again */
     this.stale = new Set();
+    /** @type {Set<Name>} still views to be drawn in the next task */
+    this.later = new Set();
     /** @type {Canvases<Name> | null} */
     this.sizing = null;
   }
@@ -97,11 +99,34 @@ export class Figures {
       if (!frame) continue;
       drawn = true;
       const ctx = context(this.canvases[name]);
+      if (this.stillViews.includes(name)) {
+        if (this.stale.has(name)) this.paintLater(name, t);
+        continue;
+      }
       if (this.layeredViews.includes(name)) this.layered(name, ctx, frame);
-      else if (!this.stillViews.includes(name) || this.stale.has(name)) this.paint(name, ctx, frame);
+      else this.paint(name, ctx, frame);
       this.stale.delete(name);
     }
     return drawn;
+  }
+
+  /**
+   * Draws a still view in a task of its own after this frame: it waits for nothing that moves,
+   * and the frame (the first one above all) is not held up by it.
+   * @param {Name} name
+   * @param {number} t
+   */
+  paintLater(name, t) {
+    this.stale.delete(name);
+    this.later.add(name);
+    if (this.later.size > 1) return;
+    setTimeout(() => {
+      for (const view of this.later) {
+        const frame = this.frame(view, t);
+        if (frame) this.paint(view, context(this.canvases[view]), frame);
+      }
+      this.later.clear();
+    });
   }
 
   /**
