@@ -31,22 +31,19 @@ pub(crate) struct Frame {
 impl Frame {
     pub fn read(frame: &JsValue) -> Frame {
         // Reflect.get catches a throwing getter or Proxy trap: the field is then missing.
-        let field = |name: &str| {
-            Reflect::get(frame, &JsValue::from_str(name))
-                .ok()
+        let field = |index: usize| {
+            FIELDS
+                .with(|names| Reflect::get(frame, &names[index]).ok())
                 .and_then(|v| v.as_f64())
                 .filter(|v| v.is_finite())
         };
         let [azimuth, elevation] = crate::default_angles();
         Frame {
-            width: size(field("width").unwrap_or(1.0)),
-            height: size(field("height").unwrap_or(1.0)),
-            pixel_ratio: field("pixelRatio").unwrap_or(1.0).clamp(0.1, 16.0),
-            t: finite(field("t").unwrap_or(0.0)),
-            camera: Camera::orbit(
-                field("azimuth").unwrap_or(azimuth),
-                field("elevation").unwrap_or(elevation),
-            ),
+            width: size(field(0).unwrap_or(1.0)),
+            height: size(field(1).unwrap_or(1.0)),
+            pixel_ratio: field(2).unwrap_or(1.0).clamp(0.1, 16.0),
+            t: finite(field(3).unwrap_or(0.0)),
+            camera: Camera::orbit(field(4).unwrap_or(azimuth), field(5).unwrap_or(elevation)),
         }
     }
 
@@ -54,6 +51,13 @@ impl Frame {
     pub fn sphere_viewport(&self) -> Viewport {
         Viewport::fitting(0.0, 0.0, self.width, self.height, 1.22)
     }
+}
+
+thread_local! {
+    /// A frame's field names as JavaScript strings, made once: every view reads a frame every
+    /// animation frame.
+    static FIELDS: [JsValue; 6] =
+        ["width", "height", "pixelRatio", "t", "azimuth", "elevation"].map(JsValue::from_str);
 }
 
 /// Which part of a view to draw. A page keeps the still part of a view (it changes only with

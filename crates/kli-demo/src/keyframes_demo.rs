@@ -364,13 +364,13 @@ impl KeyframesDemo {
         let pen = view.pen;
         let grid = grid();
         let dashes: [&[f64]; 3] = [&[], &[6.0, 4.0], &[2.0, 3.0]];
-        draw_grid_back(&view, &grid);
+        draw_grid_back(view, &grid);
         for (s, (colour, dash)) in self.series.iter().zip(COLOURS.iter().zip(dashes)) {
             view.polyline_on(&s.hopf, Side::Back, (colour, 2.0, dash));
         }
         pen.alpha(1.0);
-        draw_globe(&view);
-        draw_grid_front(&view, &grid);
+        draw_globe(view);
+        draw_grid_front(view, &grid);
         for (s, (colour, dash)) in self.series.iter().zip(COLOURS.iter().zip(dashes)) {
             view.polyline_on(&s.hopf, Side::Front, (colour, 2.5, dash));
         }
