@@ -90,6 +90,7 @@ PAGES := $(shell node scripts/pages.mjs names)
 www: setup-rust setup-node pkg www/pkg/.built
 	node scripts/pages.mjs write
 www/pkg/.built: $(WWW_SOURCES) pkg/.built
+	@test -n "$(PAGES)" || { echo "no pages: node scripts/pages.mjs names printed nothing"; exit 1; }
 	rm -rf www/pkg www/examples/vendor
 	@# The examples import the package and three.js by name (an import map): both served locally.
 	mkdir -p www/examples/vendor/kli www/examples/vendor/three

@@ -9,7 +9,6 @@
 import { createHash } from "node:crypto";
 import { existsSync, readFileSync, writeFileSync } from "node:fs";
 import { join, relative, resolve } from "node:path";
-import { build } from "esbuild";
 import { PAGES, bundle } from "../www/pages.js";
 
 const www = new URL("../www/", import.meta.url).pathname;
@@ -56,6 +55,8 @@ const sharedModules = {
 };
 
 const command = process.argv[2];
+// esbuild only for `write`: `names` runs when the Makefile is read, before npm has installed it.
+const { build } = command === "write" ? await import("esbuild") : { build: undefined };
 if (command === "names") {
   console.log(PAGES.map((page) => page.name).join(" "));
 } else if (command === "write" || command === "check") {
