@@ -346,9 +346,17 @@ export class Page {
     const paused = (this.d.timeInUrl && t !== null) || Page.reducedMotion();
     // The clock runs before the first URL is written, so that a playing page's URL has no time.
     if (!paused && this.d.span) this.clock.play();
+    // A number beyond its slider is refused here, as the slider would refuse it.
+    const beyond = this.schema.outOfRange(candidate).map(({ key, min, max, value }) => {
+      /** @type {Record<string, any>} */ (candidate)[key] = this.d.defaults[key];
+      return Object.assign(new Error(`${key} must be from ${min} to ${max} on this page, as its slider (got ${value})`),
+        { argument: key, kind: "out-of-range" });
+    });
     const { run, state, errors } = buildAll(candidate, this.d.defaults, this.d.create, this.d.keyOf);
+    errors.unshift(...beyond);
+    // The form first: what the page shows beside it (a slider's value) reads the form.
+    this.schema.fill(state ?? this.d.defaults);
     this.show(run ?? this.d.create(this.d.defaults), state ?? this.d.defaults);
-    this.schema.fill(this.state);
     // A number typed into the URL reads back in its text field as it was written ("1e-4").
     for (const { key, kind } of this.d.schema) {
       const field = kind === "number" && texts[key] !== undefined ? this.schema.fields(key)[0] : null;

@@ -132,6 +132,22 @@ export class Schema {
   }
 
   /**
+   * The numbers of `state` outside their slider's range: a URL may ask for any number, but the
+   * page takes what its sliders take (a swarm of 10⁶ would block the page for seconds).
+   * @param {State} state
+   * @returns {{ key: string, min: number, max: number, value: number }[]}
+   */
+  outOfRange(state) {
+    return this.entries.flatMap(({ key, kind }) => {
+      const [field] = this.fields(key);
+      const value = state[key];
+      if (kind !== "number" || !(field instanceof HTMLInputElement) || field.type !== "range" || !Number.isFinite(value)) return [];
+      const [min, max] = [Number(field.min), Number(field.max)];
+      return value < min || value > max ? [{ key, min, max, value }] : [];
+    });
+  }
+
+  /**
    * The URL's query for `state`, then `extra` (already texts; undefined left out).
    * @param {State} state
    * @param {Record<string, string | undefined>} [extra]

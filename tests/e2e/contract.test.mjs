@@ -179,3 +179,20 @@ test("two SLERP parameters, two names: SLERP's clock u = t/T in the object view,
     await context.close();
   }
 });
+
+test("a URL number beyond its slider is refused as the slider would refuse it (no swarm of 10⁶, no K = 1e308)", async () => {
+  const { page, context, problems } = await open("swarm.html?n=1000000&K=1e308", { reducedMotion: "reduce" });
+  try {
+    assert.match(await page.textContent("#count-error"), /^count must be from 2 to 2000 on this page, as its slider \(got 1000000\)/);
+    assert.match(await page.textContent("#coupling-error"), /^coupling must be from -3 to 6 on this page/);
+    // The preset's values stand in, and the sliders, the readout and the run agree.
+    assert.equal(await page.inputValue("[name=count]"), "500");
+    assert.equal(await page.evaluate(() => document.querySelector("#count-value").textContent), "500");
+    const readout = await page.textContent("#readout");
+    assert.match(readout, /R = 0\.\d{3}/);
+    assert.doesNotMatch(readout, /NaN|Infinity/);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
