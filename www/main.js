@@ -35,6 +35,7 @@ const page = new Page({
   route: (error) => errorPlace(page.form, error),
   span: (run) => [0, pathOf(run).finalTime],
   readout: ({ run }, t) => (run ? `t = ${t.toFixed(2)} / T = ${pathOf(run).finalTime.toFixed(2)}` : ""),
+  stride: (state) => state.step,
   timeInUrl: true,
   data: { kind: "path", file: (run) => `kli-path-T${pathOf(run).finalTime.toFixed(2)}` },
   file: (_, view, t) => `kli-${view}${view === "filmstrip" ? "" : `-${timeTag(t)}`}`,

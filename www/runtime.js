@@ -52,6 +52,7 @@ import { throttledUrl } from "./url.js";
  * @property {(page: Page<State, R>, t: number) => string} readout
  * @property {{ kind: string, file: (run: R, t: number) => string }} data what the page saves as CSV and JSON
  * @property {(run: R, view: string, t: number) => string} file a saved view's file name
+ * @property {(state: State) => number} [stride] the smallest step of ← and → (else 1/200 of the span)
  * @property {boolean} [timeInUrl] whether a paused page writes its time into the URL
  * @property {(page: Page<State, R>, run: R, state: State) => void} [shown] what the page adds when a run is shown
  * @property {(page: Page<State, R>, name: string) => boolean} [input] a form field the page handles itself
@@ -311,7 +312,8 @@ export class Page {
       step: (by) => {
         if (!this.d.span) return;
         this.pause();
-        this.seek(this.clock.t + by * Math.max(this.state.step ?? 0, (this.clock.end - this.clock.start) / 200));
+        const span = this.clock.end - this.clock.start;
+        this.seek(this.clock.t + by * Math.max(this.d.stride?.(this.state) ?? 0, span / 200));
       },
       toStart: () => (this.d.span ? this.seek(this.clock.start) : this.rebuild(this.state)),
       toEnd: () => {

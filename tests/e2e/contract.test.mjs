@@ -196,3 +196,65 @@ test("a URL number beyond its slider is refused as the slider would refuse it (n
     await context.close();
   }
 });
+
+test("the figure interface under hostile input: every call draws with defaults or throws a named Error; 3,000 refusals leave every object working", async () => {
+  const { page, context, problems } = await open("index.html", { reducedMotion: "reduce" });
+  try {
+    const result = await page.evaluate(async () => {
+      const modules = {
+        kli: await import("./pkg/kli_demo.js"),
+        keyframes: await import("./pkg/keyframes_demo.js"),
+        swarm: await import("./pkg/swarm_demo.js"),
+      };
+      await modules.keyframes.default();
+      await modules.swarm.default();
+      const figures = [
+        [new modules.kli.Demo([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]), ["object", "hopf", "filmstrip", "plots"], "path"],
+        [new modules.keyframes.KeyframesDemo(new Float64Array([1, 0, 0, 0, 0.8, 0.6, 0, 0, 0.6, 0, 0.8, 0]), new Float64Array(0), 1), ["objects", "hopf", "plots"], "curves"],
+        [new modules.swarm.SwarmDemo({ count: 20 }), ["hopf", "objects", "plots"], "swarm"],
+      ];
+      const ctx = document.createElement("canvas").getContext("2d");
+      const hostileFrames = [null, undefined, 0, "frame", {}, { width: NaN, height: Infinity, pixelRatio: -1, t: "x" },
+        { width: 1e300, height: -5, t: 1e308, azimuth: -Infinity, elevation: 1e9 },
+        new Proxy({}, { get() { throw new Error("trap"); } }),
+        { get width() { throw new Error("getter"); }, height: 50 }, { width: 10n }, { width: Symbol("w") }];
+      const unnamed = [];
+      let refusals = 0;
+      const refused = (f) => {
+        try { f(); } catch (error) {
+          refusals++;
+          if (!error?.argument || !error?.kind) unnamed.push(String(error));
+          return true;
+        }
+        return false;
+      };
+      for (let round = 0; round < 100; round++) {
+        for (const [figure, views, kind] of figures) {
+          for (const frame of hostileFrames) {
+            for (const view of views) {
+              figure.draw(view, ctx, frame);
+              figure.draw(view, ctx, frame, "still");
+              if (!figure.toSvg(view, frame).startsWith("<svg")) unnamed.push(`toSvg ${view}`);
+            }
+          }
+          refused(() => figure.draw("nope", ctx, {}));
+          refused(() => figure.draw(views[0], ctx, {}, "sideways"));
+          refused(() => figure.toSvg("", {}));
+          refused(() => figure.export("everything", "csv"));
+          refused(() => figure.export(kind, "xml"));
+          if (round === 0 && !figure.export(kind, "json").startsWith("{")) unnamed.push(`export ${kind}`);
+        }
+      }
+      // Still working: a real frame draws, and the SVG holds numbers, never NaN.
+      const svgs = figures.map(([figure, views]) => figure.toSvg(views[1], { width: 300, height: 200, t: 1 }));
+      for (const [figure] of figures) figure.free();
+      return { refusals, unnamed, nan: svgs.filter((svg) => /NaN|Infinity/.test(svg)).length };
+    });
+    assert.equal(result.refusals, 100 * 3 * 5);
+    assert.deepEqual(result.unnamed, []);
+    assert.equal(result.nan, 0);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
