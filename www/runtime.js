@@ -359,22 +359,8 @@ export class Page {
     // The form first: what the page shows beside it (a slider's value) reads the form.
     this.schema.fill(state ?? this.d.defaults);
     this.show(run ?? this.d.create(this.d.defaults), state ?? this.d.defaults);
-    // A number typed into the URL reads back in its text field as it was written ("1e-4").
-    for (const { key, kind } of this.d.schema) {
-      const field = kind === "number" && texts[key] !== undefined ? this.schema.fields(key)[0] : null;
-      if (field && field.type !== "range") field.value = texts[key];
-    }
-    for (const error of errors) {
-      const key = this.d.keyOf(error);
-      const kind = this.d.schema.find((e) => e.key === key)?.kind;
-      // A refused list stays in its text field, to mend (a slider or a select cannot hold it).
-      if (key && texts[key] !== undefined && (kind === "quaternion" || kind === "quaternions" || kind === "numbers")) {
-        const fields = this.schema.fields(key);
-        if (kind === "quaternion") fields.forEach((field, i) => (field.value = texts[key].split(",")[i] ?? ""));
-        else fields[0].value = texts[key];
-      }
-      this.showError(error);
-    }
+    this.schema.keepTexts(texts, errors.map((error) => this.d.keyOf(error)));
+    errors.forEach((error) => this.showError(error));
     if (!paused) this.play();
     else this.seek(t === null ? this.clock.start : parseNumber(t));
     this.ui.load.textContent = "";

@@ -132,6 +132,23 @@ export class Schema {
   }
 
   /**
+   * Puts the URL's own texts back into the text fields: a number as it was written ("1e-4"), and
+   * a refused list or quaternion, to mend (a slider or a select cannot hold a text).
+   * @param {Record<string, string>} texts what the URL gave, by key (see `fromUrl`)
+   * @param {(string | undefined)[]} refused the keys the module refused
+   */
+  keepTexts(texts, refused) {
+    for (const { key, kind } of this.entries) {
+      const text = texts[key];
+      if (text === undefined) continue;
+      const fields = this.fields(key);
+      if (kind === "number" && fields[0].type !== "range") fields[0].value = text;
+      else if (kind === "quaternion" && refused.includes(key)) fields.forEach((field, i) => (field.value = text.split(",")[i] ?? ""));
+      else if ((kind === "quaternions" || kind === "numbers") && refused.includes(key)) fields[0].value = text;
+    }
+  }
+
+  /**
    * The numbers of `state` outside their slider's range: a URL may ask for any number, but the
    * page takes what its sliders take (a swarm of 10⁶ would block the page for seconds).
    * @param {State} state
