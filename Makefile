@@ -57,7 +57,7 @@ ENTRIES := swarm spline
 # `make demo` serves at once when nothing changed (tests/js/build.test.mjs checks it).
 CORE_SOURCES := Cargo.toml Cargo.lock $(shell find src -name '*.rs')
 PKG_SOURCES := $(CORE_SOURCES) crates/kli-wasm/Cargo.toml $(shell find crates/kli-wasm/src -name '*.rs') \
-               scripts/package-json.mjs
+               scripts/package-json.mjs scripts/glue.mjs
 WWW_SOURCES := $(PKG_SOURCES) crates/kli-demo/Cargo.toml $(shell find crates/kli-demo/src -name '*.rs') \
                scripts/pages.mjs www/pages.js node_modules/.installed
 pkg: setup-rust setup-node pkg/.built
@@ -73,6 +73,7 @@ pkg/.built: $(PKG_SOURCES)
 	for entry in $(ENTRIES); do \
 	  wasm-bindgen --target web --out-dir pkg --out-name $$entry target/$$entry-entry/$(TARGET)/release/kli_wasm.wasm; \
 	done
+	node scripts/glue.mjs pkg/kli.js $(foreach entry,$(ENTRIES),pkg/$(entry).js)
 	for module in kli $(ENTRIES); do wasm-opt -O3 $(WASM_FEATURES) pkg/$${module}_bg.wasm -o pkg/$${module}_bg.wasm; done
 	cp README.md pkg/
 	node scripts/package-json.mjs
@@ -101,6 +102,7 @@ www/pkg/.built: $(WWW_SOURCES) pkg/.built
 	for page in $(PAGES); do \
 	  cargo build --release -p kli-demo --lib --target $(TARGET) --no-default-features --features $$page-page; \
 	  wasm-bindgen --target web --out-dir www/pkg --out-name $${page}_demo $(RELEASE)/kli_demo.wasm; \
+	  node scripts/glue.mjs www/pkg/$${page}_demo.js; \
 	  wasm-opt -O3 $(WASM_FEATURES) www/pkg/$${page}_demo_bg.wasm -o www/pkg/$${page}_demo_bg.wasm; \
 	  echo "www/pkg/$${page}_demo_bg.wasm: $$(stat -c %s www/pkg/$${page}_demo_bg.wasm) bytes, $$(gzip -9c www/pkg/$${page}_demo_bg.wasm | wc -c) gzipped"; \
 	done

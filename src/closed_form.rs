@@ -56,8 +56,10 @@ pub fn reach_time(arc: &GreatArc, tolerance: f64) -> f64 {
         return 0.0;
     }
     let x = 0.5 * tolerance;
-    let tan_half = x / ((1.0 - x) * (1.0 + x)).sqrt();
-    (arc.half_angle_tan() / tan_half).ln().max(0.0)
+    // ln(tan(arcsin x)) as logarithms, so a subnormal ε (whose half rounds to 0) gives a finite
+    // time, not ln(·/0) = ∞.
+    let ln_tan_half = tolerance.ln() - std::f64::consts::LN_2 - 0.5 * ((1.0 - x) * (1.0 + x)).ln();
+    (arc.half_angle_tan().ln() - ln_tan_half).max(0.0)
 }
 
 /// The exact KLI solution `q(t)` from `p` towards `r` (or `-r` when `shortest_path` and

@@ -274,11 +274,7 @@ impl fmt::Display for KliError {
 impl std::error::Error for KliError {}
 
 /// Checks that `value` meets `requirement`.
-pub(crate) fn require(
-    argument: &str,
-    value: f64,
-    requirement: Requirement,
-) -> Result<f64, KliError> {
+pub fn require(argument: &str, value: f64, requirement: Requirement) -> Result<f64, KliError> {
     let ok = value.is_finite()
         && match requirement {
             Requirement::Finite => true,

@@ -55,7 +55,7 @@ mod trig;
 pub use algorithm::{KliOptions, KliPath, kli};
 pub use axis_angle::{axis_angle, from_axis_angle};
 pub use closed_form::{kli_exact, kli_reach_time, kli_to_slerp_parameter};
-pub use error::{ErrorKind, KliError, Shape};
+pub use error::{ErrorKind, KliError, Requirement, Shape, require};
 pub use glam::{DQuat, DVec3};
 pub use hopf::hopf;
 pub use integrator::Integrator;

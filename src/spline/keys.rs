@@ -3,8 +3,15 @@
 
 use glam::DQuat;
 
-use crate::error::{ErrorKind, KliError, Requirement, require};
+use crate::error::{ErrorKind, KliError, Requirement, require, rust_number};
 use crate::quaternion::unit;
+
+/// The largest key time's magnitude: 1e15 keeps a millisecond timestamp (1.7e12) and its
+/// spans' digits, and every difference of times finite.
+pub const MAX_TIME: f64 = 1e15;
+
+/// The shortest span between keys, absolute and relative to the whole time range.
+pub const MIN_SPAN: f64 = 1e-9;
 
 /// Checked keyframes.
 #[derive(Debug, Clone, PartialEq)]
@@ -17,6 +24,17 @@ impl Keys {
     /// `quaternions` (normalised, signs made consistent) at `times` (`None`: 0, 1, …, m−1).
     /// Errors name the element: `keys[3]`, `times[2]`.
     pub fn new(quaternions: &[DQuat], times: Option<&[f64]>) -> Result<Self, KliError> {
+        let keys = Self::unchecked_spans(quaternions, times)?;
+        keys.check_spans()?;
+        Ok(keys)
+    }
+
+    /// [`Keys::new`] without the shortest-span rule: for the chain's own samples, a segment's
+    /// span divided evenly (the rule holds for the keys the caller gave).
+    pub(crate) fn unchecked_spans(
+        quaternions: &[DQuat],
+        times: Option<&[f64]>,
+    ) -> Result<Self, KliError> {
         let m = quaternions.len();
         if m < 2 {
             return Err(KliError::invalid(
@@ -44,7 +62,7 @@ impl Keys {
                     return Err(KliError::new("times", kind));
                 }
                 for (i, &t) in times.iter().enumerate() {
-                    require("times", t, Requirement::Finite)
+                    require("times", t, Requirement::AtMost(MAX_TIME))
                         .map_err(|e| e.renamed(format!("times[{i}]")))?;
                     if i > 0 && t <= times[i - 1] {
                         let problem = format!(
@@ -58,6 +76,26 @@ impl Keys {
             }
         };
         Ok(Self { quaternions: keys, times })
+    }
+
+    /// A span too short beside the whole range (or below [`MIN_SPAN`]) makes ω and ω̇ overflow
+    /// or the chain's solve ill-conditioned.
+    fn check_spans(&self) -> Result<(), KliError> {
+        let times = &self.times;
+        let m = times.len();
+        let shortest = MIN_SPAN.max(MIN_SPAN * (times[m - 1] - times[0]));
+        for i in 1..m {
+            if times[i] - times[i - 1] < shortest {
+                let problem = format!(
+                    "must be at least {} after times[{}] (no span may be shorter than 1e-9 × \
+                     the whole time range, nor than 1e-9)",
+                    rust_number(shortest),
+                    i - 1
+                );
+                return Err(KliError::invalid(format!("times[{i}]"), problem));
+            }
+        }
+        Ok(())
     }
 
     /// The keys as used: unit, with consistent signs.

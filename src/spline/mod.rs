@@ -19,8 +19,8 @@ mod sequential;
 mod slerp_spline;
 mod squad;
 
-pub use chain::{ChainOptions, KliSpline};
-pub use keys::Keys;
+pub use chain::{ChainOptions, KliSpline, MAX_SAMPLES, MAX_SAMPLES_PER_SEGMENT};
+pub use keys::{Keys, MAX_TIME, MIN_SPAN};
 pub use sequential::SequentialKli;
 pub use slerp_spline::PiecewiseSlerp;
 pub use squad::Squad;

@@ -33,7 +33,7 @@ impl SwarmDemo {
     /// A swarm from the options of `new LoheSwarm(options)`, with the same checks and errors.
     #[wasm_bindgen(constructor)]
     pub fn new(options: Option<SwarmOptionsObject>) -> JsResult<SwarmDemo> {
-        let (options, _) = read_swarm_options(options).map_err(throw)?;
+        let (options, _) = read_swarm_options(&JsValue::from(options)).map_err(throw)?;
         let swarm = Swarm::new(&options).map_err(throw)?;
         let mut demo = SwarmDemo { swarm, options, history: History::default(), mesh: aircraft() };
         demo.record();
@@ -47,7 +47,7 @@ impl SwarmDemo {
 
     /// `steps` geodesic RK4 steps of `dt`, then one sample of the history.
     pub fn step(&mut self, dt: f64, steps: f64) -> JsResult<()> {
-        let steps = whole_steps(steps).map_err(throw)?;
+        let steps = whole_steps(&steps.into()).map_err(throw)?;
         self.swarm.step(dt, steps).map_err(throw)?;
         self.record();
         Ok(())
@@ -114,9 +114,10 @@ impl SwarmDemo {
         coupling: f64,
         time: f64,
     ) -> JsResult<f64> {
-        let options = SwarmOptions { coupling, ..read_swarm_options(options).map_err(throw)?.0 };
+        let read = read_swarm_options(&JsValue::from(options)).map_err(throw)?.0;
+        let options = SwarmOptions { coupling, ..read };
         let mut swarm = Swarm::new(&options).map_err(throw)?;
-        let steps = whole_steps((time / 0.05).round()).map_err(throw)?;
+        let steps = whole_steps(&(time / 0.05).round().into()).map_err(throw)?;
         let settle = steps - steps / 5;
         swarm.step(0.05, settle).map_err(throw)?;
         let mut sum = 0.0;

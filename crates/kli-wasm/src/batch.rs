@@ -11,32 +11,32 @@ use wasm_bindgen::prelude::*;
 
 use crate::error::{JsResult, throw};
 use crate::options::{KliOptionsObject, read_options};
-use crate::read::{Order, QuaternionLike, describe, float64_array, quaternion};
+use crate::read::{Order, QuaternionLike, quaternion};
+use crate::typed::{F64Array, numbers};
 
 /// Pairs per chunk: 4096 × 13 numbers × 8 bytes = 416 KB of scratch.
 const CHUNK: usize = 4096;
 
+/// The most times one call samples: 2^24, a 512 MiB result.
+pub const MAX_TIMES: usize = 1 << 24;
+
 /// The byte range `[start, end)` of `array` in the module's memory, if it is a view of it.
-fn in_wasm_memory(array: &Float64Array) -> Option<(usize, usize)> {
+fn in_wasm_memory(array: &F64Array) -> Option<(usize, usize)> {
     let memory: WebAssembly::Memory = wasm_bindgen::memory().unchecked_into();
-    let start = array.byte_offset() as usize;
-    (JsValue::from(array.buffer()) == memory.buffer())
-        .then_some((start, start + 8 * array.length() as usize))
+    let (buffer, start, end) = array.range();
+    let size = memory.buffer().unchecked_into::<js_sys::ArrayBuffer>().byte_length() as usize;
+    // A view's own facts are trusted only when they fit the memory (they could be forged).
+    (*buffer == memory.buffer() && start % 8 == 0 && end <= size).then_some((start, end))
 }
 
 /// The four arrays in place, when all are views of the module's memory and `out` overlaps no
 /// input (overlapping `&` and `&mut` slices would be undefined behaviour).
-fn in_place(
-    starts: &Float64Array,
-    ends: &Float64Array,
-    parameters: &Float64Array,
-    out: &Float64Array,
-) -> Option<[(usize, usize); 4]> {
+fn in_place(arrays: [&F64Array; 4]) -> Option<[(usize, usize); 4]> {
     let ranges = [
-        in_wasm_memory(starts)?,
-        in_wasm_memory(ends)?,
-        in_wasm_memory(parameters)?,
-        in_wasm_memory(out)?,
+        in_wasm_memory(arrays[0])?,
+        in_wasm_memory(arrays[1])?,
+        in_wasm_memory(arrays[2])?,
+        in_wasm_memory(arrays[3])?,
     ];
     let (o_start, o_end) = ranges[3];
     let disjoint = ranges[..3].iter().all(|&(a, b)| b <= o_start || o_end <= a || a == b);
@@ -50,42 +50,36 @@ fn run_arrays(
     parameters: &JsValue,
     out: &JsValue,
     shortest_path: bool,
-) -> Result<(), KliError> {
+) -> Result<F64Array, KliError> {
     let parameter_name = kind.parameter_name();
-    let (starts, ends) = (float64_array("starts", starts)?, float64_array("ends", ends)?);
+    let (starts, ends) = (F64Array::new("starts", starts)?, F64Array::new("ends", ends)?);
     let (parameters, out) =
-        (float64_array(parameter_name, parameters)?, float64_array("out", out)?);
-    let n = parameters.length() as usize;
-    check_lengths(
-        starts.length() as usize,
-        ends.length() as usize,
-        n,
-        out.length() as usize,
-        parameter_name,
-    )?;
-    if let Some([s, e, x, o]) = in_place(starts, ends, parameters, out) {
+        (F64Array::new(parameter_name, parameters)?, F64Array::new("out", out)?);
+    let n = parameters.length;
+    check_lengths(starts.length, ends.length, n, out.length, parameter_name)?;
+    if let Some([s, e, x, o]) = in_place([&starts, &ends, &parameters, &out]) {
         let slice = |(a, b): (usize, usize)| -> &[f64] {
             // SAFETY: a live Float64Array view of our memory: aligned, in bounds, and (checked
             // above) not overlapping `out`, which no other Rust reference touches during the call.
             unsafe { std::slice::from_raw_parts(a as *const f64, (b - a) / 8) }
         };
         // SAFETY: as above; `out` is disjoint from the three inputs.
-        let out = unsafe { std::slice::from_raw_parts_mut(o.0 as *mut f64, (o.1 - o.0) / 8) };
-        return run_batch(kind, slice(s), slice(e), slice(x), out, 0, shortest_path);
+        let q = unsafe { std::slice::from_raw_parts_mut(o.0 as *mut f64, (o.1 - o.0) / 8) };
+        run_batch(kind, slice(s), slice(e), slice(x), q, 0, shortest_path)?;
+        return Ok(out);
     }
     let chunk = CHUNK.min(n);
     let (mut p, mut r, mut x, mut q) =
         (vec![0.0; 4 * chunk], vec![0.0; 4 * chunk], vec![0.0; chunk], vec![0.0; 4 * chunk]);
     for first in (0..n).step_by(CHUNK.max(1)) {
         let m = CHUNK.min(n - first);
-        let (a, b) = ((4 * first) as u32, (4 * (first + m)) as u32);
-        starts.subarray(a, b).copy_to(&mut p[..4 * m]);
-        ends.subarray(a, b).copy_to(&mut r[..4 * m]);
-        parameters.subarray(first as u32, (first + m) as u32).copy_to(&mut x[..m]);
+        starts.read(4 * first, &mut p[..4 * m]);
+        ends.read(4 * first, &mut r[..4 * m]);
+        parameters.read(first, &mut x[..m]);
         run_batch(kind, &p[..4 * m], &r[..4 * m], &x[..m], &mut q[..4 * m], first, shortest_path)?;
-        out.subarray(a, b).copy_from(&q[..4 * m]);
+        out.write("out", 4 * first, &q[..4 * m])?;
     }
-    Ok(())
+    Ok(out)
 }
 
 /// A batch call: the options (`order`, and `shortestPath` but for nlerp, which always takes the
@@ -100,9 +94,9 @@ fn run(
 ) -> JsResult<Float64Array> {
     let (options, order) = read_options(options).map_err(throw)?;
     let shortest_path = kind == BatchKind::Nlerp || options.shortest_path;
-    run_arrays(kind, starts, ends, parameters, out, shortest_path)
+    let out = run_arrays(kind, starts, ends, parameters, out, shortest_path)
         .map_err(|e| throw(order.batch_error(e)))?;
-    Ok(out.clone().unchecked_into())
+    Ok(out.into_array())
 }
 
 /// `out[4i..4i+4] = Slerp(starts[i], ends[i]; s[i])` for n pairs (arrays of 4n, 4n, n, 4n
@@ -158,15 +152,7 @@ pub fn kli_sample(
     let (options, order) = read_options(options).map_err(throw)?;
     let p = quaternion("p", p, order).map_err(throw)?;
     let r = quaternion("r", r, order).map_err(throw)?;
-    let times: Vec<f64> = if let Some(array) = times.dyn_ref::<Float64Array>() {
-        array.to_vec()
-    } else if times.is_object() {
-        Float64Array::new(times).to_vec()
-    } else {
-        let problem =
-            format!("must be a Float64Array or an array of numbers (got {})", describe(times));
-        return Err(throw(KliError::invalid("times", problem)));
-    };
+    let times = numbers("times", times, MAX_TIMES).map_err(throw)?;
     let mut out = vec![0.0; 4 * times.len()];
     kli_sample_into(p, r, &times, &mut out, options.shortest_path).map_err(throw)?;
     if order == Order::Xyzw {

@@ -6,6 +6,7 @@ use kli::KliError;
 use wasm_bindgen::prelude::*;
 
 use crate::error::{JsResult, number, throw};
+use crate::read::number_argument;
 
 /// An f64 array in the module's own memory: pass its `view` to the batch calls and they read and
 /// write it in place, with no copy. A view is valid until the module's memory grows (any call
@@ -22,7 +23,10 @@ const MAX_BUFFER: usize = 1 << 27;
 impl Float64Buffer {
     /// `length` zeros.
     #[wasm_bindgen(constructor)]
-    pub fn new(length: f64) -> JsResult<Float64Buffer> {
+    pub fn new(
+        #[wasm_bindgen(unchecked_param_type = "number")] length: &JsValue,
+    ) -> JsResult<Float64Buffer> {
+        let length = number_argument("length", length).map_err(throw)?;
         if !(length.is_finite()
             && length >= 0.0
             && length.fract() == 0.0

@@ -8,7 +8,7 @@ use wasm_bindgen::prelude::*;
 use crate::error::{JsResult, throw};
 use crate::options::{KliOptionsObject, read_options};
 use crate::path::JsKliPath;
-use crate::read::{Order, QuaternionLike, Vector3Like, quaternion, vector3};
+use crate::read::{Order, QuaternionLike, Vector3Like, number_argument, quaternion, vector3};
 
 /// The options, then `p` and `r` (in the options' `order`), read and checked in that order.
 fn pair_and_options(
@@ -46,10 +46,11 @@ pub fn kli(
 pub fn kli_exact(
     p: &QuaternionLike,
     r: &QuaternionLike,
-    t: f64,
+    #[wasm_bindgen(unchecked_param_type = "number")] t: &JsValue,
     options: Option<KliOptionsObject>,
 ) -> JsResult<Float64Array> {
     let (p, r, options, order) = pair_and_options(p, r, options)?;
+    let t = number_argument("t", t).map_err(throw)?;
     kli::kli_exact(p, r, t, options.shortest_path).map(|q| order.array(q)).map_err(throw)
 }
 
@@ -58,10 +59,11 @@ pub fn kli_exact(
 pub fn kli_to_slerp_parameter(
     p: &QuaternionLike,
     r: &QuaternionLike,
-    t: f64,
+    #[wasm_bindgen(unchecked_param_type = "number")] t: &JsValue,
     options: Option<KliOptionsObject>,
 ) -> JsResult<f64> {
     let (p, r, options, _) = pair_and_options(p, r, options)?;
+    let t = number_argument("t", t).map_err(throw)?;
     kli::kli_to_slerp_parameter(p, r, t, options.shortest_path).map_err(throw)
 }
 
@@ -70,10 +72,11 @@ pub fn kli_to_slerp_parameter(
 pub fn kli_reach_time(
     p: &QuaternionLike,
     r: &QuaternionLike,
-    tolerance: f64,
+    #[wasm_bindgen(unchecked_param_type = "number")] tolerance: &JsValue,
     options: Option<KliOptionsObject>,
 ) -> JsResult<f64> {
     let (p, r, options, _) = pair_and_options(p, r, options)?;
+    let tolerance = number_argument("tolerance", tolerance).map_err(throw)?;
     kli::kli_reach_time(p, r, tolerance, options.shortest_path).map_err(throw)
 }
 
@@ -83,10 +86,11 @@ pub fn kli_reach_time(
 pub fn slerp(
     p: &QuaternionLike,
     r: &QuaternionLike,
-    s: f64,
+    #[wasm_bindgen(unchecked_param_type = "number")] s: &JsValue,
     options: Option<KliOptionsObject>,
 ) -> JsResult<Float64Array> {
     let (p, r, options, order) = pair_and_options(p, r, options)?;
+    let s = number_argument("s", s).map_err(throw)?;
     kli::slerp(p, r, s, options.shortest_path).map(|q| order.array(q)).map_err(throw)
 }
 
@@ -110,10 +114,11 @@ pub fn axis_angle(q: &QuaternionLike, options: Option<KliOptionsObject>) -> JsRe
 #[wasm_bindgen(js_name = fromAxisAngle)]
 pub fn from_axis_angle(
     axis: &Vector3Like,
-    angle: f64,
+    #[wasm_bindgen(unchecked_param_type = "number")] angle: &JsValue,
     options: Option<KliOptionsObject>,
 ) -> JsResult<Float64Array> {
     let (_, order) = read_options(options).map_err(throw)?;
     let axis = vector3("axis", axis).map_err(throw)?;
+    let angle = number_argument("angle", angle).map_err(throw)?;
     kli::from_axis_angle(axis, angle).map(|q| order.array(q)).map_err(throw)
 }

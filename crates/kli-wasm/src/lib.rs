@@ -32,6 +32,7 @@ pub mod read;
 pub mod spline;
 #[cfg(feature = "swarm")]
 pub mod swarm;
+pub mod typed;
 
 #[cfg(feature = "api")]
 pub use batch::{kli_exact_batch, kli_sample, nlerp_batch, slerp_batch};
@@ -124,12 +125,17 @@ export interface KliOptions {
 /** What is wrong, in a word: the `kind` of every Error kli throws. */
 export type KliErrorKind =
   | "not-finite" | "zero-length" | "out-of-range" | "wrong-length" | "unknown-name" | "antipodal"
-  | "not-reached" | "stalled" | "left-sphere" | "unstable" | "too-many-steps" | "invalid";
+  | "not-reached" | "stalled" | "left-sphere" | "unstable" | "too-many-steps" | "invalid"
+  /** A method of an object after its free(). */
+  | "freed"
+  /** A call into an object from inside one of its own calls (a getter or Proxy called back). */
+  | "busy";
 
 /** Every Error kli throws: the message starts with the argument's name, and the same facts are
  *  properties, so code can route an error without reading its text. */
 export interface KliError extends Error {
-  /** The argument at fault, as the call names it: "p", "maxTime", "ends[7]". */
+  /** The argument at fault, as the call names it: "p", "maxTime", "ends[7]"; "this" for the
+   *  object itself (kinds "freed" and "busy"). */
   argument: string;
   kind: KliErrorKind;
   /** For kind "not-finite": the component's position in the caller's array (0 is w in the order

@@ -2,19 +2,23 @@
 //! give the defaults, unknown keys are refused, and each key is checked for its type here and
 //! for its value by the core ([`kli::KliOptions::validate`]).
 
-use js_sys::{Array, Object, Reflect};
+use js_sys::Array;
 use kli::{Integrator, KliError, KliOptions};
-use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
 use crate::error::{js_name, number};
-use crate::read::{Order, describe};
+use crate::read::{Order, describe, is_array};
+use crate::typed::{get, thrown};
 
 #[wasm_bindgen]
 extern "C" {
     /// `{ tolerance, step, maxTime, integrator, shortestPath }`, each optional.
     #[wasm_bindgen(typescript_type = "KliOptions")]
     pub type KliOptionsObject;
+
+    /// `Object.keys`, which a Proxy's `ownKeys` trap can make throw.
+    #[wasm_bindgen(catch, js_namespace = Object, js_name = keys)]
+    fn object_keys(value: &JsValue) -> Result<Array, JsValue>;
 }
 
 /// The fields of [`KliOptions`] and `order`, by their Rust names; JavaScript's keys are their
@@ -27,7 +31,7 @@ pub fn read_options(value: Option<KliOptionsObject>) -> Result<(KliOptions, Orde
     let Some(fields) = Fields::new(value.map(JsValue::from), &KEYS, "{ tolerance: 1e-5 }")? else {
         return Ok((options, Order::Wxyz));
     };
-    let order = Order::parse(fields.name("order"))?;
+    let order = Order::parse(fields.name("order")?)?;
     if let Some(v) = fields.number("tolerance")? {
         options.tolerance = v;
     }
@@ -37,7 +41,7 @@ pub fn read_options(value: Option<KliOptionsObject>) -> Result<(KliOptions, Orde
     if let Some(v) = fields.number("max_time")? {
         options.max_time = v;
     }
-    if let Some(name) = fields.name("integrator") {
+    if let Some(name) = fields.name("integrator")? {
         options.integrator = name.parse::<Integrator>()?;
     }
     if let Some(v) = fields.boolean("shortest_path")? {
@@ -64,11 +68,14 @@ impl Fields {
         let Some(object) = value.filter(|v| !v.is_undefined() && !v.is_null()) else {
             return Ok(None);
         };
-        if !object.is_object() || Array::is_array(&object) {
+        if !object.is_object() || is_array(&object).unwrap_or(true) {
             let problem = format!("must be an object like {example} (got {})", describe(&object));
             return Err(KliError::invalid("options", problem));
         }
-        for key in Object::keys(object.unchecked_ref::<Object>()).iter() {
+        let own = object_keys(&object).map_err(|e| {
+            KliError::invalid("options", format!("could not be read ({})", thrown(&e)))
+        })?;
+        for key in own.iter() {
             let key = key.as_string().unwrap_or_default();
             if !keys.iter().any(|k| js_name(k) == key) {
                 let mut problem = format!("has an unknown key \"{key}\"; the keys are ");
@@ -82,18 +89,19 @@ impl Fields {
         Ok(Some(Self { object }))
     }
 
-    fn get(&self, key: &str) -> JsValue {
-        Reflect::get(&self.object, &js_name(key).into()).unwrap_or(JsValue::UNDEFINED)
+    /// The key's value; a getter or Proxy trap that throws is an Error naming the key.
+    fn get(&self, key: &str) -> Result<JsValue, KliError> {
+        get(key, &self.object, &js_name(key).into())
     }
 
     /// The raw value, or `None` when the key is absent.
-    pub fn value(&self, key: &str) -> Option<JsValue> {
-        Some(self.get(key)).filter(|v| !v.is_undefined())
+    pub fn value(&self, key: &str) -> Result<Option<JsValue>, KliError> {
+        Ok(Some(self.get(key)?).filter(|v| !v.is_undefined()))
     }
 
     /// A number, or `None` when the key is absent.
     pub fn number(&self, key: &str) -> Result<Option<f64>, KliError> {
-        let value = self.get(key);
+        let value = self.get(key)?;
         if value.is_undefined() {
             return Ok(None);
         }
@@ -101,20 +109,15 @@ impl Fields {
         value.as_f64().map(Some).ok_or_else(|| KliError::invalid(key, problem()))
     }
 
-    /// A whole number from `0` to `max`, or `None` when the key is absent.
-    pub fn whole(&self, key: &str, max: f64) -> Result<Option<f64>, KliError> {
+    /// A whole number from `min` to `max`, or `None` when the key is absent.
+    pub fn whole(&self, key: &str, min: f64, max: f64) -> Result<Option<f64>, KliError> {
         let Some(value) = self.number(key)? else { return Ok(None) };
-        if (0.0..=max).contains(&value) && value.fract() == 0.0 {
-            return Ok(Some(value));
-        }
-        let problem =
-            format!("must be a whole number from 0 to {} (got {})", number(max), number(value));
-        Err(KliError::invalid(key, problem))
+        whole(key, value, min, max).map(Some)
     }
 
     /// `true` or `false`, or `None` when the key is absent.
     pub fn boolean(&self, key: &str) -> Result<Option<bool>, KliError> {
-        let value = self.get(key);
+        let value = self.get(key)?;
         if value.is_undefined() {
             return Ok(None);
         }
@@ -124,8 +127,17 @@ impl Fields {
 
     /// A name for the core to parse (a non-string is described, so the core's message names it),
     /// or `None` when the key is absent.
-    pub fn name(&self, key: &str) -> Option<String> {
-        let value = self.get(key);
-        (!value.is_undefined()).then(|| value.as_string().unwrap_or_else(|| describe(&value)))
+    pub fn name(&self, key: &str) -> Result<Option<String>, KliError> {
+        let value = self.get(key)?;
+        Ok((!value.is_undefined()).then(|| value.as_string().unwrap_or_else(|| describe(&value))))
     }
+}
+
+/// `value` if it is a whole number from `min` to `max`, else an Error naming `key`.
+pub fn whole(key: &str, value: f64, min: f64, max: f64) -> Result<f64, KliError> {
+    if (min..=max).contains(&value) && value.fract() == 0.0 {
+        return Ok(value);
+    }
+    let (min, max, value) = (number(min), number(max), number(value));
+    Err(KliError::invalid(key, format!("must be a whole number from {min} to {max} (got {value})")))
 }

@@ -4,7 +4,7 @@ use js_sys::Float64Array;
 use wasm_bindgen::prelude::*;
 
 use crate::error::{JsResult, throw};
-use crate::read::Order;
+use crate::read::{Order, number_argument};
 
 /// The path of Algorithm 1: samples at `0, δ, …, T` and the exact solution beside them.
 /// Quaternions come out in the `order` the path was asked for.
@@ -68,7 +68,11 @@ impl JsKliPath {
     /// The exact q(t) of the closed form, for any finite t ≥ 0 (the integrated samples are
     /// `quaternions`).
     #[wasm_bindgen(js_name = exactAt)]
-    pub fn exact_at(&self, t: f64) -> JsResult<Float64Array> {
+    pub fn exact_at(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] t: &JsValue,
+    ) -> JsResult<Float64Array> {
+        let t = number_argument("t", t).map_err(throw)?;
         self.path.exact_at(t).map(|q| self.order.array(q)).map_err(throw)
     }
 }

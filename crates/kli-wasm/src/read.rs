@@ -3,13 +3,13 @@
 //! turns them into JavaScript's).
 
 use glam::{DQuat, DVec3};
-use js_sys::{Array, Float64Array, Reflect};
+use js_sys::{Float64Array, Reflect};
 use kli::quaternion::{from_wxyz, to_wxyz, unit};
 use kli::{ErrorKind, KliError, Shape};
-use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
 use crate::error::number;
+use crate::typed::get;
 
 #[wasm_bindgen]
 extern "C" {
@@ -22,7 +22,16 @@ extern "C" {
     pub type Vector3Like;
 }
 
-/// A short description of a JavaScript value for error messages.
+#[wasm_bindgen]
+extern "C" {
+    /// `Array.isArray`, which throws for a revoked Proxy.
+    #[wasm_bindgen(catch, js_namespace = Array, js_name = isArray)]
+    pub fn is_array(value: &JsValue) -> Result<bool, JsValue>;
+}
+
+/// A short description of a JavaScript value for error messages. Nothing here can throw: an
+/// array's `length` (a Proxy's trap) is read through a caught `Reflect.get`.
+#[inline(never)]
 pub fn describe(value: &JsValue) -> String {
     if let Some(n) = value.as_f64() {
         number(n)
@@ -34,47 +43,57 @@ pub fn describe(value: &JsValue) -> String {
         "null".into()
     } else if value.is_undefined() {
         "undefined".into()
-    } else if Array::is_array(value) {
-        format!("an array of length {}", Array::from(value).length())
+    } else if crate::typed::is_view(value) {
+        let length = crate::typed::typed_length(value).unwrap_or(f64::NAN);
+        format!("a typed array of length {}", number(length))
+    } else if is_array(value).unwrap_or(false) {
+        match Reflect::get(value, &"length".into()).ok().and_then(|l| l.as_f64()) {
+            Some(length) => format!("an array of length {}", number(length)),
+            None => "an array".into(),
+        }
     } else {
         format!("a value of type {}", value.js_typeof().as_string().unwrap_or_default())
     }
 }
 
-/// Reads exactly `N` numbers from an Array or typed array; `shape` names them in messages,
-/// e.g. "[w, x, y, z]". Whether they are finite is the core's to check.
+/// A number argument: a JavaScript number (not a string, a BigInt or an object), finite or not
+/// (whether it may be infinite is the core's to check).
+#[inline(never)]
+pub fn number_argument(name: &str, value: &JsValue) -> Result<f64, KliError> {
+    value.as_f64().ok_or_else(|| {
+        KliError::invalid(name, format!("must be a number (got {})", describe(value)))
+    })
+}
+
+/// Reads exactly `N` numbers from a typed array or an array-like; `shape` names them in
+/// messages, e.g. "[w, x, y, z]". Whether they are finite is the core's to check.
 pub fn numbers<const N: usize>(
     name: &str,
     value: &JsValue,
     shape: &str,
 ) -> Result<[f64; N], KliError> {
     let mut out = [0.0; N];
-    if let Some(array) = value.dyn_ref::<Float64Array>() {
-        if array.length() as usize != N {
-            let problem = format!("must hold {N} numbers {shape} (got {})", array.length());
-            return Err(KliError::invalid(name, problem));
-        }
-        array.copy_to(&mut out);
-        return Ok(out);
-    }
-    let length = if value.is_object() {
-        Reflect::get(value, &"length".into()).ok().and_then(|l| l.as_f64())
-    } else {
-        None
-    };
-    if length != Some(N as f64) {
-        let problem = format!("must be an array of {N} numbers {shape} (got {})", describe(value));
-        return Err(KliError::invalid(name, problem));
-    }
-    for (i, slot) in out.iter_mut().enumerate() {
-        let element = Reflect::get_u32(value, i as u32).unwrap_or(JsValue::UNDEFINED);
-        *slot = element.as_f64().ok_or_else(|| {
-            let problem =
-                format!("must hold {N} numbers {shape}: element {i} is {}", describe(&element));
-            KliError::invalid(name, problem)
-        })?;
-    }
+    exactly(name, value, shape, &mut out)?;
     Ok(out)
+}
+
+/// [`numbers`] for any `N` (one copy of the code, not one a length).
+#[inline(never)]
+fn exactly(name: &str, value: &JsValue, shape: &str, out: &mut [f64]) -> Result<(), KliError> {
+    let n = out.len();
+    match crate::typed::numbers(name, value, n) {
+        Ok(numbers) if numbers.len() == n => {
+            out.copy_from_slice(&numbers);
+            Ok(())
+        }
+        // An element that is not a number is named as such ("p[2] must be a number …").
+        Err(e) if e.argument() != name => Err(e),
+        _ => {
+            let got = describe(value);
+            let problem = format!("must be an array of {n} numbers {shape} (got {got})");
+            Err(KliError::invalid(name, problem))
+        }
+    }
 }
 
 /// How the caller lays quaternions out in arrays: scalar first `[w, x, y, z]` (the paper's
@@ -172,7 +191,7 @@ pub fn quaternion(name: &str, value: &JsValue, order: Order) -> Result<DQuat, Kl
     if value.is_object() && Reflect::has(value, &"w".into()).unwrap_or(false) {
         let mut xyzw = [0.0; 4];
         for (slot, key) in xyzw.iter_mut().zip(["x", "y", "z", "w"]) {
-            let element = Reflect::get(value, &key.into()).unwrap_or(JsValue::UNDEFINED);
+            let element = get(name, value, &key.into())?;
             *slot = element.as_f64().ok_or_else(|| {
                 let problem =
                     format!("must have numbers x, y, z, w: {key} is {}", describe(&element));
@@ -188,11 +207,4 @@ pub fn quaternion(name: &str, value: &JsValue, order: Order) -> Result<DQuat, Kl
 /// Reads a 3-vector `[x, y, z]`.
 pub fn vector3(name: &str, value: &JsValue) -> Result<DVec3, KliError> {
     Ok(DVec3::from_array(numbers(name, value, "[x, y, z]")?))
-}
-
-/// `value` as a `Float64Array`.
-pub fn float64_array<'a>(name: &str, value: &'a JsValue) -> Result<&'a Float64Array, KliError> {
-    value.dyn_ref::<Float64Array>().ok_or_else(|| {
-        KliError::invalid(name, format!("must be a Float64Array (got {})", describe(value)))
-    })
 }

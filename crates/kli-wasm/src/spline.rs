@@ -2,21 +2,23 @@
 //! and piecewise SLERP, with one interface (`RotationSpline`) so they compare call for call.
 
 use glam::DQuat;
-use js_sys::{Array, Float64Array};
-use kli::KliError;
-use kli::spline::{ChainOptions, Curve, Keys, KliSpline, PiecewiseSlerp, Squad};
-use wasm_bindgen::JsCast;
+use js_sys::Float64Array;
+use kli::spline::{
+    ChainOptions, Curve, Keys, KliSpline, MAX_SAMPLES_PER_SEGMENT, PiecewiseSlerp, Squad,
+};
+use kli::{KliError, Requirement, require};
 use wasm_bindgen::prelude::*;
 
 use crate::error::{JsResult, throw};
 use crate::options::Fields;
-use crate::read::{Order, describe, quaternion};
+use crate::read::{Order, describe, is_array, number_argument, quaternion};
+use crate::typed::{F64Array, get, is_view, numbers};
 
 #[wasm_bindgen(typescript_custom_section)]
 const TYPES: &'static str = r#"
 /** Keyframes: a Float64Array of 4m numbers, or an array of m quaternions (each 4 numbers, or an
  *  object `{ x, y, z, w }` such as a THREE.Quaternion). */
-export type KeysLike = Float64Array | ArrayLike<QuaternionLike>;
+export type KeysLike = Float64Array | Float32Array | ArrayLike<QuaternionLike>;
 
 /** Options of squadSpline and slerpSpline. */
 export interface SplineOptions {
@@ -30,7 +32,8 @@ export interface SplineOptions {
 export interface KliSplineOptions extends SplineOptions {
   /** 0: neighbour coupling only (piecewise SLERP); 1: bending only (the smoothest). Default 1. */
   smoothness?: number;
-  /** Chain samples a segment, a whole number from 2 to 4096. Default 32. */
+  /** Chain samples a segment, a whole number from 2 to 256, and at most 131072 in all
+   *  ((keys − 1) × samplesPerSegment). Default 32. */
   samplesPerSegment?: number;
 }
 
@@ -79,35 +82,22 @@ impl RotationSpline {
     }
 }
 
-fn finite_time(name: &str, t: f64) -> Result<f64, KliError> {
-    if t.is_finite() {
-        Ok(t)
-    } else {
-        Err(KliError::invalid(
-            name,
-            format!("must be a finite number (got {})", describe(&t.into())),
-        ))
-    }
+/// A time argument: a finite number.
+fn finite_time(name: &str, t: &JsValue) -> Result<f64, KliError> {
+    let t = number_argument(name, t)?;
+    require(name, t, Requirement::Finite)
 }
 
-/// Numbers from a Float64Array or an array-like of numbers.
-fn float64s(name: &str, value: &JsValue) -> Result<Vec<f64>, KliError> {
-    if let Some(array) = value.dyn_ref::<Float64Array>() {
-        return Ok(array.to_vec());
-    }
-    if value.is_object() {
-        return Ok(Float64Array::new(value).to_vec());
-    }
-    Err(KliError::invalid(
-        name,
-        format!("must be a Float64Array or an array of numbers (got {})", describe(value)),
-    ))
-}
+/// The most times (or keys) one call reads: 2^24.
+const MAX_LENGTH: usize = 1 << 24;
 
 #[wasm_bindgen]
 impl RotationSpline {
     /// `q(t)`, in the spline's `order`.
-    pub fn at(&self, t: f64) -> JsResult<Float64Array> {
+    pub fn at(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] t: &JsValue,
+    ) -> JsResult<Float64Array> {
         let t = finite_time("t", t).map_err(throw)?;
         Ok(self.order.array(self.curve().at(t)))
     }
@@ -117,37 +107,47 @@ impl RotationSpline {
     pub fn sample(
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | ArrayLike<number>")] times: &JsValue,
-        out: Option<Float64Array>,
+        #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | null")] out: &JsValue,
     ) -> JsResult<Float64Array> {
-        let times = float64s("times", times).map_err(throw)?;
-        if let Some(k) = times.iter().position(|t| !t.is_finite()) {
-            return Err(throw(finite_time(&format!("times[{k}]"), times[k]).unwrap_err()));
-        }
-        let mut values = vec![0.0; 4 * times.len()];
-        self.curve().sample_into(&times, &mut values);
-        if self.order == Order::Xyzw {
-            values.chunks_exact_mut(4).for_each(|q| q.rotate_left(1));
-        }
-        match out {
-            Some(out) if out.length() as usize == values.len() => {
-                out.copy_from(&values);
-                Ok(out)
+        let sample = || -> Result<Float64Array, KliError> {
+            let times = numbers("times", times, MAX_LENGTH)?;
+            for (k, &t) in times.iter().enumerate() {
+                require(&format!("times[{k}]"), t, Requirement::Finite)?;
             }
-            Some(out) => {
+            let out = match out.is_undefined() || out.is_null() {
+                true => None,
+                false => Some(F64Array::new("out", out)?),
+            };
+            if let Some(out) = out.as_ref().filter(|o| o.length != 4 * times.len()) {
                 let problem = format!(
                     "must hold 4 numbers per time: {} (got {})",
-                    values.len(),
-                    out.length()
+                    4 * times.len(),
+                    out.length
                 );
-                Err(throw(KliError::invalid("out", problem)))
+                return Err(KliError::invalid("out", problem));
             }
-            None => Ok(Float64Array::from(&values[..])),
-        }
+            let mut values = vec![0.0; 4 * times.len()];
+            self.curve().sample_into(&times, &mut values);
+            if self.order == Order::Xyzw {
+                values.chunks_exact_mut(4).for_each(|q| q.rotate_left(1));
+            }
+            Ok(match out {
+                Some(out) => {
+                    out.write("out", 0, &values)?;
+                    out.into_array()
+                }
+                None => Float64Array::from(&values[..]),
+            })
+        };
+        sample().map_err(throw)
     }
 
     /// The world-frame angular velocity ω at `t` (`q' = ½ ω q`), as [x, y, z].
     #[wasm_bindgen(js_name = angularVelocity)]
-    pub fn angular_velocity(&self, t: f64) -> JsResult<Float64Array> {
+    pub fn angular_velocity(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] t: &JsValue,
+    ) -> JsResult<Float64Array> {
         let t = finite_time("t", t).map_err(throw)?;
         Ok(Float64Array::from(&self.curve().angular_velocity(t).to_array()[..]))
     }
@@ -187,21 +187,30 @@ impl RotationSpline {
     }
 }
 
-/// The keys (Float64Array(4m) or an array of m quaternions) in `order`, and the options' `times`.
+/// The keys (a typed array of 4m numbers, or an array of m quaternions) in `order`, and the
+/// options' `times`.
 fn read_keys(value: &JsValue, times: Option<Vec<f64>>, order: Order) -> Result<Keys, KliError> {
-    let quaternions: Vec<DQuat> = if let Some(array) = value.dyn_ref::<Float64Array>() {
-        if array.length() % 4 != 0 {
-            let problem = format!("must hold 4 numbers per key (got {})", array.length());
+    let quaternions: Vec<DQuat> = if is_view(value) {
+        let flat = numbers("keys", value, MAX_LENGTH)?;
+        if flat.len() % 4 != 0 {
+            let problem = format!("must hold 4 numbers per key (got {})", flat.len());
             return Err(KliError::invalid("keys", problem));
         }
-        array.to_vec().chunks_exact(4).map(|q| order.read([q[0], q[1], q[2], q[3]])).collect()
-    } else if Array::is_array(value) {
-        let array = Array::from(value);
-        let key = |(i, key): (usize, JsValue)| quaternion(&format!("keys[{i}]"), &key, order);
-        array.iter().enumerate().map(key).collect::<Result<_, _>>()?
+        flat.chunks_exact(4).map(|q| order.read([q[0], q[1], q[2], q[3]])).collect()
+    } else if is_array(value).unwrap_or(false) {
+        let length = get("keys", value, &"length".into())?.as_f64().unwrap_or(0.0) as usize;
+        if length > MAX_LENGTH / 4 {
+            let problem = format!("may hold at most {} keys (got {length})", MAX_LENGTH / 4);
+            return Err(KliError::invalid("keys", problem));
+        }
+        let key = |i: usize| {
+            let name = format!("keys[{i}]");
+            quaternion(&name, &get(&name, value, &(i as u32).into())?, order)
+        };
+        (0..length).map(key).collect::<Result<_, _>>()?
     } else {
         let problem =
-            format!("must be a Float64Array or an array of quaternions (got {})", describe(value));
+            format!("must be a typed array or an array of quaternions (got {})", describe(value));
         return Err(KliError::invalid("keys", problem));
     };
     Keys::new(&quaternions, times.as_deref()).map_err(|e| order.error(e))
@@ -209,9 +218,10 @@ fn read_keys(value: &JsValue, times: Option<Vec<f64>>, order: Order) -> Result<K
 
 /// The options' `times` and `order`.
 fn read_times(fields: &Option<Fields>) -> Result<(Option<Vec<f64>>, Order), KliError> {
-    let order = Order::parse(fields.as_ref().and_then(|f| f.name("order")))?;
-    match fields.as_ref().and_then(|f| f.value("times")) {
-        Some(value) => Ok((Some(float64s("times", &value)?), order)),
+    let Some(fields) = fields else { return Ok((None, Order::Wxyz)) };
+    let order = Order::parse(fields.name("order")?)?;
+    match fields.value("times")? {
+        Some(value) => Ok((Some(numbers("times", &value, MAX_LENGTH)?), order)),
         None => Ok((None, order)),
     }
 }
@@ -233,7 +243,8 @@ pub fn kli_spline(
             if let Some(v) = f.number("smoothness")? {
                 chain.smoothness = v;
             }
-            if let Some(v) = f.whole("samples_per_segment", 4096.0)? {
+            let most = MAX_SAMPLES_PER_SEGMENT as f64;
+            if let Some(v) = f.whole("samples_per_segment", 2.0, most)? {
                 chain.samples_per_segment = v as usize;
             }
         }

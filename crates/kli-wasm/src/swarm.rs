@@ -7,8 +7,9 @@ use kli::swarm::{Graph, MAX_COUNT, Swarm, SwarmOptions};
 use wasm_bindgen::prelude::*;
 
 use crate::error::{JsResult, throw};
-use crate::options::Fields;
-use crate::read::{Order, describe, float64_array};
+use crate::options::{Fields, whole};
+use crate::read::{Order, number_argument};
+use crate::typed::numbers;
 
 #[wasm_bindgen(typescript_custom_section)]
 const TYPES: &'static str = r#"
@@ -53,25 +54,23 @@ const MAX_SEED: f64 = 9_007_199_254_740_991.0;
 
 /// Reads the options object of `new LoheSwarm(options)` into checked [`SwarmOptions`] and the
 /// caller's quaternion [`Order`].
-pub fn read_swarm_options(
-    value: Option<SwarmOptionsObject>,
-) -> Result<(SwarmOptions, Order), KliError> {
+pub fn read_swarm_options(value: &JsValue) -> Result<(SwarmOptions, Order), KliError> {
     let mut options = SwarmOptions::default();
     let example = "{ count: 500, coupling: 1 }";
-    let Some(fields) = Fields::new(value.map(JsValue::from), &KEYS, example)? else {
+    let Some(fields) = Fields::new(Some(value.clone()), &KEYS, example)? else {
         return Ok((options, Order::Wxyz));
     };
-    let order = Order::parse(fields.name("order"))?;
-    if let Some(v) = fields.whole("count", MAX_COUNT as f64)? {
+    let order = Order::parse(fields.name("order")?)?;
+    if let Some(v) = fields.whole("count", 1.0, MAX_COUNT as f64)? {
         options.count = v as usize;
     }
     if let Some(v) = fields.number("coupling")? {
         options.coupling = v;
     }
-    if let Some(name) = fields.name("graph") {
+    if let Some(name) = fields.name("graph")? {
         options.graph = name.parse::<Graph>()?;
     }
-    if let Some(v) = fields.whole("leaders", MAX_COUNT as f64)? {
+    if let Some(v) = fields.whole("leaders", 1.0, MAX_COUNT as f64)? {
         options.leaders = v as usize;
     }
     if let Some(v) = fields.number("frequency_spread")? {
@@ -80,22 +79,19 @@ pub fn read_swarm_options(
     if let Some(v) = fields.number("start_spread")? {
         options.start_spread = Some(v);
     }
-    if let Some(v) = fields.whole("seed", MAX_SEED)? {
+    if let Some(v) = fields.whole("seed", 0.0, MAX_SEED)? {
         options.seed = v as u64;
     }
     options.validate()?;
     Ok((options, order))
 }
 
-/// `steps` as a count: a whole number from 0 to 1e6 (a step count from JavaScript).
-pub fn whole_steps(steps: f64) -> Result<usize, KliError> {
-    if (0.0..=1e6).contains(&steps) && steps.fract() == 0.0 {
-        Ok(steps as usize)
-    } else {
-        let problem =
-            format!("must be a whole number from 0 to 1000000 (got {})", describe(&steps.into()));
-        Err(KliError::invalid("steps", problem))
+/// `steps` as a count: absent is 1, else a whole number from 0 to 1e6.
+pub fn whole_steps(steps: &JsValue) -> Result<usize, KliError> {
+    if steps.is_undefined() {
+        return Ok(1);
     }
+    Ok(whole("steps", number_argument("steps", steps)?, 0.0, 1e6)? as usize)
 }
 
 /// N oscillators on S³ under `q_i' = w_i q_i + (K/N) Σ_j a_ij (q_j − (q_i·q_j) q_i)`.
@@ -109,14 +105,22 @@ pub struct JsLoheSwarm {
 impl JsLoheSwarm {
     /// A swarm from its options (all optional; the same seed gives the same swarm).
     #[wasm_bindgen(constructor)]
-    pub fn new(options: Option<SwarmOptionsObject>) -> JsResult<JsLoheSwarm> {
+    pub fn new(
+        #[wasm_bindgen(unchecked_optional_param_type = "SwarmOptions | null")] options: &JsValue,
+    ) -> JsResult<JsLoheSwarm> {
         let (options, order) = read_swarm_options(options).map_err(throw)?;
         Ok(Self { swarm: Swarm::new(&options).map_err(throw)?, order })
     }
 
-    /// `steps` (default 1, a whole number up to 1e6) geodesic RK4 steps of `dt` (finite, > 0).
-    pub fn step(&mut self, dt: f64, steps: Option<f64>) -> JsResult<()> {
-        let steps = whole_steps(steps.unwrap_or(1.0)).map_err(throw)?;
+    /// `steps` (default 1, a whole number up to 1e6) geodesic RK4 steps of `dt` (> 0, at most
+    /// 100).
+    pub fn step(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "number")] dt: &JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "number")] steps: &JsValue,
+    ) -> JsResult<()> {
+        let dt = number_argument("dt", dt).map_err(throw)?;
+        let steps = whole_steps(steps).map_err(throw)?;
         self.swarm.step(dt, steps).map_err(throw)
     }
 
@@ -145,11 +149,7 @@ impl JsLoheSwarm {
         &mut self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | ArrayLike<number>")] values: &JsValue,
     ) -> JsResult<()> {
-        let values = match float64_array("quaternions", values) {
-            Ok(array) => array.to_vec(),
-            Err(_) if values.is_object() => Float64Array::new(values).to_vec(),
-            Err(e) => return Err(throw(e)),
-        };
+        let values = numbers("quaternions", values, 4 * self.swarm.len()).map_err(throw)?;
         if values.len() != 4 * self.swarm.len() {
             let problem = format!(
                 "must hold 4 numbers per oscillator: {} (got {})",

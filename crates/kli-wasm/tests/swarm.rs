@@ -4,16 +4,21 @@
 #![cfg(all(target_arch = "wasm32", feature = "swarm"))]
 
 use js_sys::{Float64Array, Object, Reflect};
-use kli_wasm::swarm::{JsLoheSwarm as LoheSwarm, SwarmOptionsObject};
+use kli_wasm::swarm::JsLoheSwarm as LoheSwarm;
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::wasm_bindgen_test;
 
-fn options(entries: &[(&str, JsValue)]) -> Option<SwarmOptionsObject> {
+fn options(entries: &[(&str, JsValue)]) -> JsValue {
     let object = Object::new();
     for (key, value) in entries {
         Reflect::set(&object, &(*key).into(), value).unwrap();
     }
-    Some(object.unchecked_into())
+    object.into()
+}
+
+/// A JavaScript number.
+fn n(x: f64) -> JsValue {
+    x.into()
 }
 
 /// The `argument` and the message of a thrown Error.
@@ -29,10 +34,10 @@ fn identical_oscillators_synchronise_and_balance() {
     for (coupling, synchronised) in [(1.0, true), (-1.0, false)] {
         let o =
             options(&[("count", 100.into()), ("coupling", coupling.into()), ("seed", 5.into())]);
-        let mut swarm = LoheSwarm::new(o).unwrap();
+        let mut swarm = LoheSwarm::new(&o).unwrap();
         assert_eq!(swarm.count(), 100);
         let before = swarm.potential();
-        swarm.step(0.05, Some(600.0)).unwrap();
+        swarm.step(&n(0.05), &n(600.0)).unwrap();
         assert!((swarm.time() - 30.0).abs() < 1e-9);
         let r = swarm.order_parameter();
         if synchronised {
@@ -50,14 +55,14 @@ fn a_pinned_leader_pulls_one_follower_as_kli_does() {
     // MATH.md: the follower obeys q' = (K/2)(r − (q·r) q), KLI at time Kt/2; the closed form
     // tan(φ/2) = tan(φ0/2) e^(−τ) with φ0 = π/3 for the paper's pair gives the angle to r.
     let o = options(&[("count", 2.into()), ("graph", "leader".into()), ("coupling", 2.into())]);
-    let mut swarm = LoheSwarm::new(o).unwrap();
+    let mut swarm = LoheSwarm::new(&o).unwrap();
     let (r, p) = ([0.5, 0.5, 0.5, 0.5], [0.0, 0.0, 0.0, 1.0]);
     let start: Vec<f64> = r.iter().chain(&p).copied().collect();
     // A plain array works as a Float64Array does.
     let plain: js_sys::Array = start.iter().map(|&c| JsValue::from(c)).collect();
     swarm.set_quaternions(&plain.into()).unwrap();
     assert_eq!(swarm.quaternions().to_vec(), start);
-    swarm.step(0.005, Some(240.0)).unwrap();
+    swarm.step(&n(0.005), &n(240.0)).unwrap();
     let q = swarm.quaternions().to_vec();
     assert_eq!(&q[..4], &r, "the leader stays");
     let tau = 2.0 * swarm.time() / 2.0;
@@ -74,12 +79,12 @@ fn a_pinned_leader_pulls_one_follower_as_kli_does() {
 fn the_same_seed_gives_the_same_swarm() {
     let o =
         || options(&[("count", 20.into()), ("seed", 77.into()), ("frequencySpread", 0.5.into())]);
-    let (mut a, mut b) = (LoheSwarm::new(o()).unwrap(), LoheSwarm::new(o()).unwrap());
-    a.step(0.1, None).unwrap();
-    b.step(0.1, Some(1.0)).unwrap();
+    let (mut a, mut b) = (LoheSwarm::new(&o()).unwrap(), LoheSwarm::new(&o()).unwrap());
+    a.step(&n(0.1), &JsValue::UNDEFINED).unwrap();
+    b.step(&n(0.1), &n(1.0)).unwrap();
     assert_eq!(a.quaternions().to_vec(), b.quaternions().to_vec());
-    let c = LoheSwarm::new(options(&[("count", 20.into()), ("seed", 78.into())])).unwrap();
-    assert_ne!(LoheSwarm::new(o()).unwrap().quaternions().to_vec(), c.quaternions().to_vec());
+    let c = LoheSwarm::new(&options(&[("count", 20.into()), ("seed", 78.into())])).unwrap();
+    assert_ne!(LoheSwarm::new(&o()).unwrap().quaternions().to_vec(), c.quaternions().to_vec());
 }
 
 #[wasm_bindgen_test]
@@ -96,32 +101,32 @@ fn bad_options_and_arguments_name_themselves() {
         ("colour", 1.into(), "options"),
     ];
     for (key, value, argument) in cases {
-        let (got, message) = refused(LoheSwarm::new(options(&[(key, value)])));
+        let (got, message) = refused(LoheSwarm::new(&options(&[(key, value)])));
         assert_eq!(got, argument, "{key}: {message}");
         assert!(message.starts_with(argument), "{message}");
     }
     let leaders =
         options(&[("graph", "leader".into()), ("count", 3.into()), ("leaders", 4.into())]);
-    assert_eq!(refused(LoheSwarm::new(leaders)).0, "leaders");
-    let mut swarm = LoheSwarm::new(options(&[("count", 2.into())])).unwrap();
-    assert_eq!(refused(swarm.step(0.0, None)).0, "dt");
-    assert_eq!(refused(swarm.step(0.1, Some(-1.0))).0, "steps");
+    assert_eq!(refused(LoheSwarm::new(&leaders)).0, "leaders");
+    let mut swarm = LoheSwarm::new(&options(&[("count", 2.into())])).unwrap();
+    assert_eq!(refused(swarm.step(&n(0.0), &JsValue::UNDEFINED)).0, "dt");
+    assert_eq!(refused(swarm.step(&n(0.1), &n(-1.0))).0, "steps");
     let short = Float64Array::from(&[1.0, 0.0, 0.0, 0.0][..]);
     assert_eq!(refused(swarm.set_quaternions(&short.into())).0, "quaternions");
     assert_eq!(refused(swarm.set_quaternions(&"1,0,0,0".into())).0, "quaternions");
     let zero = Float64Array::from(&[1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0][..]);
     assert_eq!(refused(swarm.set_quaternions(&zero.into())).0, "quaternions[1]");
     // Still working after every refusal.
-    swarm.step(0.1, Some(3.0)).unwrap();
+    swarm.step(&n(0.1), &n(3.0)).unwrap();
     assert!((swarm.time() - 0.3).abs() < 1e-12);
 }
 
 #[wasm_bindgen_test]
 fn a_scalar_last_swarm_reads_and_writes_scalar_last() {
     let seed = || ("seed", JsValue::from(7.0));
-    let plain = LoheSwarm::new(options(&[seed(), ("count", 5.into())])).unwrap();
+    let plain = LoheSwarm::new(&options(&[seed(), ("count", 5.into())])).unwrap();
     let last =
-        LoheSwarm::new(options(&[seed(), ("count", 5.into()), ("order", "xyzw".into())])).unwrap();
+        LoheSwarm::new(&options(&[seed(), ("count", 5.into()), ("order", "xyzw".into())])).unwrap();
     let wxyz = plain.quaternions().to_vec();
     let got = last.quaternions().to_vec();
     for (a, b) in got.chunks_exact(4).zip(wxyz.chunks_exact(4)) {
@@ -133,6 +138,6 @@ fn a_scalar_last_swarm_reads_and_writes_scalar_last() {
     last.set_quaternions(&Float64Array::from(&identities[..])).unwrap();
     assert_eq!(&last.hopf_points().to_vec()[..3], &[1.0, 0.0, 0.0]);
     assert_eq!(last.quaternions().to_vec(), identities);
-    let (argument, _) = refused(LoheSwarm::new(options(&[("order", "wzyx".into())])));
+    let (argument, _) = refused(LoheSwarm::new(&options(&[("order", "wzyx".into())])));
     assert_eq!(argument, "order");
 }

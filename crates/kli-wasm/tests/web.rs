@@ -11,6 +11,11 @@ use wasm_bindgen_test::wasm_bindgen_test;
 const P: [f64; 4] = [0.0, 0.0, 0.0, 1.0];
 const R: [f64; 4] = [0.5, 0.5, 0.5, 0.5];
 
+/// A JavaScript number.
+fn num(x: f64) -> JsValue {
+    x.into()
+}
+
 fn quat(values: &[f64]) -> QuaternionLike {
     let array: Array = values.iter().map(|&v| JsValue::from_f64(v)).collect();
     array.unchecked_into()
@@ -94,7 +99,7 @@ fn integrated_path_matches_the_closed_form() {
             api::kli(&quat(&P), &quat(&R), options(&[("integrator", integrator.into())])).unwrap();
         let q = path.quaternions().to_vec();
         for (n, &t) in path.times().to_vec().iter().enumerate() {
-            let exact = path.exact_at(t).unwrap().to_vec();
+            let exact = path.exact_at(&num(t)).unwrap().to_vec();
             assert!(close(&q[4 * n..4 * n + 4], &exact, agreement), "{integrator} t = {t}");
             let norm = q[4 * n..4 * n + 4].iter().map(|c| c * c).sum::<f64>().sqrt();
             assert!((norm - 1.0).abs() < norm_drift, "{integrator} t = {t}: |q| = {norm}");
@@ -118,14 +123,14 @@ fn closed_form_values() {
         let phi = 2.0 * ((phi0 / 2.0).tan() * (-t).exp()).atan();
         let expected: Vec<f64> =
             (0..4).map(|i| ((phi).sin() * P[i] + (phi0 - phi).sin() * R[i]) / phi0.sin()).collect();
-        let got = api::kli_exact(&quat(&P), &quat(&R), t, None).unwrap().to_vec();
+        let got = api::kli_exact(&quat(&P), &quat(&R), &num(t), None).unwrap().to_vec();
         assert!(close(&got, &expected, 1e-15), "t = {t}");
-        let s = api::kli_to_slerp_parameter(&quat(&P), &quat(&R), t, None).unwrap();
+        let s = api::kli_to_slerp_parameter(&quat(&P), &quat(&R), &num(t), None).unwrap();
         assert!((s - (1.0 - phi / phi0)).abs() < 1e-15);
-        let via_slerp = api::slerp(&quat(&P), &quat(&R), s, None).unwrap().to_vec();
+        let via_slerp = api::slerp(&quat(&P), &quat(&R), &num(s), None).unwrap().to_vec();
         assert!(close(&via_slerp, &got, 1e-15));
     }
-    let t_star = api::kli_reach_time(&quat(&P), &quat(&R), 1e-5, None).unwrap();
+    let t_star = api::kli_reach_time(&quat(&P), &quat(&R), &num(1e-5), None).unwrap();
     assert!((t_star - 11.6568).abs() < 5e-5, "T* = {t_star}");
 }
 
@@ -144,7 +149,7 @@ fn slerp_matches_the_textbook_formula() {
         let expected: Vec<f64> = (0..4)
             .map(|i| (((1.0 - s) * theta).sin() * pu[i] + (s * theta).sin() * ru[i]) / theta.sin())
             .collect();
-        let got = api::slerp(&typed(&p), &quat(&r), s, None).unwrap().to_vec();
+        let got = api::slerp(&typed(&p), &quat(&r), &num(s), None).unwrap().to_vec();
         assert!(close(&got, &expected, 1e-12), "s = {s}: {got:?} vs {expected:?}");
     }
 }
@@ -167,7 +172,8 @@ fn hopf_end_points_and_axis_angle() {
     let expected = [c, c, c, 2.0 * std::f64::consts::PI / 3.0];
     assert!(close(&api::axis_angle(&quat(&R), None).unwrap().to_vec(), &expected, 1e-15));
     let axis: Vector3Like = Float64Array::from(&[1.0, 1.0, 1.0][..]).unchecked_into();
-    let q = api::from_axis_angle(&axis, 2.0 * std::f64::consts::PI / 3.0, None).unwrap().to_vec();
+    let q =
+        api::from_axis_angle(&axis, &num(2.0 * std::f64::consts::PI / 3.0), None).unwrap().to_vec();
     assert!(close(&q, &R, 1e-15));
 }
 
@@ -193,10 +199,10 @@ fn shortest_path_both_ways() {
         long.final_time()
     );
     // SLERP half way: the bisector of p and -r, or of p and r.
-    let half = api::slerp(&quat(&p), &quat(&r), 0.5, None).unwrap().to_vec();
+    let half = api::slerp(&quat(&p), &quat(&r), &num(0.5), None).unwrap().to_vec();
     assert!(close(&half, &[1.6 / 1.6_f64.hypot(0.8), -0.8 / 1.6_f64.hypot(0.8), 0.0, 0.0], 1e-15));
     let half_long =
-        api::slerp(&quat(&p), &quat(&r), 0.5, options(&[("shortestPath", false.into())]))
+        api::slerp(&quat(&p), &quat(&r), &num(0.5), options(&[("shortestPath", false.into())]))
             .unwrap()
             .to_vec();
     assert!(close(
@@ -221,7 +227,10 @@ fn expect_error(result: Result<impl Sized, JsValue>, starts_with: &str) {
 fn bad_quaternions_throw_errors_naming_the_argument() {
     let p = quat(&P);
     expect_error(api::kli(&quat(&[1.0, 2.0, 3.0]), &p, None), "p must be an array of 4 numbers");
-    expect_error(api::kli(&p, &typed(&[1.0, 2.0, 3.0, 4.0, 5.0]), None), "r must hold 4 numbers");
+    expect_error(
+        api::kli(&p, &typed(&[1.0, 2.0, 3.0, 4.0, 5.0]), None),
+        "r must be an array of 4 numbers [w, x, y, z] (got a Float64Array of length 5)",
+    );
     expect_error(
         api::kli(&quat(&[1.0, f64::NAN, 0.0, 0.0]), &p, None),
         "p must be a quaternion of 4 finite numbers",
@@ -242,16 +251,19 @@ fn bad_quaternions_throw_errors_naming_the_argument() {
     expect_error(api::kli(&strings, &p, None), "p must be an array of 4 numbers");
     let mixed: Array = [JsValue::from("1"), 0.into(), 0.into(), 0.into()].into_iter().collect();
     expect_error(
-        api::slerp(&p, mixed.unchecked_ref(), 0.5, None),
+        api::slerp(&p, mixed.unchecked_ref(), &num(0.5), None),
         "r must hold 4 numbers [w, x, y, z]: element 0 is \"1\"",
     );
     let null: QuaternionLike = JsValue::NULL.unchecked_into();
     expect_error(api::hopf(&null, None), "q must be an array of 4 numbers");
     expect_error(api::axis_angle(&quat(&[0.0; 4]), None), "q must be a quaternion");
     let axis: Vector3Like = Float64Array::from(&[0.0, 0.0, 0.0][..]).unchecked_into();
-    expect_error(api::from_axis_angle(&axis, 1.0, None), "axis must be 3 finite numbers");
+    expect_error(api::from_axis_angle(&axis, &num(1.0), None), "axis must be 3 finite numbers");
     let axis: Vector3Like = Float64Array::from(&[1.0, 0.0, 0.0][..]).unchecked_into();
-    expect_error(api::from_axis_angle(&axis, f64::NAN, None), "angle must be a finite number");
+    expect_error(
+        api::from_axis_angle(&axis, &num(f64::NAN), None),
+        "angle must be a finite number",
+    );
 }
 
 #[wasm_bindgen_test]
@@ -290,13 +302,19 @@ fn bad_options_throw_errors_naming_the_option() {
 fn bad_times_and_impossible_requests_throw() {
     let (p, r) = (quat(&P), quat(&R));
     for t in [-1.0, -1e-300, f64::NAN, f64::INFINITY] {
-        expect_error(api::kli_exact(&p, &r, t, None), "t must be a finite number ≥ 0");
-        expect_error(api::kli_to_slerp_parameter(&p, &r, t, None), "t must be a finite number ≥ 0");
+        expect_error(api::kli_exact(&p, &r, &num(t), None), "t must be a finite number ≥ 0");
+        expect_error(
+            api::kli_to_slerp_parameter(&p, &r, &num(t), None),
+            "t must be a finite number ≥ 0",
+        );
         let path = api::kli(&p, &r, None).unwrap();
-        expect_error(path.exact_at(t), "t must be a finite number ≥ 0");
+        expect_error(path.exact_at(&num(t)), "t must be a finite number ≥ 0");
     }
-    expect_error(api::kli_reach_time(&p, &r, 0.0, None), "tolerance must be a finite number > 0");
-    expect_error(api::slerp(&p, &r, f64::NAN, None), "s must be a finite number");
+    expect_error(
+        api::kli_reach_time(&p, &r, &num(0.0), None),
+        "tolerance must be a finite number > 0",
+    );
+    expect_error(api::slerp(&p, &r, &num(f64::NAN), None), "s must be a finite number");
     // ε below what f64 resolves: reported, not looped forever.
     expect_error(
         api::kli(&p, &r, options(&[("tolerance", 1e-20.into())])),
@@ -314,8 +332,8 @@ fn bad_times_and_impossible_requests_throw() {
     let minus_p = quat(&[0.0, 0.0, 0.0, -3.0]);
     let long = || options(&[("shortestPath", false.into())]);
     expect_error(api::kli(&p, &minus_p, long()), "p and r are antipodal");
-    expect_error(api::kli_exact(&p, &minus_p, 1.0, long()), "p and r are antipodal");
-    expect_error(api::slerp(&p, &minus_p, 0.5, long()), "p and r are antipodal");
+    expect_error(api::kli_exact(&p, &minus_p, &num(1.0), long()), "p and r are antipodal");
+    expect_error(api::slerp(&p, &minus_p, &num(0.5), long()), "p and r are antipodal");
     // The short way, -r is p itself: nothing to do.
     let path = api::kli(&p, &minus_p, None).unwrap();
     assert_eq!((path.steps(), path.final_time()), (0, 0.0));
@@ -369,9 +387,9 @@ fn batches_agree_with_the_single_calls() {
         for i in (0..n).step_by(7) {
             let (p, r) = (quat(&starts[4 * i..4 * i + 4]), quat(&ends[4 * i..4 * i + 4]));
             let single = if name == "slerp" {
-                api::slerp(&p, &r, params[i], None)
+                api::slerp(&p, &r, &num(params[i]), None)
             } else {
-                api::kli_exact(&p, &r, params[i], None)
+                api::kli_exact(&p, &r, &num(params[i]), None)
             };
             assert!(
                 close(&got[4 * i..4 * i + 4], &single.unwrap().to_vec(), 1e-12),
@@ -422,7 +440,7 @@ fn kli_sample_near_plus_and_minus_r() {
             let sampled =
                 api::kli_sample(&quat(&p), &quat(&r), &f64s(&times), o()).unwrap().to_vec();
             for (k, &t) in times.iter().enumerate() {
-                let single = api::kli_exact(&quat(&p), &quat(&r), t, o()).unwrap().to_vec();
+                let single = api::kli_exact(&quat(&p), &quat(&r), &num(t), o()).unwrap().to_vec();
                 assert!(
                     close(&sampled[4 * k..4 * k + 4], &single, 1e-12),
                     "r = {r:?} shortest {shortest} t = {t}"
@@ -481,7 +499,7 @@ fn batch_errors_name_the_argument_and_element() {
     let text: JsValue = "0,1,2".into();
     expect_error(
         api::kli_sample(&quat(&P), &quat(&R), &text, None),
-        "times must be a Float64Array or an array of numbers",
+        "times must be a typed array or an array of numbers (got \"0,1,2\", a string)",
     );
     // nlerp, the baseline, is unit and between the ends.
     let half = api::nlerp_batch(
@@ -567,7 +585,7 @@ fn huge_slerp_parameters_throw_instead_of_nan() {
     let one = |x: f64| f64s(&[x]);
     for s in [1e6 + 1.0, 1e20, 1e300, f64::MAX, -1e300] {
         expect_error(
-            api::slerp(&p, &r, s, None),
+            api::slerp(&p, &r, &num(s), None),
             "s must be a finite number from -1000000 to 1000000",
         );
         let batch = api::slerp_batch(&f64s(&P), &f64s(&R), &one(s), &f64s(&[0.0; 4]), None);
@@ -577,7 +595,7 @@ fn huge_slerp_parameters_throw_instead_of_nan() {
     }
     // Within the bound, single and batch agree exactly (both take the single call's path).
     for s in [1e6, -7.5e5, 1234.5, -3.0] {
-        let single = api::slerp(&p, &r, s, None).unwrap().to_vec();
+        let single = api::slerp(&p, &r, &num(s), None).unwrap().to_vec();
         let batch =
             api::slerp_batch(&f64s(&P), &f64s(&R), &one(s), &f64s(&[0.0; 4]), None).unwrap();
         assert_eq!(batch.to_vec(), single, "s = {s}");
@@ -598,9 +616,9 @@ fn unit_inputs_come_back_exactly_at_the_ends() {
     let mut next_unit =
         || found.find(|q| q[1] * q[1] + q[2] * q[2] + q[3] * q[3] + q[0] * q[0] == 1.0).unwrap();
     let (p, r) = (next_unit(), next_unit());
-    assert_eq!(api::slerp(&quat(&p), &quat(&r), 0.0, None).unwrap().to_vec(), p);
-    assert_eq!(api::slerp(&quat(&p), &quat(&r), 1.0, None).unwrap().to_vec(), r);
-    assert_eq!(api::kli_exact(&quat(&p), &quat(&r), 0.0, None).unwrap().to_vec(), p);
+    assert_eq!(api::slerp(&quat(&p), &quat(&r), &num(0.0), None).unwrap().to_vec(), p);
+    assert_eq!(api::slerp(&quat(&p), &quat(&r), &num(1.0), None).unwrap().to_vec(), r);
+    assert_eq!(api::kli_exact(&quat(&p), &quat(&r), &num(0.0), None).unwrap().to_vec(), p);
     let batch = |s: f64| {
         api::slerp_batch(&f64s(&p), &f64s(&r), &f64s(&[s]), &f64s(&[0.0; 4]), None)
             .unwrap()
@@ -666,22 +684,26 @@ fn every_call_takes_and_gives_scalar_last_quaternions_with_order_xyzw() {
     assert_eq!(path.steps(), 1166);
     assert_eq!(path.quaternions().to_vec(), xyzw(&plain.quaternions().to_vec()));
     assert_eq!(path.target().to_vec(), r);
-    assert_eq!(path.exact_at(1.8).unwrap().to_vec(), xyzw(&plain.exact_at(1.8).unwrap().to_vec()));
+    assert_eq!(
+        path.exact_at(&num(1.8)).unwrap().to_vec(),
+        xyzw(&plain.exact_at(&num(1.8)).unwrap().to_vec())
+    );
     // Table 1's corrected row 0.4364 + 0.4364i + 0.4364j + 0.6548k, laid out scalar last.
-    let row = api::kli_exact(&quat(&p), &quat(&r), 1.8, scalar_last()).unwrap().to_vec();
+    let row = api::kli_exact(&quat(&p), &quat(&r), &num(1.8), scalar_last()).unwrap().to_vec();
     assert!(close(&row, &[0.4364, 0.4364, 0.6548, 0.4364], 5e-5), "{row:?}");
-    let s = api::kli_to_slerp_parameter(&quat(&p), &quat(&r), 1.8, scalar_last()).unwrap();
-    assert_eq!(s, api::kli_to_slerp_parameter(&quat(&P), &quat(&R), 1.8, None).unwrap());
-    let reach = api::kli_reach_time(&quat(&p), &quat(&r), 1e-5, scalar_last()).unwrap();
+    let s = api::kli_to_slerp_parameter(&quat(&p), &quat(&r), &num(1.8), scalar_last()).unwrap();
+    assert_eq!(s, api::kli_to_slerp_parameter(&quat(&P), &quat(&R), &num(1.8), None).unwrap());
+    let reach = api::kli_reach_time(&quat(&p), &quat(&r), &num(1e-5), scalar_last()).unwrap();
     assert!((reach - 11.6568).abs() < 1e-4, "{reach}");
-    let half = api::slerp(&quat(&p), &quat(&r), 0.5, scalar_last()).unwrap().to_vec();
-    assert_eq!(half, xyzw(&api::slerp(&quat(&P), &quat(&R), 0.5, None).unwrap().to_vec()));
+    let half = api::slerp(&quat(&p), &quat(&r), &num(0.5), scalar_last()).unwrap().to_vec();
+    assert_eq!(half, xyzw(&api::slerp(&quat(&P), &quat(&R), &num(0.5), None).unwrap().to_vec()));
     // The Hopf map and the polar form read the scalar where the order puts it: h(p) = (-1, 0, 0).
     assert!(close(&api::hopf(&quat(&p), scalar_last()).unwrap().to_vec(), &[-1.0, 0.0, 0.0], 0.0));
     let polar = api::axis_angle(&quat(&r), scalar_last()).unwrap().to_vec();
     assert!(close(&polar, &api::axis_angle(&quat(&R), None).unwrap().to_vec(), 0.0));
     let axis: Vector3Like = f64s(&[0.0, 0.0, 1.0]).unchecked_into();
-    let turn = api::from_axis_angle(&axis, std::f64::consts::PI, scalar_last()).unwrap().to_vec();
+    let turn =
+        api::from_axis_angle(&axis, &num(std::f64::consts::PI), scalar_last()).unwrap().to_vec();
     assert!(close(&turn, &[0.0, 0.0, 1.0, 0.0], 1e-16), "{turn:?}");
     let times = f64s(&[0.0, 0.5, 11.0]);
     let sampled = api::kli_sample(&quat(&p), &quat(&r), &times, scalar_last()).unwrap().to_vec();
@@ -734,10 +756,10 @@ fn single_calls_take_three_js_style_objects() {
     let path = api::kli(&p, &r, None).unwrap();
     assert_eq!(path.steps(), 1166);
     // Objects are unambiguous: the same answer whatever the order of the arrays.
-    let a = api::slerp(&p, &r, 0.3, None).unwrap().to_vec();
-    let b = api::slerp(&quat(&P), &quat(&R), 0.3, None).unwrap().to_vec();
+    let a = api::slerp(&p, &r, &num(0.3), None).unwrap().to_vec();
+    let b = api::slerp(&quat(&P), &quat(&R), &num(0.3), None).unwrap().to_vec();
     assert_eq!(a, b);
-    let c = api::slerp(&p, &r, 0.3, scalar_last()).unwrap().to_vec();
+    let c = api::slerp(&p, &r, &num(0.3), scalar_last()).unwrap().to_vec();
     assert_eq!(c, xyzw(&b));
     assert!(close(&api::hopf(&r, None).unwrap().to_vec(), &[0.0, 1.0, 0.0], 0.0));
     // A plain { x, y, z, w } (glTF-style), and one with a component missing.
@@ -764,11 +786,11 @@ fn scalar_last_errors_name_the_components_as_laid_out() {
     assert_eq!((argument.as_str(), kind.as_str(), component), ("p", "not-finite", Some(0.0)));
     p[0] = f64::NAN;
     expect_error(
-        api::slerp(&quat(&p), &quat(&R), 0.5, scalar_last()),
+        api::slerp(&quat(&p), &quat(&R), &num(0.5), scalar_last()),
         "p must be a quaternion of 4 finite numbers [x, y, z, w], not all zero: its x component is NaN",
     );
     expect_error(
-        api::slerp(&quat(&[0.0; 3]), &quat(&R), 0.5, scalar_last()),
+        api::slerp(&quat(&[0.0; 3]), &quat(&R), &num(0.5), scalar_last()),
         "p must be an array of 4 numbers [x, y, z, w]",
     );
     expect_error(

@@ -1,0 +1,190 @@
+//! Typed arrays and array-likes read so that no JavaScript exception can cross Rust's stack.
+//!
+//! A JavaScript exception thrown while Rust is on the stack skips Rust's destructors: borrow
+//! flags stay set (the object is bricked) and externref slots leak until the module traps. So
+//! every JavaScript operation here that can throw is an import marked `catch`. Numbers are read
+//! from a typed array by copying it (`new Float64Array(source)`, which reads its internal slots:
+//! an own `length` property or a changed prototype cannot make it lie), and the caller's
+//! Float64Arrays are written through `Float64Array.prototype.set`, which fails (an Error, not a
+//! trap) if their claimed length is not their own.
+
+use js_sys::{Float64Array, Reflect};
+use kli::KliError;
+use wasm_bindgen::JsCast;
+use wasm_bindgen::prelude::*;
+
+use crate::read::describe;
+
+#[wasm_bindgen]
+extern "C" {
+    /// True for typed arrays and DataViews (their internal slot; never throws).
+    #[wasm_bindgen(js_namespace = ArrayBuffer, js_name = isView)]
+    pub fn is_view(value: &JsValue) -> bool;
+
+    /// A Float64Array made here, so none of its properties can be the caller's.
+    #[wasm_bindgen(js_name = Float64Array)]
+    type Fresh;
+
+    /// `new Float64Array(typedArray)`: a copy read through the source's internal slots.
+    #[wasm_bindgen(catch, constructor, js_class = "Float64Array")]
+    fn copy_of(source: &JsValue) -> Result<Fresh, JsValue>;
+
+    /// `new Float64Array(buffer, byteOffset, length)`: a fresh view, so no species lookup.
+    #[wasm_bindgen(catch, constructor, js_class = "Float64Array")]
+    fn view_of(buffer: &JsValue, byte_offset: f64, length: f64) -> Result<Fresh, JsValue>;
+
+    /// `Float64Array.prototype.set.call(target, source)`: writes into `target` by its slots.
+    #[wasm_bindgen(catch, js_namespace = ["Float64Array", "prototype", "set"], js_name = call)]
+    fn set_into(target: &JsValue, source: &Float64Array) -> Result<(), JsValue>;
+
+    /// The caller's Float64Array, its properties read with every exception caught.
+    #[wasm_bindgen(js_name = Float64Array)]
+    type Caller;
+    #[wasm_bindgen(catch, method, getter)]
+    fn length(this: &Caller) -> Result<f64, JsValue>;
+    #[wasm_bindgen(catch, method, getter, js_name = byteOffset)]
+    fn byte_offset(this: &Caller) -> Result<f64, JsValue>;
+    #[wasm_bindgen(catch, method, getter)]
+    fn buffer(this: &Caller) -> Result<JsValue, JsValue>;
+}
+
+/// A copy of the typed array `value` (any element type but BigInt), or `None` if it is not one.
+#[inline(never)]
+pub fn copy(value: &JsValue) -> Option<Float64Array> {
+    if !is_view(value) {
+        return None;
+    }
+    // A DataView is copied as an empty array-like; a BigInt64Array throws (caught): neither is
+    // a typed array of numbers.
+    let copy: Float64Array = Fresh::copy_of(value).ok()?.unchecked_into();
+    (copy.length() > 0 || typed_length(value) == Some(0.0)).then_some(copy)
+}
+
+/// A typed array's length, for messages (its own `length` property, read with care).
+#[inline(never)]
+pub fn typed_length(value: &JsValue) -> Option<f64> {
+    value.unchecked_ref::<Caller>().length().ok()
+}
+
+/// "must be …" with what was received.
+#[inline(never)]
+fn refused(name: &str, wanted: &str, value: &JsValue) -> KliError {
+    KliError::invalid(name, format!("must be {wanted} (got {})", describe(value)))
+}
+
+/// Up to `max` numbers from any typed array of numbers (Float64Array, Float32Array, Int32Array…,
+/// converted exactly) or array-like of numbers (an Array, `{ length, 0: … }`, a Proxy). Whether
+/// they are finite is the caller's to check.
+#[inline(never)]
+pub fn numbers(name: &str, value: &JsValue, max: usize) -> Result<Vec<f64>, KliError> {
+    let wanted = "a typed array or an array of numbers";
+    if is_view(value) {
+        let Some(copy) = copy(value) else { return Err(refused(name, wanted, value)) };
+        if copy.length() as usize > max {
+            return Err(too_long(name, copy.length() as f64, max));
+        }
+        return Ok(copy.to_vec());
+    }
+    if !value.is_object() {
+        return Err(refused(name, wanted, value));
+    }
+    let length = get(name, value, &"length".into())?;
+    let n = length.as_f64().filter(|n| n.fract() == 0.0 && *n >= 0.0);
+    let Some(n) = n else { return Err(refused(name, wanted, value)) };
+    if n > max as f64 {
+        return Err(too_long(name, n, max));
+    }
+    let mut out = Vec::with_capacity(n as usize);
+    for i in 0..n as u32 {
+        let element = get(name, value, &i.into())?;
+        let Some(x) = element.as_f64() else {
+            let got = describe(&element);
+            let problem = format!("must be a number (got {got})");
+            return Err(KliError::invalid(format!("{name}[{i}]"), problem));
+        };
+        out.push(x);
+    }
+    Ok(out)
+}
+
+#[inline(never)]
+fn too_long(name: &str, length: f64, max: usize) -> KliError {
+    let problem = format!("may hold at most {max} numbers (got {})", crate::error::number(length));
+    KliError::invalid(name, problem)
+}
+
+/// `value[key]`, or an Error naming `name` when reading it throws (a getter, a Proxy's trap).
+#[inline(never)]
+pub fn get(name: &str, value: &JsValue, key: &JsValue) -> Result<JsValue, KliError> {
+    Reflect::get(value, key)
+        .map_err(|e| KliError::invalid(name, format!("could not be read ({})", thrown(&e))))
+}
+
+/// What a caught exception says, for ours.
+#[inline(never)]
+pub fn thrown(e: &JsValue) -> String {
+    let message = Reflect::get(e, &"message".into()).ok().and_then(|m| m.as_string());
+    format!("it threw: {}", message.unwrap_or_else(|| describe(e)))
+}
+
+/// A caller's Float64Array: read and written through its slots, a chunk at a time if need be.
+pub struct F64Array {
+    array: JsValue,
+    buffer: JsValue,
+    byte_offset: f64,
+    pub length: usize,
+}
+
+impl F64Array {
+    /// `value` if it is a Float64Array, else an Error naming what it is.
+    pub fn new(name: &str, value: &JsValue) -> Result<F64Array, KliError> {
+        let caller: &Caller = value.unchecked_ref();
+        let facts = (caller.length(), caller.byte_offset(), caller.buffer());
+        match facts {
+            (Ok(length), Ok(byte_offset), Ok(buffer))
+                if is_view(value) && value.is_instance_of::<Float64Array>() =>
+            {
+                Ok(F64Array { array: value.clone(), buffer, byte_offset, length: length as usize })
+            }
+            _ => Err(refused(name, "a Float64Array", value)),
+        }
+    }
+
+    /// The array's buffer and the byte range it covers in it.
+    pub fn range(&self) -> (&JsValue, usize, usize) {
+        let start = self.byte_offset as usize;
+        (&self.buffer, start, start + 8 * self.length)
+    }
+
+    /// A fresh view of elements `[start, start + length)`.
+    fn view(&self, start: usize, length: usize) -> Float64Array {
+        let offset = self.byte_offset + 8.0 * start as f64;
+        // A fresh view of a range checked against the array's own length cannot fail; were it
+        // to (a buffer shrunk under us), an empty view makes the copy a no-op, not a throw.
+        match Fresh::view_of(&self.buffer, offset, length as f64) {
+            Ok(view) => view.unchecked_into(),
+            Err(_) => Float64Array::new_with_length(0),
+        }
+    }
+
+    /// Copies elements `[start, start + into.len())` into `into`.
+    pub fn read(&self, start: usize, into: &mut [f64]) {
+        let view = self.view(start, into.len());
+        if view.length() as usize == into.len() {
+            view.copy_to(into);
+        }
+    }
+
+    /// Copies `from` into elements `[start, start + from.len())`; an Error naming `name` if
+    /// the array is not as long as it claims.
+    pub fn write(&self, name: &str, start: usize, from: &[f64]) -> Result<(), KliError> {
+        let written = set_into(&self.view(start, from.len()), &Float64Array::from(from));
+        written
+            .map_err(|e| KliError::invalid(name, format!("could not be written ({})", thrown(&e))))
+    }
+
+    /// The caller's array, to return.
+    pub fn into_array(self) -> Float64Array {
+        self.array.unchecked_into()
+    }
+}
