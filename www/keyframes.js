@@ -179,7 +179,8 @@ function fillFigures(/** @type {keyframes.KeyframesDemo} */ run, /** @type {Keyf
     for (const text of cells) row.insertCell().textContent = text;
   });
   $("#solve", HTMLElement).textContent = `The chain: ${run.iterations} Newton steps to a residual of ${run.residual.toExponential(1)}; ` +
-    `its ∫|ω̇|² is ${(figures[2] / figures[6]).toFixed(3)} of Squad's.`;
+    (figures[6] > 0 ? `its ∫|ω̇|² is ${(figures[2] / figures[6]).toFixed(3)} of Squad's.` :
+      `its ∫|ω̇|² is ${figures[2].toPrecision(3)}; Squad's is 0 (no turn between the keys), so there is no ratio.`);
   clearTimeout(timing);
   timing = setTimeout(() => fillTimes(run.startTime, run.endTime, state), 300);
 }

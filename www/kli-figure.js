@@ -31,6 +31,11 @@ const DEFAULTS = {
   swarm: { count: 200, coupling: 1, seed: 1 },
 };
 const SWARM_DT = 0.02;
+/** Oscillator steps a task may take (about 45 ms in Chromium, all to all): a swarm figure
+ *  reaches its `t` in tasks of this size, and plays at most this much a frame. */
+const SWARM_WORK = 5e5;
+/** The largest `t` and `speed` a figure takes. */
+const MAX_T = 1e6, MAX_SPEED = 1000;
 
 /** Each page's module, loaded when the first figure that needs it appears: one static import
  *  each, so that bundlers (`make single`) find them; one a page of pages.js. */
@@ -79,6 +84,9 @@ export class KliFigure extends HTMLElement {
     /** @type {any} the module's Demo, KeyframesDemo or SwarmDemo */
     this.demo = null;
     this.t = 0;
+    this.speed = 1;
+    /** Swarm steps still to take to reach `t` (catchUp). */
+    this.pending = 0;
     /** @type {Figures<string> | null} */
     this.figures = null;
     this.frame = 0;
@@ -152,12 +160,55 @@ export class KliFigure extends HTMLElement {
     this.figures.show(demo);
     this.figures.observe(() => this.draw());
     this.message.textContent = "";
-    const t = this.getAttribute("t");
-    this.t = t === null ? 0 : Math.max(0, parseNumber(t) || 0);
-    if (view === "swarm" && this.t > 0) demo.step(SWARM_DT, Math.min(Math.round(this.t / SWARM_DT), 1e5));
+    const t = this.getAttribute("t"), speed = this.getAttribute("speed");
+    this.t = t === null ? 0 : parseNumber(t);
+    this.speed = speed === null ? 1 : parseNumber(speed);
+    if (!(this.t >= 0 && this.t <= MAX_T)) return this.fail(`t must be a number from 0 to ${MAX_T} (got "${t}")`);
+    if (!(this.speed >= 0 && this.speed <= MAX_SPEED)) return this.fail(`speed must be a number from 0 to ${MAX_SPEED} (got "${speed}")`);
     this.describe();
+    // A swarm runs to its `t` in tasks of bounded work, drawn when it gets there.
+    this.pending = view === "swarm" ? Math.round(this.t / SWARM_DT) : 0;
+    if (this.pending > 0) {
+      setTimeout(() => this.catchUp(build));
+      return;
+    }
     this.draw();
     this.schedule();
+  }
+
+  /** The swarm's steps towards its `t`, a task at a time (each at most SWARM_WORK oscillator
+   *  steps), saying how far it has got. */
+  catchUp(/** @type {number} */ build) {
+    if (build !== this.built || !this.demo) return;
+    const steps = Math.min(this.pending, this.swarmSteps(Infinity));
+    if (!this.stepSwarm(steps)) return;
+    this.pending -= steps;
+    if (this.pending > 0) {
+      this.message.textContent = `Running the swarm to t = ${this.t}: ${Math.floor(100 * (1 - this.pending * SWARM_DT / this.t))}%`;
+      setTimeout(() => this.catchUp(build));
+      return;
+    }
+    this.message.textContent = "";
+    this.t = this.demo.time;
+    this.draw();
+    this.schedule();
+  }
+
+  /** Steps for a swarm frame of `dt`, at most SWARM_WORK oscillator steps. */
+  swarmSteps(/** @type {number} */ dt) {
+    const budget = Math.max(1, Math.floor(SWARM_WORK / this.demo.count));
+    return Math.min(budget, Math.max(1, Math.round(dt / SWARM_DT)));
+  }
+
+  /** `steps` swarm steps; a refusal is shown in the figure (false), never thrown each frame. */
+  stepSwarm(/** @type {number} */ steps) {
+    try {
+      this.demo.step(SWARM_DT, steps);
+      return true;
+    } catch (error) {
+      this.fail(error instanceof Error ? error.message : String(error));
+      return false;
+    }
   }
 
   /** The module's object for the page `name`, from the attributes over the defaults, read as
@@ -215,7 +266,7 @@ export class KliFigure extends HTMLElement {
   }
 
   schedule() {
-    if (this.frame || !this.demo || !this.playing || !this.visible || this.kind === "filmstrip") return;
+    if (this.frame || !this.demo || this.pending > 0 || !this.playing || !this.visible || this.kind === "filmstrip") return;
     this.last = performance.now();
     this.frame = requestAnimationFrame((now) => this.tick(now));
   }
@@ -223,11 +274,10 @@ export class KliFigure extends HTMLElement {
   tick(/** @type {number} */ now) {
     this.frame = 0;
     if (!this.demo || !this.playing || !this.visible) return;
-    const speed = parseNumber(this.getAttribute("speed") ?? "1");
-    const dt = (Math.min(Math.max(now - this.last, 0), 100) / 1000) * (Number.isFinite(speed) ? speed : 1);
+    const dt = (Math.min(Math.max(now - this.last, 0), 100) / 1000) * this.speed;
     this.last = now;
     if (this.kind === "swarm") {
-      this.demo.step(SWARM_DT, Math.max(1, Math.round(dt / SWARM_DT)));
+      if (dt > 0 && !this.stepSwarm(this.swarmSteps(dt))) return;
       this.t = this.demo.time;
     } else {
       const start = this.kind === "keyframes" ? this.demo.startTime : 0;

@@ -22,6 +22,14 @@ use crate::sphere_view::{Side, View, draw_globe, draw_grid_back, draw_grid_front
 
 /// Samples a unit of time for the series and the figures (as in MATH.md's measurements).
 const PER_UNIT: f64 = 256.0;
+
+/// The most samples a curve's plots and Hopf curve hold, whatever the time range: a range of
+/// 100,000 at [`PER_UNIT`] would take 2.6e7 samples a curve (26 s, then out of memory).
+const MAX_PLOT_SAMPLES: f64 = 4096.0;
+
+/// The most keys the page takes: the three curves, their figures and the key editor stay
+/// within a frame's budget (1,000 keys took 9 s).
+const MAX_KEYS: usize = 256;
 const NAMES: [&str; 3] = ["Kuramoto–Lohe chain", "Squad", "piecewise SLERP"];
 const COLOURS: [&str; 3] = [KLI, SLERP, INK];
 
@@ -95,6 +103,10 @@ impl KeyframesDemo {
                 format!("must hold 4 numbers per key (got {})", flat.len()),
             ));
         }
+        if flat.len() > 4 * MAX_KEYS {
+            let problem = format!("may hold at most {MAX_KEYS} keys here (got {})", flat.len() / 4);
+            return Err(KliError::invalid("keys", problem));
+        }
         let q: Vec<DQuat> =
             flat.chunks_exact(4).map(|c| from_wxyz([c[0], c[1], c[2], c[3]])).collect();
         let keys = Keys::new(&q, (!times.is_empty()).then_some(times))?;
@@ -102,7 +114,7 @@ impl KeyframesDemo {
             KliSpline::new(keys.clone(), &ChainOptions { smoothness, ..Default::default() })?;
         let (squad, slerp) = (Squad::new(keys.clone()), PiecewiseSlerp::new(keys.clone()));
         let (start, end) = (keys.times()[0], keys.times()[keys.len() - 1]);
-        let n = ((end - start) * PER_UNIT).ceil().max(16.0) as usize;
+        let n = ((end - start) * PER_UNIT).ceil().clamp(16.0, MAX_PLOT_SAMPLES) as usize;
         let sample_times: Vec<f64> =
             (0..=n).map(|k| start + (end - start) * k as f64 / n as f64).collect();
         let dt = sample_times[1] - sample_times[0];
