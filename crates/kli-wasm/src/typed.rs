@@ -178,7 +178,10 @@ impl F64Array {
     /// Copies `from` into elements `[start, start + from.len())`; an Error naming `name` if
     /// the array is not as long as it claims.
     pub fn write(&self, name: &str, start: usize, from: &[f64]) -> Result<(), KliError> {
-        let written = set_into(&self.view(start, from.len()), &Float64Array::from(from));
+        // SAFETY: a view of `from` in the module's memory, read by `set` at once; nothing
+        // allocates (or could grow the memory) between its making and its last use.
+        let source = unsafe { Float64Array::view(from) };
+        let written = set_into(&self.view(start, from.len()), &source);
         written
             .map_err(|e| KliError::invalid(name, format!("could not be written ({})", thrown(&e))))
     }

@@ -1,0 +1,44 @@
+// The package as built from earlier commits, for the benchmarks to measure beside the current one
+// in the same run (a speed figure means something only beside its reference). Each commit of
+// bench/previous.json is checked out into a temporary worktree and built with its own Makefile
+// (`make pkg`, using this checkout's node_modules/.bin for wasm-opt); its pkg/ is kept in
+// target/previous/<commit>/, so a commit is built once (about 3 minutes on 2 cores).
+//   node bench/previous.mjs            builds what is missing, prints the directories
+//   import { previous } from "./previous.mjs"   → [{ name, commit, dir }]
+import { execFileSync } from "node:child_process";
+import { existsSync, mkdirSync, readFileSync, writeFileSync, cpSync, rmSync } from "node:fs";
+import { join } from "node:path";
+
+const root = new URL("../", import.meta.url).pathname;
+/** The references: the last release before this work, and the commit before the split. */
+export const REFERENCES = JSON.parse(readFileSync(join(root, "bench/previous.json"), "utf8"));
+
+function build(commit) {
+  const dir = join(root, "target/previous", commit);
+  if (existsSync(join(dir, "pkg/kli.js"))) return join(dir, "pkg");
+  const work = join(dir, "src");
+  rmSync(work, { recursive: true, force: true });
+  mkdirSync(dir, { recursive: true });
+  execFileSync("git", ["worktree", "add", "--force", "--detach", work, commit], { cwd: root, stdio: "ignore" });
+  try {
+    // Its Makefile would `npm ci` without this stamp; this checkout's tools serve it.
+    mkdirSync(join(work, "node_modules"), { recursive: true });
+    writeFileSync(join(work, "node_modules/.installed"), "");
+    const env = { ...process.env, PATH: `${join(root, "node_modules/.bin")}:${process.env.PATH}` };
+    console.error(`building the package at ${commit} (once; a few minutes)`);
+    execFileSync("make", ["pkg"], { cwd: work, env, stdio: ["ignore", "ignore", "inherit"] });
+    cpSync(join(work, "pkg"), join(dir, "pkg"), { recursive: true });
+  } finally {
+    execFileSync("git", ["worktree", "remove", "--force", work], { cwd: root, stdio: "ignore" });
+  }
+  return join(dir, "pkg");
+}
+
+/** Every reference, built if need be: `{ name, commit, dir }`. */
+export function previous() {
+  return REFERENCES.map(({ name, commit }) => ({ name, commit, dir: build(commit) }));
+}
+
+if (import.meta.url === `file://${process.argv[1]}`) {
+  for (const { name, commit, dir } of previous()) console.log(`${name} (${commit}): ${dir}`);
+}
