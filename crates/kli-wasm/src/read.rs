@@ -45,7 +45,14 @@ pub fn describe(value: &JsValue) -> String {
         "undefined".into()
     } else if crate::typed::is_view(value) {
         let length = crate::typed::typed_length(value).unwrap_or(f64::NAN);
-        format!("a typed array of length {}", number(length))
+        // Its constructor's name, read with care (only for the message).
+        let kind = Reflect::get(value, &"constructor".into())
+            .and_then(|c| Reflect::get(&c, &"name".into()))
+            .ok()
+            .and_then(|n| n.as_string())
+            .unwrap_or_else(|| "typed array".into());
+        let article = if matches!(kind.as_bytes().first(), Some(b'I' | b'U')) { "an" } else { "a" };
+        format!("{article} {kind} of length {}", number(length))
     } else if is_array(value).unwrap_or(false) {
         match Reflect::get(value, &"length".into()).ok().and_then(|l| l.as_f64()) {
             Some(length) => format!("an array of length {}", number(length)),
@@ -81,19 +88,26 @@ pub fn numbers<const N: usize>(
 #[inline(never)]
 fn exactly(name: &str, value: &JsValue, shape: &str, out: &mut [f64]) -> Result<(), KliError> {
     let n = out.len();
-    match crate::typed::numbers(name, value, n) {
+    let problem = match crate::typed::numbers(name, value, n) {
         Ok(numbers) if numbers.len() == n => {
             out.copy_from_slice(&numbers);
-            Ok(())
+            return Ok(());
         }
-        // An element that is not a number is named as such ("p[2] must be a number …").
-        Err(e) if e.argument() != name => Err(e),
-        _ => {
-            let got = describe(value);
-            let problem = format!("must be an array of {n} numbers {shape} (got {got})");
-            Err(KliError::invalid(name, problem))
-        }
-    }
+        Err(e) => match e.kind() {
+            // An element that is not a number: "p must hold 4 numbers [w, x, y, z]: element 0
+            // is …"; a getter that threw: as it is.
+            ErrorKind::Invalid(problem) if problem.starts_with(crate::typed::ELEMENT) => {
+                let element = problem.strip_prefix(crate::typed::ELEMENT).unwrap_or_default();
+                format!("must hold {n} numbers {shape}: element {element}")
+            }
+            ErrorKind::Invalid(problem) if problem.starts_with(crate::typed::UNREADABLE) => {
+                return Err(e);
+            }
+            _ => format!("must be an array of {n} numbers {shape} (got {})", describe(value)),
+        },
+        Ok(_) => format!("must be an array of {n} numbers {shape} (got {})", describe(value)),
+    };
+    Err(KliError::invalid(name, problem))
 }
 
 /// How the caller lays quaternions out in arrays: scalar first `[w, x, y, z]` (the paper's

@@ -98,14 +98,19 @@ pub fn numbers(name: &str, value: &JsValue, max: usize) -> Result<Vec<f64>, KliE
     for i in 0..n as u32 {
         let element = get(name, value, &i.into())?;
         let Some(x) = element.as_f64() else {
-            let got = describe(&element);
-            let problem = format!("must be a number (got {got})");
-            return Err(KliError::invalid(format!("{name}[{i}]"), problem));
+            let problem = format!("{ELEMENT}{i} is {}", describe(&element));
+            return Err(KliError::invalid(name, problem));
         };
         out.push(x);
     }
     Ok(out)
 }
+
+/// How a value whose getter or Proxy trap threw is described: "options could not be read (…)".
+pub const UNREADABLE: &str = "could not be read ";
+
+/// How an element that is not a number is named: "times must hold numbers: element 2 is …".
+pub const ELEMENT: &str = "must hold numbers: element ";
 
 #[inline(never)]
 fn too_long(name: &str, length: f64, max: usize) -> KliError {
@@ -117,7 +122,7 @@ fn too_long(name: &str, length: f64, max: usize) -> KliError {
 #[inline(never)]
 pub fn get(name: &str, value: &JsValue, key: &JsValue) -> Result<JsValue, KliError> {
     Reflect::get(value, key)
-        .map_err(|e| KliError::invalid(name, format!("could not be read ({})", thrown(&e))))
+        .map_err(|e| KliError::invalid(name, format!("{UNREADABLE}({})", thrown(&e))))
 }
 
 /// What a caught exception says, for ours.
