@@ -109,6 +109,7 @@ test("kli/spline: 4,000 seeded hostile calls, no trap, no leak, every object sti
     const other = hostile(next);
     const calls = [
       () => s.at(value), () => s.angularVelocity(value), () => s.sample(value), () => s.sample([0, 1], value),
+      () => s.at(0.5, value), () => s.angularVelocity(1.5, value), () => s.at(value, other),
       () => s.sample(value, other), () => makers[i % 3](value), () => makers[i % 3](KEYS, value),
       () => makers[i % 3](KEYS, { times: value }), () => kliSpline(KEYS, { samplesPerSegment: value }),
       () => kliSpline(KEYS, { smoothness: value }), () => makers[i % 3](value, { order: other }),

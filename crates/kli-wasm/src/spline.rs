@@ -7,18 +7,20 @@ use kli::spline::{
     ChainOptions, Curve, Keys, KliSpline, MAX_SAMPLES_PER_SEGMENT, PiecewiseSlerp, Squad,
 };
 use kli::{KliError, Requirement, require};
+use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
 use crate::error::{JsResult, throw};
 use crate::options::Fields;
 use crate::read::{Order, describe, is_array, number_argument, quaternion};
-use crate::typed::{F64Array, get, is_view, numbers};
+use crate::typed::{F64Array, float64_length, get, is_view, numbers};
 
 #[wasm_bindgen(typescript_custom_section)]
 const TYPES: &'static str = r#"
-/** Keyframes: a Float64Array of 4m numbers, or an array of m quaternions (each 4 numbers, or an
- *  object `{ x, y, z, w }` such as a THREE.Quaternion). */
-export type KeysLike = Float64Array | Float32Array | ArrayLike<QuaternionLike>;
+/** Keyframes: 4m numbers (a Float64Array, a Float32Array such as a three.js track's or a glTF
+ *  accessor's `values`, any typed array of numbers, or a flat array), or an array of m
+ *  quaternions (each 4 numbers, or an object `{ x, y, z, w }` such as a THREE.Quaternion). */
+export type KeysLike = ArrayLike<number> | ArrayLike<QuaternionLike>;
 
 /** Options of squadSpline and slerpSpline. */
 export interface SplineOptions {
@@ -88,18 +90,39 @@ fn finite_time(name: &str, t: &JsValue) -> Result<f64, KliError> {
     require(name, t, Requirement::Finite)
 }
 
+/// `values` written into `out` (absent: a new Float64Array), which must be a Float64Array of
+/// exactly their length; element by element, so nothing is allocated.
+fn fill(out: &JsValue, values: &[f64]) -> Result<Float64Array, KliError> {
+    if out.is_undefined() || out.is_null() {
+        return Ok(Float64Array::from(values));
+    }
+    if float64_length("out", out)? != values.len() {
+        let problem = format!("must be a Float64Array of {} (got {})", values.len(), describe(out));
+        return Err(KliError::invalid("out", problem));
+    }
+    let out: &Float64Array = out.unchecked_ref();
+    for (i, &x) in values.iter().enumerate() {
+        // A genuine typed array's indexed write runs no code of the caller's and cannot throw.
+        out.set_index(i as u32, x);
+    }
+    Ok(out.clone())
+}
+
 /// The most times (or keys) one call reads: 2^24.
 const MAX_LENGTH: usize = 1 << 24;
 
 #[wasm_bindgen]
 impl RotationSpline {
-    /// `q(t)`, in the spline's `order`.
+    /// `q(t)`, in the spline's `order`: into `out` (a Float64Array of 4) when given, with no
+    /// allocation (for a frame loop), else a new Float64Array(4); returns it.
     pub fn at(
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] t: &JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | null")] out: &JsValue,
     ) -> JsResult<Float64Array> {
         let t = finite_time("t", t).map_err(throw)?;
-        Ok(self.order.array(self.curve().at(t)))
+        let q = self.order.write(self.curve().at(t));
+        fill(out, &q).map_err(throw)
     }
 
     /// `q` at each of `times` (Float64Array or array), into `out` (Float64Array(4n)) when given,
@@ -142,14 +165,16 @@ impl RotationSpline {
         sample().map_err(throw)
     }
 
-    /// The world-frame angular velocity ω at `t` (`q' = ½ ω q`), as [x, y, z].
+    /// The world-frame angular velocity ω at `t` (`q' = ½ ω q`), as [x, y, z]: into `out` (a
+    /// Float64Array of 3) when given, else a new Float64Array(3); returns it.
     #[wasm_bindgen(js_name = angularVelocity)]
     pub fn angular_velocity(
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] t: &JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | null")] out: &JsValue,
     ) -> JsResult<Float64Array> {
         let t = finite_time("t", t).map_err(throw)?;
-        Ok(Float64Array::from(&self.curve().angular_velocity(t).to_array()[..]))
+        fill(out, &self.curve().angular_velocity(t).to_array()).map_err(throw)
     }
 
     /// The keys as used (normalised, signs made consistent), 4m numbers in the spline's `order`.
@@ -191,6 +216,14 @@ impl RotationSpline {
 /// options' `times`.
 fn read_keys(value: &JsValue, times: Option<Vec<f64>>, order: Order) -> Result<Keys, KliError> {
     let quaternions: Vec<DQuat> = if is_view(value) {
+        let flat = numbers("keys", value, MAX_LENGTH)?;
+        if flat.len() % 4 != 0 {
+            let problem = format!("must hold 4 numbers per key (got {})", flat.len());
+            return Err(KliError::invalid("keys", problem));
+        }
+        flat.chunks_exact(4).map(|q| order.read([q[0], q[1], q[2], q[3]])).collect()
+    } else if is_array(value).unwrap_or(false) && get("keys", value, &0.into())?.as_f64().is_some() {
+        // A flat array of numbers, 4 a key (a three.js track's `values` as an Array).
         let flat = numbers("keys", value, MAX_LENGTH)?;
         if flat.len() % 4 != 0 {
             let problem = format!("must hold 4 numbers per key (got {})", flat.len());

@@ -132,6 +132,16 @@ pub fn thrown(e: &JsValue) -> String {
     format!("it threw: {}", message.unwrap_or_else(|| describe(e)))
 }
 
+/// The length of `value` if it is a Float64Array, else an Error naming what it is: the cheap
+/// check (three calls into JavaScript) of an `out` written element by element.
+pub fn float64_length(name: &str, value: &JsValue) -> Result<usize, KliError> {
+    let length = value.unchecked_ref::<Caller>().length();
+    match length {
+        Ok(n) if is_view(value) && value.is_instance_of::<Float64Array>() => Ok(n as usize),
+        _ => Err(refused(name, "a Float64Array", value)),
+    }
+}
+
 /// A caller's Float64Array: read and written through its slots, a chunk at a time if need be.
 pub struct F64Array {
     array: JsValue,

@@ -55,13 +55,13 @@ fn the_three_curves_hit_the_keys_as_made_consistent() {
     assert_eq!(&used[4..8], &[0.8, 0.6, 0.0, 0.0]);
     for (i, &t) in [0.0, 0.5, 2.0, 3.0].iter().enumerate() {
         for curve in [&kli, &squad] {
-            let q = curve.at(&n(t)).unwrap().to_vec();
+            let q = curve.at(&n(t), &JsValue::UNDEFINED).unwrap().to_vec();
             let gap: f64 = (0..4).map(|c| (q[c] - used[4 * i + c]).abs()).fold(0.0, f64::max);
             assert!(gap < 1e-12, "key {i}: {q:?}");
         }
     }
     // slerpSpline uses the default times 0, 1, 2, 3; t outside is clamped.
-    assert_eq!(slerp.at(&n(-5.0)).unwrap().to_vec(), used[..4].to_vec());
+    assert_eq!(slerp.at(&n(-5.0), &JsValue::UNDEFINED).unwrap().to_vec(), used[..4].to_vec());
     assert_eq!((slerp.start_time(), slerp.end_time()), (0.0, 3.0));
     assert!(kli.residual().unwrap() <= 1e-10 && kli.iterations().is_some());
     assert!(squad.residual().is_none() && squad.iterations().is_none());
@@ -77,13 +77,13 @@ fn sample_matches_at_and_fills_out() {
     for (k, &t) in times.iter().enumerate() {
         assert_eq!(
             out.subarray(4 * k as u32, 4 * k as u32 + 4).to_vec(),
-            kli.at(&n(t)).unwrap().to_vec()
+            kli.at(&n(t), &JsValue::UNDEFINED).unwrap().to_vec()
         );
     }
     // ω: q' = ½ ω q; piecewise SLERP turns at constant speed on a segment: |ω| = the rotation
     // angle between the keys (2·acos(k0·k1) = 2·acos(0.8)) over the segment's time (1).
     let slerp = slerp_spline(&flat(), None).unwrap();
-    let omega = slerp.angular_velocity(&n(0.5)).unwrap().to_vec();
+    let omega = slerp.angular_velocity(&n(0.5), &JsValue::UNDEFINED).unwrap().to_vec();
     let speed = omega.iter().map(|c| c * c).sum::<f64>().sqrt();
     assert!((speed - 2.0 * 0.8_f64.acos()).abs() < 1e-6, "{speed}");
 }
@@ -120,7 +120,7 @@ fn bad_input_names_the_argument_and_element() {
     );
     assert_eq!(argument(kli_spline(&flat(), options(&[("tension", 1.into())]))), "options");
     let spline = slerp_spline(&flat(), None).unwrap();
-    let Err(error) = spline.at(&n(f64::NAN)) else { panic!() };
+    let Err(error) = spline.at(&n(f64::NAN), &JsValue::UNDEFINED) else { panic!() };
     assert_eq!(Reflect::get(&error, &"argument".into()).unwrap(), "t");
 }
 
@@ -150,14 +150,14 @@ fn scalar_last_keys_give_scalar_last_curves_and_objects_are_read_as_named() {
     let from_objects = kli_spline(objects.unchecked_ref(), None).unwrap();
     let expected = plain.sample(&times, &JsValue::UNDEFINED).unwrap().to_vec();
     assert_eq!(last.sample(&times, &JsValue::UNDEFINED).unwrap().to_vec(), xyzw(&expected));
-    assert_eq!(last.at(&n(1.7)).unwrap().to_vec(), xyzw(&plain.at(&n(1.7)).unwrap().to_vec()));
+    assert_eq!(last.at(&n(1.7), &JsValue::UNDEFINED).unwrap().to_vec(), xyzw(&plain.at(&n(1.7), &JsValue::UNDEFINED).unwrap().to_vec()));
     assert_eq!(last.keys().to_vec(), xyzw(&plain.keys().to_vec()));
     assert_eq!(from_objects.sample(&times, &JsValue::UNDEFINED).unwrap().to_vec(), expected);
     let squad = squad_spline(&keys, Some(scalar_last().unwrap().unchecked_into())).unwrap();
     let plain_squad = squad_spline(&flat(), None).unwrap();
     assert_eq!(
-        squad.at(&n(0.5)).unwrap().to_vec(),
-        xyzw(&plain_squad.at(&n(0.5)).unwrap().to_vec())
+        squad.at(&n(0.5), &JsValue::UNDEFINED).unwrap().to_vec(),
+        xyzw(&plain_squad.at(&n(0.5), &JsValue::UNDEFINED).unwrap().to_vec())
     );
     // A bad component is named as laid out.
     let mut bad = xyzw(&KEYS);
