@@ -222,7 +222,8 @@ fn read_keys(value: &JsValue, times: Option<Vec<f64>>, order: Order) -> Result<K
             return Err(KliError::invalid("keys", problem));
         }
         flat.chunks_exact(4).map(|q| order.read([q[0], q[1], q[2], q[3]])).collect()
-    } else if is_array(value).unwrap_or(false) && get("keys", value, &0.into())?.as_f64().is_some() {
+    } else if is_array(value).unwrap_or(false) && get("keys", value, &0.into())?.as_f64().is_some()
+    {
         // A flat array of numbers, 4 a key (a three.js track's `values` as an Array).
         let flat = numbers("keys", value, MAX_LENGTH)?;
         if flat.len() % 4 != 0 {

@@ -150,7 +150,10 @@ fn scalar_last_keys_give_scalar_last_curves_and_objects_are_read_as_named() {
     let from_objects = kli_spline(objects.unchecked_ref(), None).unwrap();
     let expected = plain.sample(&times, &JsValue::UNDEFINED).unwrap().to_vec();
     assert_eq!(last.sample(&times, &JsValue::UNDEFINED).unwrap().to_vec(), xyzw(&expected));
-    assert_eq!(last.at(&n(1.7), &JsValue::UNDEFINED).unwrap().to_vec(), xyzw(&plain.at(&n(1.7), &JsValue::UNDEFINED).unwrap().to_vec()));
+    assert_eq!(
+        last.at(&n(1.7), &JsValue::UNDEFINED).unwrap().to_vec(),
+        xyzw(&plain.at(&n(1.7), &JsValue::UNDEFINED).unwrap().to_vec())
+    );
     assert_eq!(last.keys().to_vec(), xyzw(&plain.keys().to_vec()));
     assert_eq!(from_objects.sample(&times, &JsValue::UNDEFINED).unwrap().to_vec(), expected);
     let squad = squad_spline(&keys, Some(scalar_last().unwrap().unchecked_into())).unwrap();

@@ -1,0 +1,59 @@
+// Seeded hostile URLs on every page (issue 17): random keys of each page's schema given hostile
+// values. Each load must show no error outside the refused fields' messages, no NaN or Infinity
+// in what the page computed (its readouts, tables and status), run no task over 200 ms and run
+// no injected script.
+import { test } from "node:test";
+import assert from "node:assert/strict";
+import { setup, open } from "./browser.mjs";
+import { STATES } from "../../www/states.js";
+
+setup();
+
+const HOSTILE = ["NaN", "Infinity", "-Infinity", "1e308", "-1e308", "0", "-0", "1e-320", "abc", "", "0x10", "1,2",
+  ";;;", "1,0,0,0;", "%00", "<img src=x onerror=window.__pwned=1>", "1".repeat(400), "9".repeat(20), "-1", "2.5",
+  "1e9", "0,0,0,0", "1,0,0,0;0,0,0,0", "1,0,0,0;1,0,0,0;1,0,0,0", "0,1,1,2", "5,4,3"];
+const PAGES = { kli: "index.html", keyframes: "keyframes.html", swarm: "swarm.html" };
+
+function random(seed) {
+  let x = seed >>> 0 || 1;
+  return () => {
+    x ^= x << 13; x ^= x >>> 17; x ^= x << 5; x >>>= 0;
+    return x / 4294967296;
+  };
+}
+
+const watch = () => {
+  window.__longTasks = [];
+  new PerformanceObserver((list) => {
+    for (const entry of list.getEntries()) window.__longTasks.push(Math.round(entry.duration));
+  }).observe({ type: "longtask", buffered: true });
+};
+
+for (const [name, html] of Object.entries(PAGES)) {
+  test(`${html}: 10 seeded hostile URLs, each shown or refused by name, nothing else`, async () => {
+    const next = random(name.length * 7919);
+    const keys = STATES[name].schema.map((entry) => entry.url);
+    for (let k = 0; k < 10; k++) {
+      const params = new URLSearchParams();
+      const count = 1 + Math.floor(next() * 3);
+      for (let i = 0; i < count; i++) params.set(keys[Math.floor(next() * keys.length)], HOSTILE[Math.floor(next() * HOSTILE.length)]);
+      const query = `${html}?${params}`;
+      const { page, context, problems } = await open(query, { init: watch, reducedMotion: "reduce" });
+      try {
+        await page.waitForTimeout(300);
+        const found = await page.evaluate(() => {
+          // What the page computed: everything but the refused fields' messages and the fields.
+          const clone = document.body.cloneNode(true);
+          for (const node of clone.querySelectorAll("[id$='-error'], input, textarea, select, script, style")) node.remove();
+          return { text: clone.innerText, tasks: window.__longTasks, pwned: window.__pwned };
+        });
+        assert.doesNotMatch(found.text, /\bNaN\b|\bInfinity\b/, query);
+        assert.ok(Math.max(0, ...found.tasks) <= 200, `${query}: tasks ${found.tasks}`);
+        assert.equal(found.pwned, undefined, query);
+        assert.deepEqual(problems, [], query);
+      } finally {
+        await context.close();
+      }
+    }
+  });
+}
