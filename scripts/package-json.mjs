@@ -25,6 +25,27 @@ for (const m of modules) {
   // compile the declarations without adding esnext.disposable themselves.
   const types = manifest(`pkg/${m}.d.ts`);
   if (!types.startsWith("/// <reference lib")) writeFileSync(at(`pkg/${m}.d.ts`), `/// <reference lib="esnext.disposable" />\n${types}`);
+  // isKliError, a type guard for `catch (e)`, in every entry: plain JavaScript, so it costs the
+  // .wasm nothing.
+  const glue = manifest(`pkg/${m}.js`);
+  if (!glue.includes("export function isKliError(")) {
+    writeFileSync(at(`pkg/${m}.js`), `${glue}
+/**
+ * True for every Error kli throws (from any entry): an Error with the string properties
+ * \`argument\` and \`kind\`. A type guard: \`catch (e) { if (isKliError(e)) e.argument }\`.
+ * @param {unknown} value
+ * @returns {value is KliError}
+ */
+export function isKliError(value) {
+    return value instanceof Error && typeof value.argument === "string" && typeof value.kind === "string";
+}
+`);
+    writeFileSync(at(`pkg/${m}.d.ts`), `${manifest(`pkg/${m}.d.ts`)}
+/** True for every Error kli throws (from any entry): an Error with the string properties
+ *  \`argument\` and \`kind\`. A type guard: \`catch (e) { if (isKliError(e)) e.argument }\`. */
+export function isKliError(value: unknown): value is KliError;
+`);
+  }
   writeFileSync(at(`pkg/${m}.node.js`), `// Node (and SSR, Vitest): the same module, with init() reading the .wasm beside this file
 // from disk when given nothing, where the browser entry would fetch it (fetch cannot read file:).
 import init from "./${m}.js";

@@ -71,6 +71,7 @@ function attempt(call, check = () => {}) {
     assert.ok(e instanceof Error, `not an Error: ${String(e)}`);
     assert.equal(typeof e.argument, "string", `no argument: ${e.message}`);
     assert.equal(typeof e.kind, "string", `no kind: ${e.message}`);
+    assert.ok(kli.module.isKliError(e) && spline.module.isKliError(e) && swarm.module.isKliError(e));
     assert.doesNotMatch(e.message, /unreachable|table index|memory access|null pointer passed|recursive use of|is not a function|Cannot convert/);
     return e.kind;
   }
@@ -95,6 +96,16 @@ function wellFormed(result, unit = false) {
 }
 
 const KEYS = [[1, 0, 0, 0], [0.5, 0.5, 0.5, 0.5], [0, 0, 1, 0], [0.5, -0.5, 0.5, 0.5]];
+
+test("isKliError: true for kli's Errors, false for anything else", () => {
+  for (const { module } of [kli, spline, swarm]) {
+    assert.equal(module.isKliError(new Error("x")), false);
+    assert.equal(module.isKliError({ message: "m", argument: "a", kind: "invalid" }), false);
+    assert.equal(module.isKliError(undefined), false);
+    assert.equal(module.isKliError(Object.assign(new TypeError("t"), { argument: "a", kind: "invalid" })), true);
+  }
+  try { kli.module.slerp([1, 0, 0, 0], [0, 0, 0, 0], 0.5); assert.fail("accepted"); } catch (e) { assert.ok(swarm.module.isKliError(e)); }
+});
 
 test("kli/spline: 4,000 seeded hostile calls, no trap, no leak, every object still usable", () => {
   const { kliSpline, squadSpline, slerpSpline } = spline.module;

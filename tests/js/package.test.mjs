@@ -191,9 +191,9 @@ test("bundles with esbuild and runs", () => {
 
 test("the TypeScript types are precise: right use compiles, wrong use does not", () => {
   writeFileSync(join(project, "use.ts"), `
-    import { kli, slerp, hopf, axisAngle, type KliOptions, type KliPath, type Integrator, type KliError, type KliErrorKind } from "kli";
-    import { LoheSwarm, type SwarmOptions } from "kli/swarm";
-    import { kliSpline, type KliSpline } from "kli/spline";
+    import { kli, slerp, hopf, axisAngle, isKliError, type KliOptions, type KliPath, type Integrator, type KliError, type KliErrorKind } from "kli";
+    import { LoheSwarm, isKliError as isSwarmError, type SwarmOptions } from "kli/swarm";
+    import { kliSpline, isKliError as isSplineError, type KliSpline } from "kli/spline";
     // The .wasm subpath has types too (its raw exports, for bundlers that import wasm).
     import type { memory } from "kli/kli_bg.wasm";
     const raw: typeof memory | undefined = undefined;
@@ -212,6 +212,17 @@ test("the TypeScript types are precise: right use compiles, wrong use does not",
       // @ts-expect-error: not a kind
       const wrong: KliErrorKind = "bad";
       void [argument, kind, component, wrong];
+    }
+    // The type guard, from every entry, narrows unknown to KliError.
+    try {
+      kli([0, 0, 0, 1], [0, 0, 0, 0]);
+    } catch (e: unknown) {
+      if (isKliError(e) && isSwarmError(e) && isSplineError(e)) {
+        const kind: KliErrorKind = e.kind;
+        void kind;
+      }
+      // @ts-expect-error: unknown until narrowed
+      void e.argument;
     }
     const which: Integrator = path.integrator;
     const s: Float64Array = slerp([1, 0, 0, 0], [0, 1, 0, 0], 0.5);
