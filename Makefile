@@ -57,6 +57,7 @@ ENTRIES := swarm spline
 # `make demo` serves at once when nothing changed (tests/js/build.test.mjs checks it).
 CORE_SOURCES := Cargo.toml Cargo.lock $(shell find src -name '*.rs')
 PKG_SOURCES := $(CORE_SOURCES) crates/kli-wasm/Cargo.toml $(shell find crates/kli-wasm/src -name '*.rs') \
+               $(wildcard crates/kli-wasm/js/*) \
                scripts/package-json.mjs scripts/glue.mjs
 WWW_SOURCES := $(PKG_SOURCES) crates/kli-demo/Cargo.toml $(shell find crates/kli-demo/src -name '*.rs') \
                scripts/pages.mjs www/pages.js node_modules/.installed
@@ -75,6 +76,8 @@ pkg/.built: $(PKG_SOURCES)
 	done
 	node scripts/glue.mjs pkg/kli.js $(foreach entry,$(ENTRIES),pkg/$(entry).js)
 	for module in kli $(ENTRIES); do wasm-opt -O3 $(WASM_FEATURES) pkg/$${module}_bg.wasm -o pkg/$${module}_bg.wasm; done
+	@# kli/three: plain JavaScript over kli/spline, three.js an optional peer.
+	cp crates/kli-wasm/js/three.js crates/kli-wasm/js/three.d.ts pkg/
 	cp README.md pkg/
 	node scripts/package-json.mjs
 	@for module in kli $(ENTRIES); do \

@@ -27,7 +27,7 @@ before(() => {
 test("the tarball holds every file the package needs, and only those", () => {
   const installed = readdirSync(join(project, "node_modules/kli")).sort();
   const entry = (m) => [`${m}.d.ts`, `${m}.js`, `${m}.node.js`, `${m}_bg.wasm`, `${m}_bg.wasm.d.ts`];
-  assert.deepEqual(installed, ["LICENSE", "README.md", ...entry("kli"), "package.json", ...entry("spline"), ...entry("swarm")].sort());
+  assert.deepEqual(installed, ["LICENSE", "README.md", ...entry("kli"), "package.json", ...entry("spline"), ...entry("swarm"), "three.d.ts", "three.js"].sort());
   const manifest = JSON.parse(readFileSync(join(project, "node_modules/kli/package.json"), "utf8"));
   const cargo = readFileSync(join(root, "Cargo.toml"), "utf8");
   assert.equal(manifest.version, cargo.match(/^version = "(.*)"/m)[1]);
@@ -175,6 +175,64 @@ test("three.js and gl-matrix quaternions go in and come out as they are, scalar 
   three.forEach((c, i) => assert.ok(Math.abs(c - ours[i]) < 1e-6, `three.js ${three} vs kli ${ours}`));
   // gl-matrix works in float32.
   gl.forEach((c, i) => assert.ok(Math.abs(c - batch[i]) < 1e-6, `gl-matrix ${gl} vs kli ${batch}`));
+});
+
+test("kli/three: smoothTrack and smoothInterpolation put the chain through a three.js track", () => {
+  // three.js is an optional peer: the project has it as an app would (here, the dev dependency).
+  execFileSync("ln", ["-sfn", join(root, "node_modules/three"), join(project, "node_modules/three")]);
+  writeFileSync(join(project, "three-smooth.mjs"), `
+    import * as THREE from "three";
+    import initSpline, { kliSpline } from "kli/spline";
+    import { smoothTrack, smoothInterpolation, isKliError } from "kli/three";
+    await initSpline();
+    const q = (axis, angle) => new THREE.Quaternion().setFromAxisAngle(new THREE.Vector3(...axis).normalize(), angle);
+    const keys = [q([1, 0, 0], 0), q([1, 0, 0], 1.2), q([0, 1, 0], 2.0), q([1, 1, 0], 0.5), q([0, 0, 1], 2.5)];
+    const times = [0, 0.8, 1.5, 2.7, 3.2];
+    const linear = new THREE.QuaternionKeyframeTrack(".quaternion", times, keys.flatMap((k) => [k.x, k.y, k.z, k.w]));
+    const smooth = smoothTrack(linear, { fps: 60 });
+    const live = smoothInterpolation(linear);
+    const sampler = (track) => { const i = track.createInterpolant(new Float32Array(4)); return (t) => new THREE.Quaternion().fromArray(i.evaluate(t)); };
+    // ω over [t, t + h] from two samples: 2 log(q(t + h) q(t)⁻¹) / h.
+    const omega = (f, t, h) => {
+      const d = f(t + h).multiply(f(t).invert());
+      if (d.w < 0) d.set(-d.x, -d.y, -d.z, -d.w);
+      const s = Math.hypot(d.x, d.y, d.z), angle = 2 * Math.atan2(s, d.w);
+      return s === 0 ? [0, 0, 0] : [d.x, d.y, d.z].map((c) => (c / s) * angle / h);
+    };
+    // The jump of ω across each inner key.
+    const jumps = (track, h = 1e-3) => { const f = sampler(track); return times.slice(1, -1).map((k) => { const b = omega(f, k - 2 * h, h), a = omega(f, k + h, h); return Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }); };
+    // Every key hit (as q or −q), within single precision.
+    const hit = times.map((t, i) => { const v = sampler(smooth)(t); return Math.abs(Math.abs(v.dot(keys[i])) - 1) < 1e-6 && Array.from(smooth.times).includes(Math.fround(t)); });
+    const clip = new THREE.AnimationClip("tumble", -1, [smooth]);
+    const parsed = THREE.AnimationClip.parse(THREE.AnimationClip.toJSON(clip));
+    // The mixer on the live track gives the chain itself.
+    const object = new THREE.Object3D(), mixer = new THREE.AnimationMixer(object);
+    mixer.clipAction(new THREE.AnimationClip("live", -1, [live])).play();
+    mixer.update(1.1);
+    const chain = kliSpline(linear.values, { times: linear.times, order: "xyzw" });
+    const expected = Array.from(chain.at(1.1));
+    let refused;
+    try { smoothTrack(linear, { fps: 0 }); } catch (e) { refused = [isKliError(e), e.argument, e.message]; }
+    console.log(JSON.stringify({ linear: jumps(linear), smooth: jumps(smooth), live: jumps(live), hit, valid: smooth.validate(),
+      name: smooth.name, samples: smooth.times.length, parsed: parsed.tracks[0].times.length, mixed: object.quaternion.toArray(), expected, refused }));
+  `);
+  const r = run("three-smooth.mjs");
+  assert.deepEqual(r.hit, [true, true, true, true, true]);
+  assert.equal(r.valid, true);
+  assert.equal(r.name, ".quaternion");
+  // 3.2 s at 60 a second, the keys' times among them: 193 samples, kept through toJSON and parse.
+  assert.equal(r.samples, 193);
+  assert.equal(r.parsed, 193);
+  // three's linear track turns ω abruptly at each key (3.9–5.2 rad/s); the chain does not: at 60 fps
+  // its resampled track jumps by about ω̇/60 at any sample (20× less), and live by the finite
+  // difference's own ω̇·h (about 100× less).
+  r.linear.forEach((j, k) => {
+    assert.ok(j > 1, `linear jump ${j}`);
+    assert.ok(r.smooth[k] < j / 20, `smoothTrack jump ${r.smooth[k]} against ${j}`);
+    assert.ok(r.live[k] < j / 50, `smoothInterpolation jump ${r.live[k]} against ${j}`);
+  });
+  r.mixed.forEach((c, i) => assert.ok(Math.abs(c - r.expected[i]) < 1e-12, `mixer ${r.mixed} vs chain ${r.expected}`));
+  assert.deepEqual(r.refused, [true, "fps", "fps must be a number from 1 to 1000 (got 0)"]);
 });
 
 test("bundles with esbuild and runs", () => {
