@@ -73,9 +73,9 @@ fn run_arrays(
         (vec![0.0; 4 * chunk], vec![0.0; 4 * chunk], vec![0.0; chunk], vec![0.0; 4 * chunk]);
     for first in (0..n).step_by(CHUNK.max(1)) {
         let m = CHUNK.min(n - first);
-        starts.read(4 * first, &mut p[..4 * m]);
-        ends.read(4 * first, &mut r[..4 * m]);
-        parameters.read(first, &mut x[..m]);
+        starts.read("starts", 4 * first, &mut p[..4 * m])?;
+        ends.read("ends", 4 * first, &mut r[..4 * m])?;
+        parameters.read(parameter_name, first, &mut x[..m])?;
         run_batch(kind, &p[..4 * m], &r[..4 * m], &x[..m], &mut q[..4 * m], first, shortest_path)?;
         out.write("out", 4 * first, &q[..4 * m])?;
     }

@@ -5,8 +5,8 @@
 //! every JavaScript operation here that can throw is an import marked `catch`. Numbers are read
 //! from a typed array by copying it (`new Float64Array(source)`, which reads its internal slots:
 //! an own `length` property or a changed prototype cannot make it lie), and the caller's
-//! Float64Arrays are written through `Float64Array.prototype.set`, which fails (an Error, not a
-//! trap) if their claimed length is not their own.
+//! Float64Arrays are written through fresh views of their buffer, which fail (an Error, not a
+//! trap) if their claimed facts are not their own.
 
 use js_sys::{Float64Array, Reflect};
 use kli::KliError;
@@ -32,10 +32,6 @@ extern "C" {
     /// `new Float64Array(buffer, byteOffset, length)`: a fresh view, so no species lookup.
     #[wasm_bindgen(catch, constructor, js_class = "Float64Array")]
     fn view_of(buffer: &JsValue, byte_offset: f64, length: f64) -> Result<Fresh, JsValue>;
-
-    /// `Float64Array.prototype.set.call(target, source)`: writes into `target` by its slots.
-    #[wasm_bindgen(catch, js_namespace = ["Float64Array", "prototype", "set"], js_name = call)]
-    fn set_into(target: &JsValue, source: &Float64Array) -> Result<(), JsValue>;
 
     /// The caller's Float64Array, its properties read with every exception caught.
     #[wasm_bindgen(js_name = Float64Array)]
@@ -79,6 +75,10 @@ fn refused(name: &str, wanted: &str, value: &JsValue) -> KliError {
 pub fn numbers(name: &str, value: &JsValue, max: usize) -> Result<Vec<f64>, KliError> {
     let wanted = "a typed array or an array of numbers";
     if is_view(value) {
+        // Its own length first, so a huge array is refused before it is copied.
+        if let Some(length) = typed_length(value).filter(|&n| n > max as f64) {
+            return Err(too_long(name, length, max));
+        }
         let Some(copy) = copy(value) else { return Err(refused(name, wanted, value)) };
         if copy.length() as usize > max {
             return Err(too_long(name, copy.length() as f64, max));
@@ -172,33 +172,38 @@ impl F64Array {
     }
 
     /// A fresh view of elements `[start, start + length)`.
-    fn view(&self, start: usize, length: usize) -> Float64Array {
+    fn view(&self, name: &str, start: usize, length: usize) -> Result<Float64Array, KliError> {
         let offset = self.byte_offset + 8.0 * start as f64;
-        // A fresh view of a range checked against the array's own length cannot fail; were it
-        // to (a buffer shrunk under us), an empty view makes the copy a no-op, not a throw.
+        // A fresh view of a range checked against the array's own length fails only if its
+        // facts were forged (own `buffer`, `byteOffset` or `length` properties): an Error.
         match Fresh::view_of(&self.buffer, offset, length as f64) {
-            Ok(view) => view.unchecked_into(),
-            Err(_) => Float64Array::new_with_length(0),
+            Ok(view) => Ok(view.unchecked_into()),
+            Err(e) => Err(KliError::invalid(name, format!("{UNREADABLE}({})", thrown(&e)))),
         }
     }
 
     /// Copies elements `[start, start + into.len())` into `into`.
-    pub fn read(&self, start: usize, into: &mut [f64]) {
-        let view = self.view(start, into.len());
-        if view.length() as usize == into.len() {
-            view.copy_to(into);
+    pub fn read(&self, name: &str, start: usize, into: &mut [f64]) -> Result<(), KliError> {
+        let view = self.view(name, start, into.len())?;
+        if view.length() as usize != into.len() {
+            return Err(KliError::invalid(name, "is shorter than its length says"));
         }
+        view.copy_to(into);
+        Ok(())
     }
 
-    /// Copies `from` into elements `[start, start + from.len())`; an Error naming `name` if
-    /// the array is not as long as it claims.
+    /// Copies `from` into elements `[start, start + from.len())`. The copy is made in
+    /// JavaScript straight from the module's memory (`copy_from`): a view of it held across a
+    /// call could be detached by the memory growing under it.
     pub fn write(&self, name: &str, start: usize, from: &[f64]) -> Result<(), KliError> {
-        // SAFETY: a view of `from` in the module's memory, read by `set` at once; nothing
-        // allocates (or could grow the memory) between its making and its last use.
-        let source = unsafe { Float64Array::view(from) };
-        let written = set_into(&self.view(start, from.len()), &source);
-        written
-            .map_err(|e| KliError::invalid(name, format!("could not be written ({})", thrown(&e))))
+        let view = self.view(name, start, from.len())?;
+        if view.length() as usize != from.len() {
+            return Err(KliError::invalid(name, "is shorter than its length says"));
+        }
+        // A fresh view exactly as long as `from`, and no code of the caller's runs: `set`
+        // cannot throw.
+        view.copy_from(from);
+        Ok(())
     }
 
     /// The caller's array, to return.
