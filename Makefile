@@ -98,7 +98,7 @@ www/pkg/.built: $(WWW_SOURCES) pkg/.built
 	rm -rf www/pkg www/examples/vendor
 	@# The examples import the package and three.js by name (an import map): both served locally.
 	mkdir -p www/examples/vendor/kli www/examples/vendor/three
-	cp pkg/kli.js pkg/kli_bg.wasm www/examples/vendor/kli/
+	cp pkg/kli.js pkg/kli_bg.wasm pkg/spline.js pkg/spline_bg.wasm pkg/three.js www/examples/vendor/kli/
 	@# three.js as one minified module with its source map, as an app's bundler would serve it.
 	esbuild node_modules/three/build/three.module.js --bundle --format=esm --minify --sourcemap \
 	  --log-level=warning --outfile=www/examples/vendor/three/three.module.js

@@ -125,3 +125,29 @@ test("<kli-figure> at 390 px: the page fits, the floated figure goes full width;
     await context.close();
   }
 });
+
+test("animation example: three.js's linear track beside kli/three's smooth one, |ω| under each", async () => {
+  const { page, context, problems } = await open("examples/animation.html", { reducedMotion: "reduce" });
+  try {
+    const text = await page.locator("#jumps").textContent();
+    const [linear, smooth] = [...text.matchAll(/([\d.]+) rad\/s/g)].map((m) => Number(m[1]));
+    // three's track turns abruptly at the keys; the chain's |ω| is continuous there.
+    assert.ok(linear > 1 && smooth < linear / 20, text);
+    // Scrubbing moves both objects, and the two differ between keys (linear ≠ smooth).
+    await page.locator("#time").fill("2.3");
+    await page.waitForFunction(() => document.querySelector("#readout").textContent.startsWith("t = 2.30"));
+    // Both plots are drawn in their colours.
+    const drawn = await page.evaluate(() => ["#linear-speed", "#smooth-speed"].map((id) => {
+      const canvas = document.querySelector(id);
+      const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
+      let coloured = 0;
+      for (let i = 0; i < data.length; i += 4) if (data[i + 3] > 0 && Math.abs(data[i] - data[i + 2]) > 60) coloured++;
+      return coloured;
+    }));
+    assert.ok(drawn.every((n) => n > 300), `plots ${drawn}`);
+    assert.deepEqual(await axeViolations(page), []);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
