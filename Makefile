@@ -76,8 +76,8 @@ pkg/.built: $(PKG_SOURCES)
 	done
 	node scripts/glue.mjs pkg/kli.js $(foreach entry,$(ENTRIES),pkg/$(entry).js)
 	for module in kli $(ENTRIES); do wasm-opt -O3 $(WASM_FEATURES) pkg/$${module}_bg.wasm -o pkg/$${module}_bg.wasm; done
-	@# kli/three: plain JavaScript over kli/spline, three.js an optional peer.
-	cp crates/kli-wasm/js/three.js crates/kli-wasm/js/three.d.ts pkg/
+	@# kli/three and kli/gltf: plain JavaScript over kli/spline (resample.js shared).
+	cp crates/kli-wasm/js/*.js crates/kli-wasm/js/*.d.ts pkg/
 	cp README.md pkg/
 	node scripts/package-json.mjs
 	@for module in kli $(ENTRIES); do \
@@ -98,7 +98,7 @@ www/pkg/.built: $(WWW_SOURCES) pkg/.built
 	rm -rf www/pkg www/examples/vendor
 	@# The examples import the package and three.js by name (an import map): both served locally.
 	mkdir -p www/examples/vendor/kli www/examples/vendor/three
-	cp pkg/kli.js pkg/kli_bg.wasm pkg/spline.js pkg/spline_bg.wasm pkg/three.js www/examples/vendor/kli/
+	cp pkg/kli.js pkg/kli_bg.wasm pkg/spline.js pkg/spline_bg.wasm pkg/three.js pkg/resample.js www/examples/vendor/kli/
 	@# three.js as one minified module with its source map, as an app's bundler would serve it.
 	esbuild node_modules/three/build/three.module.js --bundle --format=esm --minify --sourcemap \
 	  --log-level=warning --outfile=www/examples/vendor/three/three.module.js

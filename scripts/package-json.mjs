@@ -79,10 +79,11 @@ const json = {
     "./spline": entry("spline"),
     // Plain JavaScript over kli/spline (the same module instance in Node and in bundlers).
     "./three": { types: "./three.d.ts", default: "./three.js" },
+    "./gltf": { types: "./gltf.d.ts", default: "./gltf.js" },
     ...Object.fromEntries(modules.map((m) => [`./${m}_bg.wasm`, { types: `./${m}_bg.wasm.d.ts`, default: `./${m}_bg.wasm` }])),
     "./package.json": "./package.json",
   },
-  files: [...modules.flatMap((m) => [`${m}.js`, `${m}.node.js`, `${m}.d.ts`, `${m}_bg.wasm`, `${m}_bg.wasm.d.ts`]), "three.js", "three.d.ts", "README.md", "LICENSE"],
+  files: [...modules.flatMap((m) => [`${m}.js`, `${m}.node.js`, `${m}.d.ts`, `${m}_bg.wasm`, `${m}_bg.wasm.d.ts`]), "three.js", "three.d.ts", "gltf.js", "gltf.d.ts", "resample.js", "README.md", "LICENSE"],
   // Only kli/three needs three.js, and it uses what every three.js since r150 has.
   peerDependencies: { three: ">=0.150.0" },
   peerDependenciesMeta: { three: { optional: true } },

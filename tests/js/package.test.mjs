@@ -27,7 +27,7 @@ before(() => {
 test("the tarball holds every file the package needs, and only those", () => {
   const installed = readdirSync(join(project, "node_modules/kli")).sort();
   const entry = (m) => [`${m}.d.ts`, `${m}.js`, `${m}.node.js`, `${m}_bg.wasm`, `${m}_bg.wasm.d.ts`];
-  assert.deepEqual(installed, ["LICENSE", "README.md", ...entry("kli"), "package.json", ...entry("spline"), ...entry("swarm"), "three.d.ts", "three.js"].sort());
+  assert.deepEqual(installed, ["LICENSE", "README.md", ...entry("kli"), "package.json", ...entry("spline"), ...entry("swarm"), "three.d.ts", "three.js", "gltf.d.ts", "gltf.js", "resample.js"].sort());
   const manifest = JSON.parse(readFileSync(join(project, "node_modules/kli/package.json"), "utf8"));
   const cargo = readFileSync(join(root, "Cargo.toml"), "utf8");
   assert.equal(manifest.version, cargo.match(/^version = "(.*)"/m)[1]);
@@ -233,6 +233,69 @@ test("kli/three: smoothTrack and smoothInterpolation put the chain through a thr
   });
   r.mixed.forEach((c, i) => assert.ok(Math.abs(c - r.expected[i]) < 1e-12, `mixer ${r.mixed} vs chain ${r.expected}`));
   assert.deepEqual(r.refused, [true, "fps", "fps must be a number from 1 to 1000 (got 0)"]);
+});
+
+test("kli/gltf: smoothRotations replaces LINEAR rotation samplers with the chain, leaves the rest, survives a .glb", () => {
+  const core = JSON.stringify(join(root, "node_modules/@gltf-transform/core/dist/index.js"));
+  writeFileSync(join(project, "gltf-smooth.mjs"), `
+    import { Document, NodeIO } from ${core};
+    import * as THREE from "three";
+    import initSpline from "kli/spline";
+    import { smoothRotations, isKliError } from "kli/gltf";
+    import { smoothTrack } from "kli/three";
+    await initSpline();
+    const q = (axis, angle) => new THREE.Quaternion().setFromAxisAngle(new THREE.Vector3(...axis).normalize(), angle).toArray();
+    const keys = [q([1, 0, 0], 0), q([1, 0, 0], 1.2), q([0, 1, 0], 2.0), q([1, 1, 0], 0.5), q([0, 0, 1], 2.5)];
+    const times = [0, 0.8, 1.5, 2.7, 3.2];
+    const document = new Document();
+    const buffer = document.createBuffer();
+    const accessor = (type, array) => document.createAccessor().setType(type).setArray(array).setBuffer(buffer);
+    const input = accessor("SCALAR", new Float32Array(times));
+    const rotations = accessor("VEC4", new Float32Array(keys.flat()));
+    const [a, b, c] = ["a", "b", "c"].map((name) => document.createNode(name));
+    document.createScene().addChild(a).addChild(b).addChild(c);
+    const sampler = (interpolation, output) => document.createAnimationSampler().setInput(input).setOutput(output).setInterpolation(interpolation);
+    const linear = sampler("LINEAR", rotations), step = sampler("STEP", rotations);
+    const moves = sampler("LINEAR", accessor("VEC3", new Float32Array(15)));
+    document.createAnimation("tumble")
+      .addSampler(linear).addSampler(step).addSampler(moves)
+      .addChannel(document.createAnimationChannel().setTargetNode(a).setTargetPath("rotation").setSampler(linear))
+      .addChannel(document.createAnimationChannel().setTargetNode(b).setTargetPath("rotation").setSampler(step))
+      .addChannel(document.createAnimationChannel().setTargetNode(c).setTargetPath("translation").setSampler(moves));
+    await document.transform(smoothRotations({ fps: 30 }));
+    const smoothTimes = Array.from(linear.getInput().getArray()), smoothValues = Array.from(linear.getOutput().getArray());
+    // The same resampling as kli/three's smoothTrack at 30 fps, bit for bit.
+    const track = smoothTrack(new THREE.QuaternionKeyframeTrack(".quaternion", times, keys.flat()), { fps: 30 });
+    const io = new NodeIO();
+    const again = await io.readBinary(await io.writeBinary(document));
+    const [reread] = again.getRoot().listAnimations()[0].listSamplers().filter((s) => s.getInterpolation() === "LINEAR" && s.getOutput().getType() === "VEC4");
+    let refused;
+    try { smoothRotations({ fps: 5000 }); } catch (e) { refused = [isKliError(e), e.argument]; }
+    console.log(JSON.stringify({
+      count: smoothTimes.length, keysKept: times.every((t) => smoothTimes.includes(Math.fround(t))),
+      sameAsThree: JSON.stringify(smoothTimes) === JSON.stringify(Array.from(track.times)) && JSON.stringify(smoothValues) === JSON.stringify(Array.from(track.values)),
+      stepKept: step.getInput() === input && step.getOutput() === rotations && step.getInterpolation() === "STEP",
+      movesKept: moves.getInput() === input && moves.getOutput().getCount() === 5,
+      interpolation: linear.getInterpolation(),
+      rereadCount: reread.getInput().getCount(),
+      rereadFirst: Array.from(reread.getOutput().getElement(0, [0, 0, 0, 0])),
+      accessors: document.getRoot().listAccessors().length,
+      refused,
+    }));
+  `);
+  const r = run("gltf-smooth.mjs");
+  // 3.2 s at 30 a second, every key on the grid: 97 samples.
+  assert.equal(r.count, 97);
+  assert.equal(r.keysKept, true);
+  assert.equal(r.sameAsThree, true);
+  assert.equal(r.stepKept, true);
+  assert.equal(r.movesKept, true);
+  assert.equal(r.interpolation, "LINEAR");
+  assert.equal(r.rereadCount, 97);
+  assert.deepEqual(r.rereadFirst, [0, 0, 0, 1]);
+  // The keys' times and values are still used (by STEP and the translation): kept; two new ones.
+  assert.equal(r.accessors, 5);
+  assert.deepEqual(r.refused, [true, "fps"]);
 });
 
 test("bundles with esbuild and runs", () => {

@@ -5,17 +5,10 @@
 // export), `smoothInterpolation` evaluates it live in the mixer. Quaternions are scalar last, as
 // three.js keeps them. Initialise kli/spline first (`await init()` from "kli/spline").
 import { Interpolant, QuaternionKeyframeTrack } from "three";
-import { isKliError, kliSpline } from "./spline.js";
+import { isKliError } from "./spline.js";
+import { chainThrough, readOptions, refuse, resample } from "./resample.js";
 
 export { isKliError };
-
-/** A kli Error (argument, kind), as the wasm entries throw them. */
-function refuse(argument, problem) {
-  const error = new Error(`${argument} ${problem}`);
-  error.argument = argument;
-  error.kind = "invalid";
-  return error;
-}
 
 /** The track's keys, checked: a QuaternionKeyframeTrack (or its shape) with 4 values a time. */
 function keysOf(track) {
@@ -28,29 +21,6 @@ function keysOf(track) {
   return { times: track.times, values: track.values };
 }
 
-/** The options, checked: `fps` (1 to 1000, default 60) and the chain's `smoothness`. */
-function optionsOf(options, fps) {
-  if (options === undefined || options === null) return { fps, smoothness: 1 };
-  if (typeof options !== "object") throw refuse("options", "must be an object like { fps: 60, smoothness: 1 }");
-  for (const key of Object.keys(options)) {
-    if (key !== "fps" && key !== "smoothness") throw refuse("options", `has an unknown key "${key}"; the keys are fps, smoothness`);
-  }
-  const chosen = { fps: options.fps ?? fps, smoothness: options.smoothness ?? 1 };
-  if (!(typeof chosen.fps === "number" && chosen.fps >= 1 && chosen.fps <= 1000)) {
-    throw refuse("fps", `must be a number from 1 to 1000 (got ${String(chosen.fps)})`);
-  }
-  return chosen;
-}
-
-/** The chain through the track's keys (scalar last), or null for fewer than 2 keys. */
-function chainOf(keys, smoothness) {
-  if (keys.times.length < 2) return null;
-  return kliSpline(keys.values, { times: keys.times, order: "xyzw", smoothness });
-}
-
-/** The most samples smoothTrack writes: 10⁷ (40 MB of values). */
-const MAX_SAMPLES = 1e7;
-
 /**
  * A new QuaternionKeyframeTrack of the same name through the same keys, resampled from the chain
  * at `fps` samples a second (the keys' own times kept, so every key is hit), interpolated
@@ -58,36 +28,9 @@ const MAX_SAMPLES = 1e7;
  */
 export function smoothTrack(track, options) {
   const keys = keysOf(track);
-  const { fps, smoothness } = optionsOf(options, 60);
-  const chain = chainOf(keys, smoothness);
-  if (!chain) return track.clone();
-  try {
-    const first = keys.times[0], last = keys.times[keys.times.length - 1];
-    if ((last - first) * fps > MAX_SAMPLES) {
-      throw refuse("fps", `gives more than ${MAX_SAMPLES} samples over the track's ${last - first} s: lower it`);
-    }
-    // The keys' times and a grid of 1/fps between them, merged in order; a grid time within a
-    // quarter frame of a key, or not after the previous time in single precision (three.js keeps
-    // times as Float32Array), is left out.
-    const times = [];
-    const push = (t) => {
-      if (times.length === 0 || Math.fround(t) > times[times.length - 1]) times.push(Math.fround(t));
-    };
-    let k = 0;
-    for (let i = 0; i < keys.times.length; i++) {
-      const key = keys.times[i];
-      for (; first + k / fps < key - 0.25 / fps; k++) push(first + k / fps);
-      while (first + k / fps <= key + 0.25 / fps) k++;
-      if (times.length > 0 && times[times.length - 1] >= key) times.pop();
-      push(key);
-    }
-    const values = new Float32Array(4 * times.length);
-    const q = new Float64Array(4);
-    for (let i = 0; i < times.length; i++) values.set(chain.at(times[i], q), 4 * i);
-    return new QuaternionKeyframeTrack(track.name, times, values);
-  } finally {
-    chain.free();
-  }
+  const { fps, smoothness } = readOptions(options, 60);
+  const sampled = resample(keys.times, keys.values, fps, smoothness);
+  return sampled ? new QuaternionKeyframeTrack(track.name, sampled.times, sampled.values) : track.clone();
 }
 
 /** three.js's interpolant contract, evaluated by the chain: the mixer calls interpolate_ between
@@ -119,9 +62,9 @@ const chains = new FinalizationRegistry((chain) => chain.free());
  */
 export function smoothInterpolation(track, options) {
   const keys = keysOf(track);
-  const { smoothness } = optionsOf(options, 60);
+  const { smoothness } = readOptions(options, 60);
   const smooth = track.clone();
-  const chain = chainOf(keys, smoothness);
+  const chain = chainThrough(keys.times, keys.values, smoothness);
   if (!chain) return smooth;
   smooth.createInterpolant = function (result) {
     return new ChainInterpolant(this.times, this.values, this.getValueSize(), result, chain);
