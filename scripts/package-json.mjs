@@ -24,7 +24,20 @@ for (const m of modules) {
   // The classes declare [Symbol.dispose] (for `using`): the reference lets `lib: es2022` projects
   // compile the declarations without adding esnext.disposable themselves.
   const types = manifest(`pkg/${m}.d.ts`);
-  if (!types.startsWith("/// <reference lib")) writeFileSync(at(`pkg/${m}.d.ts`), `/// <reference lib="esnext.disposable" />\n${types}`);
+  // `dom` too: init's parameter types (RequestInfo, Response, BufferSource, WebAssembly) are the
+  // DOM's, so a project with `lib: ["es2022"]` alone compiles them.
+  if (!types.startsWith("/// <reference lib")) writeFileSync(at(`pkg/${m}.d.ts`), `/// <reference lib="esnext.disposable" />\n/// <reference lib="dom" />\n${types}`);
+  // What a bundler's file loader gives for \`import wasm from "kli/kli_bg.wasm"\` (esbuild's
+  // --loader:.wasm=file, the README's line): the file's URL, for init({ module_or_path }).
+  const raw = manifest(`pkg/${m}_bg.wasm.d.ts`);
+  if (!raw.includes("export default")) {
+    writeFileSync(at(`pkg/${m}_bg.wasm.d.ts`), `${raw}
+/** With a bundler's file loader (esbuild's \`--loader:.wasm=file\`): the file's URL, for
+ *  \`init({ module_or_path: url })\`. The named exports above are the module's raw exports. */
+declare const url: string;
+export default url;
+`);
+  }
   // isKliError, a type guard for `catch (e)`, in every entry: plain JavaScript, so it costs the
   // .wasm nothing.
   const glue = manifest(`pkg/${m}.js`);
@@ -72,7 +85,9 @@ const json = {
   main: "kli.js",
   module: "kli.js",
   types: "kli.d.ts",
-  engines: { node: ">=18" },
+  // Where both `import` and `require` work: require() of an ES module is unflagged from Node
+  // 20.19 and 22.12 (tests/js/package.test.mjs requires every entry).
+  engines: { node: ">=20.19.0 <21 || >=22.12.0" },
   exports: {
     ".": entry("kli"),
     "./swarm": entry("swarm"),

@@ -36,7 +36,7 @@ test("the tarball holds every file the package needs, and only those", () => {
   assert.equal(manifest.sideEffects, false);
   assert.equal(manifest.license, "MIT");
   assert.match(readFileSync(join(project, "node_modules/kli/LICENSE"), "utf8"), /^MIT License/);
-  assert.equal(manifest.engines.node, ">=18");
+  assert.equal(manifest.engines.node, ">=20.19.0 <21 || >=22.12.0");
   // The repository, when Cargo.toml names one (and only then: never an invented address).
   const repository = cargo.split("[workspace.package]")[1].match(/^repository\s*=\s*"([^"]*)"/m)?.[1];
   assert.deepEqual(manifest.repository, repository && { type: "git", url: `git+${repository.replace(/\.git$/, "")}.git` });
@@ -54,6 +54,23 @@ test("imports by name in Node with initSync and gives T = 11.66", () => {
   assert.ok(Math.abs(T - 11.66) < 1e-9, `T = ${T}`);
   assert.equal(steps, 1166);
   assert.ok(Math.abs(star - 11.6568) < 5e-5, `T* = ${star}`);
+});
+
+test("require() works for every entry in Node, as engines promises", () => {
+  writeFileSync(join(project, "require.cjs"), `
+    const { readFileSync } = require("node:fs");
+    const out = {};
+    for (const [entry, call] of [["kli", (m) => m.kli([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]).finalTime],
+      ["kli/swarm", (m) => new m.LoheSwarm({ count: 3 }).count], ["kli/spline", (m) => m.kliSpline([[1, 0, 0, 0], [0, 1, 0, 0]]).endTime]]) {
+      const m = require(entry);
+      const wasm = { kli: "kli/kli_bg.wasm", "kli/swarm": "kli/swarm_bg.wasm", "kli/spline": "kli/spline_bg.wasm" }[entry];
+      m.initSync({ module: readFileSync(require.resolve(wasm)) });
+      out[entry] = call(m);
+    }
+    console.log(JSON.stringify(out));
+  `);
+  const out = JSON.parse(execFileSync("node", ["require.cjs"], { cwd: project, encoding: "utf8" }));
+  assert.deepEqual(out, { kli: 11.66, "kli/swarm": 3, "kli/spline": 1 });
 });
 
 test("await init() works in Node for every entry, with no argument (the node export condition)", () => {
@@ -319,6 +336,11 @@ test("the TypeScript types are precise: right use compiles, wrong use does not",
     import type { memory } from "kli/kli_bg.wasm";
     const raw: typeof memory | undefined = undefined;
     void raw;
+    // The README's esbuild line: the .wasm's URL from a file loader, given to init.
+    import init from "kli";
+    import wasm from "kli/kli_bg.wasm";
+    const url: string = wasm;
+    void init({ module_or_path: url });
     const options: KliOptions = { tolerance: 1e-5, step: 0.01, maxTime: 100, integrator: "geodesic", shortestPath: true };
     const path: KliPath = kli([0, 0, 0, 1], new Float64Array([0.5, 0.5, 0.5, 0.5]), options);
     const T: number = path.finalTime;
@@ -388,7 +410,7 @@ test("the TypeScript types are precise: right use compiles, wrong use does not",
   }));
   // With the newest library, and with es2022 (whose lib has no Symbol.dispose: the declarations
   // reference esnext.disposable themselves).
-  for (const lib of [["esnext", "dom"], ["es2022", "dom"]]) {
+  for (const lib of [["esnext", "dom"], ["es2022", "dom"], ["es2022"]]) {
     writeFileSync(join(project, "tsconfig.json"), JSON.stringify({
       compilerOptions: { strict: true, noEmit: true, module: "nodenext", moduleResolution: "nodenext", target: "es2022", lib, skipLibCheck: false },
       files: ["use.ts"],
