@@ -185,6 +185,7 @@ export class KliFigure extends HTMLElement {
     this.pending -= steps;
     if (this.pending > 0) {
       this.message.textContent = `Running the swarm to t = ${this.t}: ${Math.floor(100 * (1 - this.pending * SWARM_DT / this.t))}%`;
+      this.figures?.render(this.demo.time); // where it has got to
       setTimeout(() => this.catchUp(build));
       return;
     }
