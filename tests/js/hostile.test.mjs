@@ -15,6 +15,8 @@ const load = async (name) => {
   const exports = module.initSync({ module: readFileSync(new URL(`${name}_bg.wasm`, pkg)) });
   return { module, table: () => exports.__wbindgen_externrefs.length };
 };
+// KLI_FUZZ_SCALE=50 runs 50 times as many calls (about 5×10⁵; not part of make test).
+const SCALE = Number(process.env.KLI_FUZZ_SCALE ?? 1);
 const kli = await load("kli");
 const spline = await load("spline");
 const swarm = await load("swarm");
@@ -114,7 +116,7 @@ test("kli/spline: 4,000 seeded hostile calls, no trap, no leak, every object sti
   const objects = makers.map((make) => make(KEYS, { times: [0, 1, 2, 4] }));
   const before = spline.table(), caught = thrown;
   let errors = 0;
-  for (let i = 0; i < 4000; i++) {
+  for (let i = 0; i < 4000 * SCALE; i++) {
     const s = objects[i % 3];
     const value = hostile(next, () => { s.at(0.5); s.free?.call({ __wbg_ptr: 0, __destroy_into_raw: () => 0 }); });
     const other = hostile(next);
@@ -132,7 +134,7 @@ test("kli/spline: 4,000 seeded hostile calls, no trap, no leak, every object sti
     });
     if (kind !== "ok") errors++;
   }
-  assert.ok(errors > 2000, `only ${errors} refusals: the fuzz is not hostile enough`);
+  assert.ok(errors > 2000 * SCALE, `only ${errors} refusals: the fuzz is not hostile enough`);
   assertNoLeak(spline.table(), before, thrown - caught);
   // Each object still gives the keys at the key times (the first key exactly).
   for (const s of objects) {
@@ -149,7 +151,7 @@ test("kli/swarm: 3,000 seeded hostile calls, no trap, no leak, every swarm still
   const swarms = [new LoheSwarm({ count: 20, seed: 3 }), new LoheSwarm({ count: 8, graph: "ring", order: "xyzw" })];
   const before = swarm.table(), caught = thrown;
   let errors = 0;
-  for (let i = 0; i < 3000; i++) {
+  for (let i = 0; i < 3000 * SCALE; i++) {
     const s = swarms[i % 2];
     const value = hostile(next, () => s.step(0.01));
     const other = hostile(next, () => s.free());
@@ -168,7 +170,7 @@ test("kli/swarm: 3,000 seeded hostile calls, no trap, no leak, every swarm still
     });
     if (kind !== "ok") errors++;
   }
-  assert.ok(errors > 1500, `only ${errors} refusals`);
+  assert.ok(errors > 1500 * SCALE, `only ${errors} refusals`);
   assertNoLeak(swarm.table(), before, thrown - caught);
   for (const s of swarms) {
     s.step(0.05, 10);
@@ -183,7 +185,7 @@ test("kli: 3,000 seeded hostile calls into the main entry, no trap, no leak", ()
   const p = [0, 0, 0, 1], r = [0.5, 0.5, 0.5, 0.5];
   const path = m.kli(p, r);
   const before = kli.table(), caught = thrown;
-  for (let i = 0; i < 3000; i++) {
+  for (let i = 0; i < 3000 * SCALE; i++) {
     const value = hostile(next), other = hostile(next);
     const calls = [
       () => m.kliExact(p, r, value), () => m.kliExact(value, r, 1, other), () => m.slerp(p, r, value, other),
