@@ -1,12 +1,10 @@
 // Seeded hostile URLs on every page (issue 17): random keys of each page's schema given hostile
 // values. Each load must show no error outside the refused fields' messages, no NaN or Infinity
 // in what the page computed (its readouts, tables and status), run no injected script, and add
-// no long task: none over 200 ms, or over the page's own plain load (+50 ms) where that is longer.
-// (The KLI page's cold load has one task of 110-240 ms on the 2-core machine: the browser's
-// parsing, style and layout of the page, "(program)" in a CPU profile, not its script.)
+// no long task beyond the page's own (browser.mjs, longTaskBudget).
 import { test } from "node:test";
 import assert from "node:assert/strict";
-import { setup, open } from "./browser.mjs";
+import { setup, open, longTaskBudget, watchLongTasks as watch } from "./browser.mjs";
 import { STATES } from "../../www/states.js";
 
 setup();
@@ -24,21 +22,12 @@ function random(seed) {
   };
 }
 
-const watch = () => {
-  window.__longTasks = [];
-  new PerformanceObserver((list) => {
-    for (const entry of list.getEntries()) window.__longTasks.push(Math.round(entry.duration));
-  }).observe({ type: "longtask", buffered: true });
-};
 
 for (const [name, html] of Object.entries(PAGES)) {
   test(`${html}: 10 seeded hostile URLs, each shown or refused by name, nothing else`, async () => {
     const next = random(name.length * 7919);
     const keys = STATES[name].schema.map((entry) => entry.url);
-    const plain = await open(html, { init: watch, reducedMotion: "reduce" });
-    await plain.page.waitForTimeout(300);
-    const budget = Math.max(200, 50 + Math.max(0, ...(await plain.page.evaluate(() => window.__longTasks))));
-    await plain.context.close();
+    const budget = await longTaskBudget(html);
     for (let k = 0; k < 10; k++) {
       const params = new URLSearchParams();
       const count = 1 + Math.floor(next() * 3);
