@@ -540,3 +540,25 @@ test("memory, wasm memory and the DOM stay flat over rebuilds and playing", asyn
   assert.deepEqual(problems, []);
   await context.close();
 });
+
+test("a first look for students: what they see and what to try comes before the formulas; the paper's figures say they are the paper's", async () => {
+  const { page, context, problems } = await open("", { reducedMotion: "reduce" });
+  try {
+    const header = await page.locator("header").innerText();
+    const look = header.indexOf("An aircraft turns"), formula = header.indexOf("q′ = r − (q·r) q");
+    assert.ok(look >= 0 && formula > look, "the first look comes before the formula");
+    assert.match(header, /Press Play/);
+    // "Fig. 1", "eq. 5" and "Table 1" say whose they are, wherever they are named.
+    const text = await page.locator("main").innerText();
+    for (const name of ["Fig. 1", "Fig. 2", "eq. 5", "Table 1"]) {
+      const bare = [...text.matchAll(new RegExp(`(.{0,12})${name.replace(".", "\\.")}`, "g"))].filter((m) => !/paper's (\w+ )?$/.test(m[1]));
+      assert.deepEqual(bare.map((m) => m[0]), [], `${name} named without "the paper's"`);
+    }
+    // The link to try another end goes to the End r fields.
+    await page.locator("#first-look a[href='#end-r']").click();
+    assert.equal(await page.evaluate(() => location.hash), "#end-r");
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});

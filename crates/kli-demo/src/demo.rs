@@ -146,7 +146,7 @@ impl Figure for Demo {
     const TITLES: &'static [&'static str] = &[
         "The object under KLI and under SLERP",
         "The Hopf curves of KLI and SLERP on S²",
-        "The object at the moments of Table 1",
+        "The object at the moments of the paper's Table 1",
         "Distance to the target, KLI's SLERP parameter s(t) beside SLERP's u = t/T, the drift of |q|",
     ];
     const EXPORT: &'static str = "path";
