@@ -4,6 +4,7 @@
 import * as THREE from "three";
 import initSpline from "kli/spline";
 import { smoothInterpolation } from "kli/three";
+import { twoAircraft } from "./scene.js";
 
 const status = document.querySelector("#load-status");
 const canvas = document.querySelector("#scene");
@@ -22,36 +23,7 @@ const smooth = smoothInterpolation(linear);
 const end = times[times.length - 1];
 time.max = String(end);
 
-/** An aircraft of boxes: nose along x, red port wing along y, fin along z (as on three.html). */
-function aircraft(colour) {
-  const group = new THREE.Group();
-  const part = (size, position, color) => {
-    const mesh = new THREE.Mesh(new THREE.BoxGeometry(...size), new THREE.MeshLambertMaterial({ color }));
-    mesh.position.set(...position);
-    group.add(mesh);
-  };
-  part([2.4, 0.36, 0.36], [0, 0, 0], colour);
-  part([0.5, 1.2, 0.08], [0.1, 0.75, 0], 0xc92a2a);
-  part([0.5, 1.2, 0.08], [0.1, -0.75, 0], colour);
-  part([0.35, 0.08, 0.6], [-1.0, 0, 0.4], 0x1971c2);
-  part([0.3, 0.3, 0.3], [1.35, 0, 0], 0x343a40);
-  return group;
-}
-
-const scene = new THREE.Scene();
-scene.background = new THREE.Color(0xffffff);
-scene.add(new THREE.AmbientLight(0xffffff, 1.6));
-const sun = new THREE.DirectionalLight(0xffffff, 2.2);
-sun.position.set(3, -4, 6);
-scene.add(sun);
-const left = aircraft(0x7048e8), right = aircraft(0xc2410c);
-left.position.x = -1.9;
-right.position.x = 1.9;
-scene.add(left, right);
-const camera = new THREE.PerspectiveCamera(35, 2, 0.1, 100);
-camera.up.set(0, 0, 1);
-camera.position.set(3, -9, 4);
-camera.lookAt(0, 0, 0);
+const { left, right, renderer, render } = twoAircraft(canvas, status, 0x7048e8, 0xc2410c);
 
 // One mixer an object, each playing its track; the page sets their time.
 const mixers = [[left, linear], [right, smooth]].map(([object, track]) => {
@@ -123,14 +95,6 @@ function plot(id, values, colour, t) {
   ctx.fill();
 }
 
-let renderer;
-try {
-  renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
-} catch (error) {
-  status.textContent = `This browser cannot draw WebGL: ${error.message}`;
-  throw error;
-}
-
 let t = 0;
 let playing = !matchMedia("(prefers-reduced-motion: reduce)").matches;
 let last = performance.now();
@@ -142,14 +106,7 @@ function frame(now) {
   }
   last = now;
   for (const mixer of mixers) mixer.setTime(t);
-  const { clientWidth: width, clientHeight: height } = canvas;
-  if (canvas.width !== Math.round(width * devicePixelRatio) || canvas.height !== Math.round(height * devicePixelRatio)) {
-    renderer.setPixelRatio(devicePixelRatio);
-    renderer.setSize(width, height, false);
-    camera.aspect = width / height;
-    camera.updateProjectionMatrix();
-  }
-  renderer.render(scene, camera);
+  render();
   plot("linear-speed", curves.linear, "#7048e8", t);
   plot("smooth-speed", curves.smooth, "#c2410c", t);
   readout.textContent = `t = ${t.toFixed(2)} s of ${end.toFixed(2)}`;

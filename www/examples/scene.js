@@ -1,0 +1,61 @@
+// @ts-nocheck: three.js comes through the import map of the page that imports this.
+// The scene both three.js examples draw: two aircraft side by side, lit, seen from the front
+// right with z up (as the demo page's object view), on a renderer sized to its canvas.
+import * as THREE from "three";
+
+/** An aircraft of boxes: nose along x, red port wing along y, fin along z (as on the demo page). */
+function aircraft(colour) {
+  const group = new THREE.Group();
+  const part = (size, position, color) => {
+    const mesh = new THREE.Mesh(new THREE.BoxGeometry(...size), new THREE.MeshLambertMaterial({ color }));
+    mesh.position.set(...position);
+    group.add(mesh);
+  };
+  part([2.4, 0.36, 0.36], [0, 0, 0], colour);
+  part([0.5, 1.2, 0.08], [0.1, 0.75, 0], 0xc92a2a);
+  part([0.5, 1.2, 0.08], [0.1, -0.75, 0], colour);
+  part([0.35, 0.08, 0.6], [-1.0, 0, 0.4], 0x1971c2);
+  part([0.3, 0.3, 0.3], [1.35, 0, 0], 0x343a40);
+  return group;
+}
+
+/**
+ * Two aircraft of the given colours on `canvas`: `{ left, right, render }`, where `render()` fits
+ * the renderer to the canvas's size and draws. If the browser cannot draw WebGL, `status` says so
+ * and this throws.
+ */
+export function twoAircraft(canvas, status, leftColour, rightColour) {
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color(0xffffff);
+  scene.add(new THREE.AmbientLight(0xffffff, 1.6));
+  const sun = new THREE.DirectionalLight(0xffffff, 2.2);
+  sun.position.set(3, -4, 6);
+  scene.add(sun);
+  const left = aircraft(leftColour), right = aircraft(rightColour);
+  left.position.x = -1.9;
+  right.position.x = 1.9;
+  scene.add(left, right);
+  const camera = new THREE.PerspectiveCamera(35, 2, 0.1, 100);
+  camera.up.set(0, 0, 1);
+  camera.position.set(3, -9, 4);
+  camera.lookAt(0, 0, 0);
+  let renderer;
+  try {
+    // preserveDrawingBuffer: the picture stays readable between frames (right-click save, tests).
+    renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+  } catch (error) {
+    status.textContent = `This browser cannot draw WebGL: ${error.message}`;
+    throw error;
+  }
+  const render = () => {
+    const { clientWidth: width, clientHeight: height } = canvas;
+    if (canvas.width !== Math.round(width * devicePixelRatio) || canvas.height !== Math.round(height * devicePixelRatio)) {
+      renderer.setPixelRatio(devicePixelRatio);
+      renderer.setSize(width, height, false);
+      camera.aspect = width / height;
+      camera.updateProjectionMatrix();
+    }
+    renderer.render(scene, camera);
+  };
+  return { left, right, renderer, render };
+}
