@@ -3,17 +3,10 @@
 // A page's own plain load is the floor (browser.mjs, longTaskBudget).
 import { test } from "node:test";
 import assert from "node:assert/strict";
-import { setup, open, longTaskBudget } from "./browser.mjs";
+import { setup, open, longTaskBudget, watchLongTasks as longTasks } from "./browser.mjs";
 
 setup();
 
-/** Records every long task (> 50 ms) from the first script on. */
-const longTasks = () => {
-  window.__longTasks = [];
-  new PerformanceObserver((list) => {
-    for (const entry of list.getEntries()) window.__longTasks.push(Math.round(entry.duration));
-  }).observe({ type: "longtask", buffered: true });
-};
 
 /** The longest task seen, after `ms` more of running. */
 async function longest(page, ms) {

@@ -4,7 +4,7 @@
 import * as THREE from "three";
 import initSpline from "kli/spline";
 import { smoothInterpolation } from "kli/three";
-import { twoAircraft } from "./scene.js";
+import { transport, twoAircraft } from "./scene.js";
 
 const status = document.querySelector("#load-status");
 const canvas = document.querySelector("#scene");
@@ -95,16 +95,10 @@ function plot(id, values, colour, t) {
   ctx.fill();
 }
 
-let t = 0;
-let playing = !matchMedia("(prefers-reduced-motion: reduce)").matches;
-let last = performance.now();
+const clock = transport(play, time);
 
 function frame(now) {
-  if (playing) {
-    t = (t + Math.min(Math.max(now - last, 0), 100) / 1000) % end;
-    time.value = String(t);
-  }
-  last = now;
+  const t = clock.advance(now, end);
   for (const mixer of mixers) mixer.setTime(t);
   render();
   plot("linear-speed", curves.linear, "#7048e8", t);
@@ -112,15 +106,5 @@ function frame(now) {
   readout.textContent = `t = ${t.toFixed(2)} s of ${end.toFixed(2)}`;
 }
 
-play.addEventListener("click", () => {
-  playing = !playing;
-  play.textContent = playing ? "Pause" : "Play";
-});
-time.addEventListener("input", () => {
-  playing = false;
-  play.textContent = "Play";
-  t = Number(time.value);
-});
-play.textContent = playing ? "Pause" : "Play";
 renderer.setAnimationLoop(frame);
 status.hidden = true;

@@ -59,3 +59,37 @@ export function twoAircraft(canvas, status, leftColour, rightColour) {
   };
   return { left, right, renderer, render };
 }
+
+/**
+ * The Play/Pause button and the time slider of both examples: `clock.t` is the time shown,
+ * `clock.playing` whether it runs, `clock.advance(now, end)` moves it to a frame's timestamp
+ * (looping over [0, end)); dragging the slider pauses at its value.
+ */
+export function transport(play, time) {
+  let last = performance.now();
+  const clock = {
+    t: 0,
+    playing: !matchMedia("(prefers-reduced-motion: reduce)").matches,
+    advance(now, end) {
+      if (clock.playing) {
+        // A frame may be stamped before the first `last`: never step back.
+        clock.t = (clock.t + Math.min(Math.max(now - last, 0), 100) / 1000) % end;
+        time.value = String(clock.t);
+      }
+      last = now;
+      return clock.t;
+    },
+  };
+  const label = () => (play.textContent = clock.playing ? "Pause" : "Play");
+  play.addEventListener("click", () => {
+    clock.playing = !clock.playing;
+    label();
+  });
+  time.addEventListener("input", () => {
+    clock.playing = false;
+    label();
+    clock.t = Number(time.value);
+  });
+  label();
+  return clock;
+}

@@ -2,7 +2,7 @@
 // The README's three.js example, running: kli turns two objects of a three.js scene.
 import * as THREE from "three";
 import init, { kli, kliExact, slerp } from "kli";
-import { twoAircraft } from "./scene.js";
+import { transport, twoAircraft } from "./scene.js";
 
 const status = document.querySelector("#load-status");
 const canvas = document.querySelector("#scene");
@@ -20,36 +20,19 @@ time.max = String(T);
 
 const { left: kliMesh, right: slerpMesh, renderer, render } = twoAircraft(canvas, status, 0xc2410c, 0x7048e8);
 
-let t = 0;
-let playing = !matchMedia("(prefers-reduced-motion: reduce)").matches;
-let last = performance.now();
+const clock = transport(play, time);
 const fmt = (q) => `(${q.toArray().map((c) => c.toFixed(4)).join(", ")})`;
 
 function frame(now) {
-  if (playing) {
-    // A frame may be stamped before the first `last`: never step back.
-    t = (t + Math.min(Math.max(now - last, 0), 100) / 1000) % T;
-    time.value = String(t);
-  }
-  last = now;
+  const t = clock.advance(now, T);
   kliMesh.quaternion.fromArray(kliExact(p, r, t, { order }));
   slerpMesh.quaternion.fromArray(slerp(p, r, t / T, { order }));
   render();
   readout.textContent = `t = ${t.toFixed(2)} / T = ${T.toFixed(2)}`;
-  if (!playing) {
+  if (!clock.playing) {
     rotation.textContent = `At t = ${t.toFixed(2)}: KLI [x, y, z, w] = ${fmt(kliMesh.quaternion)}; SLERP ${fmt(slerpMesh.quaternion)}.`;
   }
 }
 
-play.addEventListener("click", () => {
-  playing = !playing;
-  play.textContent = playing ? "Pause" : "Play";
-});
-time.addEventListener("input", () => {
-  playing = false;
-  play.textContent = "Play";
-  t = Number(time.value);
-});
-play.textContent = playing ? "Pause" : "Play";
 renderer.setAnimationLoop(frame);
 status.hidden = true;

@@ -212,26 +212,20 @@ impl RotationSpline {
     }
 }
 
-/// The keys (a typed array of 4m numbers, or an array of m quaternions) in `order`, and the
-/// options' `times`.
+/// The keys (4m numbers: a typed array or a flat array; or an array of m quaternions) in
+/// `order`, and the options' `times`.
 fn read_keys(value: &JsValue, times: Option<Vec<f64>>, order: Order) -> Result<Keys, KliError> {
-    let quaternions: Vec<DQuat> = if is_view(value) {
+    let array = is_array(value).unwrap_or(false);
+    // A flat array of numbers is a three.js track's `values` as an Array.
+    let flat = is_view(value) || (array && get("keys", value, &0.into())?.as_f64().is_some());
+    let quaternions: Vec<DQuat> = if flat {
         let flat = numbers("keys", value, MAX_LENGTH)?;
         if flat.len() % 4 != 0 {
             let problem = format!("must hold 4 numbers per key (got {})", flat.len());
             return Err(KliError::invalid("keys", problem));
         }
         flat.chunks_exact(4).map(|q| order.read([q[0], q[1], q[2], q[3]])).collect()
-    } else if is_array(value).unwrap_or(false) && get("keys", value, &0.into())?.as_f64().is_some()
-    {
-        // A flat array of numbers, 4 a key (a three.js track's `values` as an Array).
-        let flat = numbers("keys", value, MAX_LENGTH)?;
-        if flat.len() % 4 != 0 {
-            let problem = format!("must hold 4 numbers per key (got {})", flat.len());
-            return Err(KliError::invalid("keys", problem));
-        }
-        flat.chunks_exact(4).map(|q| order.read([q[0], q[1], q[2], q[3]])).collect()
-    } else if is_array(value).unwrap_or(false) {
+    } else if array {
         let length = get("keys", value, &"length".into())?.as_f64().unwrap_or(0.0) as usize;
         if length > MAX_LENGTH / 4 {
             let problem = format!("may hold at most {} keys (got {length})", MAX_LENGTH / 4);
