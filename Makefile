@@ -162,6 +162,7 @@ bench: pkg www setup-browser
 	node bench/batch.mjs
 	node bench/swarm.mjs
 	node bench/spline.mjs
+	node bench/smoothness.mjs
 	node bench/page.mjs
 	node bench/lighthouse.mjs
 

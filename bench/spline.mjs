@@ -8,57 +8,22 @@ import { performance } from "node:perf_hooks";
 import { QuaternionKeyframeTrack } from "three";
 import { quat } from "gl-matrix";
 import { initSync, kliSpline, slerpSpline, squadSpline } from "../pkg/spline.js";
+import { bending, grid, randomKeys, uniform } from "./measures.mjs";
+import { previous } from "./previous.mjs";
+
+const release = previous()[0];
+const old = await import(`${release.dir}/spline.js`);
+old.initSync({ module: readFileSync(`${release.dir}/spline_bg.wasm`) });
 
 initSync({ module: readFileSync(new URL("../pkg/spline_bg.wasm", import.meta.url)) });
 const rounds = Number(process.argv[2] ?? 9);
 const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 
-// xorshift128+ and Gaussians: the same keys on every run.
-let s0 = 0x9e3779b9, s1 = 0x243f6a88;
-const uniform = () => {
-  let x = s0; const y = s1;
-  s0 = y; x ^= x << 23; x ^= x >>> 17; x ^= y ^ (y >>> 26); s1 = x;
-  return ((s0 + s1) >>> 0) / 4294967296;
-};
-const gaussian = () => Math.sqrt(-2 * Math.log(1 - uniform())) * Math.cos(2 * Math.PI * uniform());
-const multiply = ([aw, ax, ay, az], [bw, bx, by, bz]) => [
-  aw * bw - ax * bx - ay * by - az * bz, aw * bx + ax * bw + ay * bz - az * by,
-  aw * by - ax * bz + ay * bw + az * bx, aw * bz + ax * by - ay * bx + az * bw,
-];
-/** m keys, [w, x, y, z], consecutive ones up to `maxDegrees` of rotation apart. */
-function randomKeys(m, maxDegrees) {
-  const g = [gaussian(), gaussian(), gaussian(), gaussian()];
-  const keys = [g.map((c) => c / Math.hypot(...g))];
-  while (keys.length < m) {
-    const axis = [gaussian(), gaussian(), gaussian()];
-    const n = Math.hypot(...axis);
-    const half = ((maxDegrees * Math.PI) / 180) * uniform() / 2;
-    const step = [Math.cos(half), ...axis.map((c) => (Math.sin(half) * c) / n)];
-    keys.push(multiply(keys[keys.length - 1], step));
-  }
-  return keys;
-}
-
-/** ∫|ω̇|² from 256 samples a unit of time: ω = 2 q' q̄ by central differences, then ω̇. */
-function bending(curve) {
+/** ∫|ω̇|² of a curve from 256 samples a unit of time (bench/measures.mjs). */
+function bendingOf(curve) {
   const [start, end] = [curve.startTime, curve.endTime];
-  const n = Math.round((end - start) * 256), dt = (end - start) / n;
-  const times = Float64Array.from({ length: n + 1 }, (_, k) => start + k * dt);
-  const q = curve.sample(times);
-  for (let k = 1; k <= n; k++) {
-    let dot = 0;
-    for (let c = 0; c < 4; c++) dot += q[4 * k + c] * q[4 * k - 4 + c];
-    if (dot < 0) for (let c = 0; c < 4; c++) q[4 * k + c] = -q[4 * k + c];
-  }
-  const omega = [];
-  for (let k = 1; k < n; k++) {
-    const d = [0, 1, 2, 3].map((c) => (q[4 * k + 4 + c] - q[4 * k - 4 + c]) / dt);
-    const conj = [q[4 * k], -q[4 * k + 1], -q[4 * k + 2], -q[4 * k + 3]];
-    omega.push(multiply(d, conj).slice(1));
-  }
-  let sum = 0;
-  for (let k = 1; k < omega.length; k++) sum += [0, 1, 2].reduce((s, c) => s + ((omega[k][c] - omega[k - 1][c]) / dt) ** 2, 0) * dt;
-  return sum;
+  const times = grid(start, end, Math.round((end - start) * 256));
+  return bending(curve.sample(times), times[1] - times[0]);
 }
 
 // 1. The smooth end against Squad: 20 random sets of 6 keys, up to 120° apart, even times.
@@ -67,7 +32,7 @@ let worstKey = 0;
 for (let set = 0; set < 20; set++) {
   const keys = randomKeys(6, 120);
   const [chain, squad] = [kliSpline(keys), squadSpline(keys)];
-  ratios.push(bending(chain) / bending(squad));
+  ratios.push(bendingOf(chain) / bendingOf(squad));
   const used = chain.keys;
   for (let i = 0; i < 6; i++) {
     const q = chain.at(i);
@@ -79,20 +44,25 @@ const mean = ratios.reduce((a, b) => a + b, 0) / ratios.length;
 console.log(`∫|ω̇|² of kliSpline (smoothness 1) / Squad's, 20 sets of 6 keys: mean ${mean.toFixed(3)} ` +
   `(${Math.min(...ratios).toFixed(3)}–${Math.max(...ratios).toFixed(3)}; target ≤ 0.85); keys hit to ${worstKey.toExponential(1)}`);
 
-// 2. The solve: 10 keys at the default density (32 samples a segment).
+// 2. The solve: 10 keys at the default density (32 samples a segment), alternating with the
+// previous release's (its C¹ evaluation needed no solve of its own).
 const ten = randomKeys(10, 120);
-const solves = [], iterations = [];
+const solves = { current: [], old: [] }, iterations = [];
 let residual = 0;
 for (let k = 0; k < 50; k++) {
-  const start = performance.now();
-  const spline = kliSpline(ten);
-  solves.push(performance.now() - start);
-  residual = Math.max(residual, spline.residual);
-  iterations.push(spline.iterations);
-  spline.free();
+  for (const [who, module] of [["current", { kliSpline }], ["old", old]]) {
+    const start = performance.now();
+    const spline = module.kliSpline(ten);
+    solves[who].push(performance.now() - start);
+    if (who === "current") {
+      residual = Math.max(residual, spline.residual);
+      iterations.push(spline.iterations);
+    }
+    spline.free();
+  }
 }
-console.log(`kliSpline of 10 keys: median ${median(solves).toFixed(2)} ms per solve (${iterations[0]} Newton steps, ` +
-  `residual ≤ ${residual.toExponential(1)}; target ≤ 2 ms, ≤ 1e-10)`);
+console.log(`kliSpline of 10 keys: median ${median(solves.current).toFixed(2)} ms per solve (${iterations[0]} Newton steps, ` +
+  `residual ≤ ${residual.toExponential(1)}; target ≤ 2 ms, ≤ 1e-10); ${release.name} ${release.commit}: ${median(solves.old).toFixed(2)} ms`);
 
 // 3. .sample of 10⁶ times on the same 10 keys, against gl-matrix's sqlerp and three.js.
 const n = 1e6;
@@ -111,9 +81,10 @@ const helpers = xyzw.map((q, i) => {
 const glOut = quat.create();
 const track = new QuaternionKeyframeTrack(".quaternion", [0, 1, 2, 3, 4, 5, 6, 7, 8, 9], xyzw.flat());
 const interpolant = track.createInterpolant();
-const curves = { kli: kliSpline(ten), squad: squadSpline(ten), slerp: slerpSpline(ten) };
+const curves = { kli: kliSpline(ten), old: old.kliSpline(ten), squad: squadSpline(ten), slerp: slerpSpline(ten) };
 const methods = {
   "kliSpline .sample (wasm)": () => curves.kli.sample(times, out),
+  [`kliSpline .sample, ${release.name} ${release.commit}`]: () => curves.old.sample(times, out),
   "squadSpline .sample (wasm)": () => curves.squad.sample(times, out),
   "slerpSpline .sample (wasm)": () => curves.slerp.sample(times, out),
   "gl-matrix quat.sqlerp (helpers once)": () => {

@@ -48,6 +48,14 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
 /// `x¹⁷` and `x¹⁶`: remainders below 1e-17), by Estrin's scheme.
 #[inline(always)]
 pub(crate) fn sin_cos_small(x: Lanes) -> (Lanes, Lanes) {
+    let (sinc, cos) = sinc_cos_small_squared(x * x);
+    (x * sinc, cos)
+}
+
+/// `(sin x / x, cos x)` lane-wise from `y = x²` for `|x| ≤ π/4`: the polynomials of
+/// [`sin_cos_small`], so `exp` of a small rotation needs no square root and no division.
+#[inline(always)]
+pub(crate) fn sinc_cos_small_squared(y: Lanes) -> (Lanes, Lanes) {
     const SIN: [f64; 9] = [
         1.0,
         -1.0 / 6.0,
@@ -70,14 +78,13 @@ pub(crate) fn sin_cos_small(x: Lanes) -> (Lanes, Lanes) {
         -1.0 / 87_178_291_200.0,
         1.0 / 20_922_789_888_000.0,
     ];
-    let y = x * x;
     let (y2, y4) = (y * y, y * y * (y * y));
     let estrin = |c: [f64; 9]| {
         let c = c.map(Lanes::splat);
         let pairs = [0, 1, 2, 3].map(|k| c[2 * k] + c[2 * k + 1] * y);
         (pairs[0] + pairs[1] * y2) + (pairs[2] + pairs[3] * y2) * y4 + c[8] * (y4 * y4)
     };
-    (x * estrin(SIN), estrin(COS))
+    (estrin(SIN), estrin(COS))
 }
 
 #[cfg(test)]

@@ -13,11 +13,14 @@
 //! multiplier `μ_j = x_j·(Lx)_j`, the Hessian blocks `H_ab = L_ab B_aᵀB_b − δ_ab μ_a I₃`
 //! (block-pentadiagonal, factorised banded); the step `x_j ← normalise(x_j + s B_j d_j)`, with
 //! `−g` when `H` is not positive definite and `s` halved until `E` drops (Armijo). It starts
-//! from piecewise SLERP, the exact equilibrium for `smoothness = 0`.
+//! from piecewise SLERP, the exact equilibrium for `smoothness = 0`. Between the samples it is
+//! evaluated by the C² cubic in rotation vectors through them ([`RotvecCubic`]), or, where that
+//! has no solution (consecutive samples near a half turn apart beside spans 10⁶ times shorter:
+//! only with a few samples a segment), by Squad through them (C¹).
 
 use glam::{DQuat, DVec3};
 
-use super::{Curve, Keys, PiecewiseSlerp, Squad, locate, slerp};
+use super::{Curve, Keys, PiecewiseSlerp, RotvecCubic, Squad, locate, slerp};
 use crate::error::{KliError, Requirement, require};
 
 /// The knobs of [`KliSpline::new`].
@@ -48,19 +51,29 @@ pub const MAX_SAMPLES: usize = 1 << 17;
 pub const TOLERANCE: f64 = 1e-12;
 const MAX_ITERATIONS: usize = 100;
 
-/// The chain's equilibrium through the keys, evaluated between its samples by Squad through
-/// them (continuous angular velocity).
+/// The chain's equilibrium through the keys, evaluated between its samples by the C² cubic in
+/// rotation vectors through them (continuous angular acceleration).
 #[derive(Debug, Clone)]
 pub struct KliSpline {
     keys: Keys,
-    curve: Squad,
+    samples: Keys,
+    curve: Between,
     /// Samples a segment: sample interval `i·S + j` is the `j`-th of segment `i`.
     per: usize,
     /// At smoothness 0 the equilibrium is piecewise SLERP exactly, kinks at the keys included:
-    /// then it is evaluated as such (Squad through the samples would round the kinks).
+    /// then it is evaluated as such (a smooth curve through the samples would round the kinks).
     exact: Option<PiecewiseSlerp>,
     residual: f64,
     iterations: usize,
+}
+
+/// How the chain is evaluated between its samples.
+#[derive(Debug, Clone)]
+enum Between {
+    /// C²: the cubic in rotation vectors through the samples.
+    Cubic(RotvecCubic),
+    /// C¹: Squad through the samples, where the cubic has no solution.
+    Squad(Squad),
 }
 
 impl KliSpline {
@@ -96,9 +109,14 @@ impl KliSpline {
         pinned.push(true);
         let chain = Chain::new(&times, 1.0 - smoothness, smoothness, pinned);
         let (iterations, residual) = chain.solve(&mut samples);
-        let curve = Squad::new(Keys::unchecked_spans(&samples, Some(&times))?);
+        // Signs made consistent (consecutive samples more than a half turn apart: coarse chains).
+        let samples = Keys::unchecked_spans(&samples, Some(&times))?;
+        let curve = match RotvecCubic::new(samples.quaternions(), &times) {
+            Ok(cubic) => Between::Cubic(cubic),
+            Err(_) => Between::Squad(Squad::new(samples.clone())),
+        };
         let exact = (smoothness == 0.0).then(|| PiecewiseSlerp::new(keys.clone()));
-        Ok(Self { keys, curve, per, exact, residual, iterations })
+        Ok(Self { keys, samples, curve, per, exact, residual, iterations })
     }
 
     /// The keys as used (signs consistent).
@@ -108,7 +126,7 @@ impl KliSpline {
 
     /// The chain's samples and their times (the keys among them).
     pub fn samples(&self) -> &Keys {
-        self.curve.keys()
+        &self.samples
     }
 
     /// The relative residual reached, `max_j |g_j| / max_j |(Lx)_j|`.
@@ -120,6 +138,11 @@ impl KliSpline {
     pub fn iterations(&self) -> usize {
         self.iterations
     }
+
+    /// Whether the curve is C² (the cubic through the samples), not C¹ (Squad through them).
+    pub fn is_c2(&self) -> bool {
+        matches!(self.curve, Between::Cubic(_)) && self.exact.is_none()
+    }
 }
 
 impl Curve for KliSpline {
@@ -127,19 +150,44 @@ impl Curve for KliSpline {
         if let Some(exact) = &self.exact {
             return exact.at(t);
         }
-        // The samples are even within a segment: find the segment, then the sample interval.
-        let (segment, u) = locate(self.keys.times(), t);
-        let position = u * self.per as f64;
-        let j = (position.floor() as usize).min(self.per - 1);
-        self.curve.at_interval(segment * self.per + j, position - j as f64)
+        let (j, u) = self.interval(t);
+        match &self.curve {
+            Between::Cubic(cubic) => cubic.at_interval(j, u),
+            Between::Squad(squad) => squad.at_interval(j, u),
+        }
     }
 
     fn start_time(&self) -> f64 {
-        self.curve.start_time()
+        self.keys.times()[0]
     }
 
     fn end_time(&self) -> f64 {
-        self.curve.end_time()
+        self.keys.times()[self.keys.len() - 1]
+    }
+
+    /// Exact: `q Ω q̄` with the cubic's body rate `Ω = J(θ) θ'`.
+    fn angular_velocity(&self, t: f64) -> DVec3 {
+        if let Some(exact) = &self.exact {
+            return exact.angular_velocity(t);
+        }
+        match &self.curve {
+            Between::Cubic(cubic) => {
+                let (j, u) = self.interval(t);
+                cubic.angular_velocity_interval(j, u)
+            }
+            Between::Squad(squad) => squad.angular_velocity(t),
+        }
+    }
+}
+
+impl KliSpline {
+    /// The sample interval holding `t` and the fraction `u` within it: the samples are even
+    /// within a segment, so find the segment, then the interval (no search over the samples).
+    fn interval(&self, t: f64) -> (usize, f64) {
+        let (segment, u) = locate(self.keys.times(), t);
+        let position = u * self.per as f64;
+        let j = (position.floor() as usize).min(self.per - 1);
+        (segment * self.per + j, position - j as f64)
     }
 }
 

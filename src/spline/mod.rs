@@ -15,12 +15,14 @@
 
 mod chain;
 mod keys;
+mod rotvec_cubic;
 mod sequential;
 mod slerp_spline;
 mod squad;
 
 pub use chain::{ChainOptions, KliSpline, MAX_SAMPLES, MAX_SAMPLES_PER_SEGMENT};
 pub use keys::{Keys, MAX_TIME, MIN_SPAN};
+pub use rotvec_cubic::RotvecCubic;
 pub use sequential::SequentialKli;
 pub use slerp_spline::PiecewiseSlerp;
 pub use squad::Squad;

@@ -54,7 +54,7 @@ extern "C" {
 }
 
 enum Kind {
-    Chain(KliSpline),
+    Chain(Box<KliSpline>),
     Squad(Squad),
     Slerp(PiecewiseSlerp),
 }
@@ -69,7 +69,7 @@ pub struct RotationSpline {
 impl RotationSpline {
     fn curve(&self) -> &dyn Curve {
         match &self.kind {
-            Kind::Chain(c) => c,
+            Kind::Chain(c) => c.as_ref(),
             Kind::Squad(c) => c,
             Kind::Slerp(c) => c,
         }
@@ -278,7 +278,7 @@ pub fn kli_spline(
         }
         let (times, order) = read_times(&fields)?;
         let keys = read_keys(keys, times, order)?;
-        Ok(RotationSpline { kind: Kind::Chain(KliSpline::new(keys, &chain)?), order })
+        Ok(RotationSpline { kind: Kind::Chain(Box::new(KliSpline::new(keys, &chain)?)), order })
     };
     keys_and_options().map_err(throw)
 }
