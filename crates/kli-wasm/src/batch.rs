@@ -1,7 +1,8 @@
-//! The batch calls: Float64Arrays in, results written into the caller's `out`. Arrays that live in
-//! the module's own memory ([`crate::Float64Buffer`] views) are used in place, with no copy at all;
-//! others are copied in and out a chunk at a time, so a call of any size needs only a few hundred
-//! KB of wasm memory and no allocation on the JavaScript side.
+//! The batch calls: arrays in, results written into the caller's Float64Array `out`. Float64Arrays
+//! that live in the module's own memory ([`crate::Float64Buffer`] views) are used in place, with
+//! no copy at all; other Float64Arrays are copied in and out a chunk at a time, so a call of any
+//! size needs only a few hundred KB of wasm memory. Other inputs (a Float32Array from three.js or
+//! glTF, any typed array or array of numbers) are first copied into a Float64Array in JavaScript.
 
 use js_sys::{Float64Array, WebAssembly};
 use kli::KliError;
@@ -52,9 +53,9 @@ fn run_arrays(
     shortest_path: bool,
 ) -> Result<F64Array, KliError> {
     let parameter_name = kind.parameter_name();
-    let (starts, ends) = (F64Array::new("starts", starts)?, F64Array::new("ends", ends)?);
-    let (parameters, out) =
-        (F64Array::new(parameter_name, parameters)?, F64Array::new("out", out)?);
+    let input = |name, value| F64Array::input(name, value, 4 * MAX_TIMES);
+    let (starts, ends) = (input("starts", starts)?, input("ends", ends)?);
+    let (parameters, out) = (input(parameter_name, parameters)?, F64Array::new("out", out)?);
     let n = parameters.length;
     check_lengths(starts.length, ends.length, n, out.length, parameter_name)?;
     if let Some([s, e, x, o]) = in_place([&starts, &ends, &parameters, &out]) {
@@ -104,9 +105,9 @@ fn run(
 /// `out`. Same checks as `slerp`; errors name the element.
 #[wasm_bindgen(js_name = slerpBatch)]
 pub fn slerp_batch(
-    #[wasm_bindgen(unchecked_param_type = "Float64Array")] starts: &JsValue,
-    #[wasm_bindgen(unchecked_param_type = "Float64Array")] ends: &JsValue,
-    #[wasm_bindgen(unchecked_param_type = "Float64Array")] s: &JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | ArrayLike<number>")] starts: &JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | ArrayLike<number>")] ends: &JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | ArrayLike<number>")] s: &JsValue,
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] out: &JsValue,
     options: Option<KliOptionsObject>,
 ) -> JsResult<Float64Array> {
@@ -117,9 +118,9 @@ pub fn slerp_batch(
 /// pairs; returns `out`. Same checks as `kliExact`; errors name the element.
 #[wasm_bindgen(js_name = kliExactBatch)]
 pub fn kli_exact_batch(
-    #[wasm_bindgen(unchecked_param_type = "Float64Array")] starts: &JsValue,
-    #[wasm_bindgen(unchecked_param_type = "Float64Array")] ends: &JsValue,
-    #[wasm_bindgen(unchecked_param_type = "Float64Array")] t: &JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | ArrayLike<number>")] starts: &JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | ArrayLike<number>")] ends: &JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | ArrayLike<number>")] t: &JsValue,
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] out: &JsValue,
     options: Option<KliOptionsObject>,
 ) -> JsResult<Float64Array> {
@@ -131,9 +132,9 @@ pub fn kli_exact_batch(
 /// matters (always the shorter arc).
 #[wasm_bindgen(js_name = nlerpBatch)]
 pub fn nlerp_batch(
-    #[wasm_bindgen(unchecked_param_type = "Float64Array")] starts: &JsValue,
-    #[wasm_bindgen(unchecked_param_type = "Float64Array")] ends: &JsValue,
-    #[wasm_bindgen(unchecked_param_type = "Float64Array")] s: &JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | ArrayLike<number>")] starts: &JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | ArrayLike<number>")] ends: &JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | ArrayLike<number>")] s: &JsValue,
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] out: &JsValue,
     options: Option<KliOptionsObject>,
 ) -> JsResult<Float64Array> {

@@ -165,6 +165,26 @@ impl F64Array {
         }
     }
 
+    /// An input array: a Float64Array as is (used in place when it lives in the module's
+    /// memory); any other typed array of numbers (a Float32Array from three.js or glTF) or
+    /// array-like of numbers copied into a fresh Float64Array first, at most `max` numbers.
+    pub fn input(name: &str, value: &JsValue, max: usize) -> Result<F64Array, KliError> {
+        if is_view(value) && value.is_instance_of::<Float64Array>() {
+            return F64Array::new(name, value);
+        }
+        let copy: Float64Array = match copy(value) {
+            Some(copy) if copy.length() as usize <= max => copy,
+            Some(copy) => return Err(too_long(name, copy.length() as f64, max)),
+            None => Float64Array::from(&numbers(name, value, max)?[..]),
+        };
+        Ok(F64Array {
+            length: copy.length() as usize,
+            buffer: copy.buffer().into(),
+            byte_offset: 0.0,
+            array: copy.into(),
+        })
+    }
+
     /// The array's buffer and the byte range it covers in it.
     pub fn range(&self) -> (&JsValue, usize, usize) {
         let start = self.byte_offset as usize;
