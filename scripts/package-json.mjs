@@ -3,6 +3,7 @@
 // declarations that compile with `lib: es2022`, and package.json, with the npm name, version,
 // description and licence from the Cargo manifests so they never disagree.
 import { readFileSync, writeFileSync, existsSync, copyFileSync } from "node:fs";
+import { gzipSync } from "node:zlib";
 
 const at = (path) => new URL(`../${path}`, import.meta.url);
 const manifest = (path) => readFileSync(at(path), "utf8");
@@ -59,6 +60,42 @@ export function isKliError(value) {
 export function isKliError(value: unknown): value is KliError;
 `);
   }
+  // Zero configuration: init() with no argument fetches the .wasm beside the glue; where a
+  // bundler left the file out (esbuild without a loader: 404) or served something else in its
+  // place (Vite 7's dev server: index.html), it falls back to the module inlined, gzipped and
+  // base64-encoded, in a file of its own loaded only then (a dynamic import: a separate chunk
+  // for bundlers that split, so their apps never download it).
+  const inline = `${m}_bg.inline.js`;
+  writeFileSync(at(`pkg/${inline}`), `// ${m}_bg.wasm, gzipped and base64-encoded: what init() falls back to when the .wasm file
+// itself cannot be fetched (see ${m}.js, __kliFallback). Loaded only then.
+export default "${gzipSync(readFileSync(at(`pkg/${m}_bg.wasm`)), { level: 9 }).toString("base64")}";
+`);
+  const fetchLine = `module_or_path = new URL('${m}_bg.wasm', import.meta.url);`;
+  const glueNow = manifest(`pkg/${m}.js`);
+  if (!glueNow.includes("__kliFallback")) {
+    if (!glueNow.includes(fetchLine)) throw new Error(`pkg/${m}.js: wasm-bindgen's default path changed shape (no "${fetchLine}")`);
+    writeFileSync(at(`pkg/${m}.js`), `${glueNow.replace(fetchLine,
+      `module_or_path = await __kliFallback(new URL('${m}_bg.wasm', import.meta.url), () => import('./${inline}'));`)}
+/**
+ * The response for the .wasm at \`url\`, or, where it cannot be had (fetch failed, an error
+ * status, or HTML served in its place by a dev server's fallback), the module's inlined copy.
+ * @param {URL} url
+ * @param {() => Promise<{ default: string }>} inline
+ */
+async function __kliFallback(url, inline) {
+    try {
+        const response = await fetch(url);
+        if (response.ok && !(response.headers.get('Content-Type') || '').includes('text/html')) return response;
+    } catch {
+        // file: URLs, offline, a bundler's missing file: the inlined copy below
+    }
+    const { default: base64 } = await inline();
+    const gzipped = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
+    const stream = new Blob([gzipped]).stream().pipeThrough(new DecompressionStream('gzip'));
+    return new Uint8Array(await new Response(stream).arrayBuffer());
+}
+`);
+  }
   writeFileSync(at(`pkg/${m}.node.js`), `// Node (and SSR, Vitest): the same module, with init() reading the .wasm beside this file
 // from disk when given nothing, where the browser entry would fetch it (fetch cannot read file:).
 import init from "./${m}.js";
@@ -98,7 +135,7 @@ const json = {
     ...Object.fromEntries(modules.map((m) => [`./${m}_bg.wasm`, { types: `./${m}_bg.wasm.d.ts`, default: `./${m}_bg.wasm` }])),
     "./package.json": "./package.json",
   },
-  files: [...modules.flatMap((m) => [`${m}.js`, `${m}.node.js`, `${m}.d.ts`, `${m}_bg.wasm`, `${m}_bg.wasm.d.ts`]), "three.js", "three.d.ts", "gltf.js", "gltf.d.ts", "resample.js", "README.md", "LICENSE"],
+  files: [...modules.flatMap((m) => [`${m}.js`, `${m}.node.js`, `${m}.d.ts`, `${m}_bg.wasm`, `${m}_bg.wasm.d.ts`, `${m}_bg.inline.js`]), "three.js", "three.d.ts", "gltf.js", "gltf.d.ts", "resample.js", "README.md", "LICENSE"],
   // Only kli/three needs three.js, and it uses what every three.js since r150 has.
   peerDependencies: { three: ">=0.150.0" },
   peerDependenciesMeta: { three: { optional: true } },

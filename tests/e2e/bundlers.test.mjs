@@ -1,11 +1,12 @@
 // The packed npm package in real bundlers, run in headless Chromium, each app computing with all
-// three entries: esbuild (the README's code and one line: the .wasm as a file), Vite 8 (build and
-// dev server, the code unchanged), webpack 5 (no configuration) and Vite 7's dev server (one line
-// of configuration, optimizeDeps.exclude; without it the .wasm is lost, and the test shows that).
+// three entries and the README's code unchanged: esbuild (with no loader it leaves the .wasm out:
+// init() falls back to the inlined copy; with the README's optional line the .wasm is a file),
+// Vite 8 (build and dev server), webpack 5 (no configuration) and Vite 7's dev server (it serves
+// index.html for the .wasm: the fallback again; its optional line serves the file itself).
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
 import { execFileSync } from "node:child_process";
-import { mkdtempSync, mkdirSync, writeFileSync } from "node:fs";
+import { mkdtempSync, mkdirSync, readdirSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { chromium } from "playwright-core";
@@ -57,14 +58,34 @@ async function runApp(dir, running) {
   await tab.goto(`${server.origin}/`);
   await tab.waitForFunction(() => document.body.dataset.result, null, { timeout: 10000 }).catch(() => {});
   const result = await tab.evaluate(() => document.body.dataset.result);
+  const files = await tab.evaluate(loaded);
   await context.close();
   if (!running) server.close();
-  return { result: result && JSON.parse(result), problems };
+  return { result: result && JSON.parse(result), problems, loaded: files };
 }
 
 const expected = { T: 11.66, count: 5, key: 1 };
 
-test("esbuild: the README's code, and the .wasm files imported with its file loader", async () => {
+/** The app's requests for .wasm files and for the inlined copies, from the page's own view. */
+const loaded = () => performance.getEntriesByType("resource").map((e) => e.name.split("?")[0].split("/").pop()).filter((n) => /wasm|inline/.test(n));
+/** Whether the app loaded the three .wasm files themselves (not the inlined copies). */
+const wasmFiles = (files) => files.filter((n) => n.endsWith(".wasm")).length === 3 && !files.some((n) => n.includes("inline"));
+
+test("esbuild: the README's code unchanged, no configuration (the inlined fallback)", async () => {
+  const dir = join(project, "esbuild-plain");
+  mkdirSync(dir);
+  writeFileSync(join(dir, "main.js"), app(`await Promise.all([init(), initSwarm(), initSpline()]);`));
+  execFileSync(bin("esbuild"), [join(dir, "main.js"), "--bundle", "--format=esm", "--platform=browser",
+    `--outdir=${join(dir, "dist")}`, "--log-level=warning"], { cwd: project, stdio: "pipe" });
+  writeFileSync(join(dir, "dist/index.html"), page);
+  // esbuild leaves the .wasm out: each init() gets a 404, then uses the inlined copy.
+  const { result, problems } = await runApp(join(dir, "dist"));
+  assert.deepEqual(problems.filter((p) => !/^404 .*_bg\.wasm$/.test(p)), []);
+  assert.equal(problems.length, 3, problems.join("\n"));
+  assert.deepEqual(result, expected);
+});
+
+test("esbuild: the README's optional lines, the .wasm files imported with its file loader", async () => {
   const dir = join(project, "esbuild-app");
   mkdirSync(dir);
   writeFileSync(join(dir, "main.js"), app(`
@@ -72,12 +93,15 @@ import wasm from "kli/kli_bg.wasm";
 import swarmWasm from "kli/swarm_bg.wasm";
 import splineWasm from "kli/spline_bg.wasm";
 await Promise.all([init({ module_or_path: wasm }), initSwarm({ module_or_path: swarmWasm }), initSpline({ module_or_path: splineWasm })]);`));
-  execFileSync(bin("esbuild"), [join(dir, "main.js"), "--bundle", "--format=esm", "--platform=browser", "--loader:.wasm=file",
+  execFileSync(bin("esbuild"), [join(dir, "main.js"), "--bundle", "--format=esm", "--platform=browser", "--splitting", "--loader:.wasm=file",
     `--outdir=${join(dir, "dist")}`, "--log-level=warning"], { cwd: project, stdio: "pipe" });
   writeFileSync(join(dir, "dist/index.html"), page);
-  const { result, problems } = await runApp(join(dir, "dist"));
+  const { result, problems, loaded: files } = await runApp(join(dir, "dist"));
   assert.deepEqual(problems, []);
   assert.deepEqual(result, expected);
+  // The inlined copies are chunks of their own, in dist but never downloaded.
+  assert.ok(wasmFiles(files), files.join(", "));
+  assert.equal(readdirSync(join(dir, "dist")).filter((n) => n.includes(".inline")).length, 3);
 });
 
 test("Vite 8: the README's code unchanged (vite build)", async () => {
@@ -86,9 +110,10 @@ test("Vite 8: the README's code unchanged (vite build)", async () => {
   writeFileSync(join(dir, "main.js"), app(`await Promise.all([init(), initSwarm(), initSpline()]);`));
   writeFileSync(join(dir, "index.html"), page);
   execFileSync(bin("vite"), ["build", "--logLevel", "error"], { cwd: dir, stdio: "pipe" });
-  const { result, problems } = await runApp(join(dir, "dist"));
+  const { result, problems, loaded: files } = await runApp(join(dir, "dist"));
   assert.deepEqual(problems, []);
   assert.deepEqual(result, expected);
+  assert.ok(wasmFiles(files), files.join(", "));
 });
 
 test("webpack 5: the README's code unchanged (webpack --mode production)", async () => {
@@ -98,9 +123,10 @@ test("webpack 5: the README's code unchanged (webpack --mode production)", async
   // No configuration: webpack's defaults (src/index.js to dist/main.js, top-level await on).
   execFileSync("node", [join(root, "node_modules/webpack-cli/bin/cli.js"), "--mode", "production", "--no-stats"], { cwd: dir, stdio: "pipe" });
   writeFileSync(join(dir, "dist/index.html"), page.replace('type="module" src="./main.js"', 'src="./main.js"'));
-  const { result, problems } = await runApp(join(dir, "dist"));
+  const { result, problems, loaded: files } = await runApp(join(dir, "dist"));
   assert.deepEqual(problems, []);
   assert.deepEqual(result, expected);
+  assert.ok(wasmFiles(files), files.join(", "));
 });
 
 /** Runs an app under a Vite dev server (the version given by its module), as `npm run dev` does. */
@@ -131,20 +157,26 @@ function installVite7() {
 }
 
 test("Vite 8 dev server: the README's code unchanged", async () => {
-  const { result, problems } = await viteDev("vite8-dev", vite("vite"), {});
+  const { result, problems, loaded: files } = await viteDev("vite8-dev", vite("vite"), {});
   assert.deepEqual(problems, []);
   assert.deepEqual(result, expected);
+  assert.ok(wasmFiles(files), files.join(", "));
 });
 
 // Vite 7's dev server pre-bundles dependencies into node_modules/.vite and loses the .wasm files
-// beside them (it serves index.html in their place); the one line the README gives,
-// optimizeDeps.exclude, serves the package as it is.
-test("Vite 7 dev server: without the README's line the .wasm is lost; with it, the app runs", async () => {
+// beside them (it serves index.html in their place): init() sees HTML and uses the inlined copy,
+// so the README's code runs unchanged; the optional line, optimizeDeps.exclude, serves the
+// package as it is, and then the .wasm files themselves are loaded.
+test("Vite 7 dev server: the README's code unchanged (the inlined fallback); with the optional line, the .wasm files", async () => {
   const vite7 = installVite7();
   const plain = await viteDev("vite7-dev-plain", vite7, {});
-  assert.equal(plain.result, undefined);
-  assert.ok(plain.problems.some((p) => /magic word|CompileError|wasm/i.test(p)), plain.problems.join("\n"));
-  const { result, problems } = await viteDev("vite7-dev", vite7, { optimizeDeps: { exclude: ["kli"] } });
+  assert.deepEqual(plain.problems, []);
+  assert.deepEqual(plain.result, expected);
+  // Its pre-bundler makes each inlined copy a chunk of its own (a hashed name).
+  const chunks = plain.loaded.filter((n) => n.includes("inline")).map((n) => n.split(".inline")[0]).sort();
+  assert.deepEqual(chunks, ["kli_bg", "spline_bg", "swarm_bg"]);
+  const { result, problems, loaded } = await viteDev("vite7-dev", vite7, { optimizeDeps: { exclude: ["kli"] } });
   assert.deepEqual(problems, []);
   assert.deepEqual(result, expected);
+  assert.deepEqual(loaded.filter((n) => n.includes("inline")), []);
 });

@@ -2,6 +2,7 @@
 // project, imported by name in Node with initSync, bundled with esbuild, and type-checked with tsc.
 import { test, before } from "node:test";
 import assert from "node:assert/strict";
+import { gunzipSync } from "node:zlib";
 import { execFileSync } from "node:child_process";
 import { mkdtempSync, writeFileSync, readFileSync, readdirSync } from "node:fs";
 import { tmpdir } from "node:os";
@@ -26,7 +27,7 @@ before(() => {
 
 test("the tarball holds every file the package needs, and only those", () => {
   const installed = readdirSync(join(project, "node_modules/kli")).sort();
-  const entry = (m) => [`${m}.d.ts`, `${m}.js`, `${m}.node.js`, `${m}_bg.wasm`, `${m}_bg.wasm.d.ts`];
+  const entry = (m) => [`${m}.d.ts`, `${m}.js`, `${m}.node.js`, `${m}_bg.inline.js`, `${m}_bg.wasm`, `${m}_bg.wasm.d.ts`];
   assert.deepEqual(installed, ["LICENSE", "README.md", ...entry("kli"), "package.json", ...entry("spline"), ...entry("swarm"), "three.d.ts", "three.js", "gltf.d.ts", "gltf.js", "resample.js"].sort());
   const manifest = JSON.parse(readFileSync(join(project, "node_modules/kli/package.json"), "utf8"));
   const cargo = readFileSync(join(root, "Cargo.toml"), "utf8");
@@ -40,6 +41,23 @@ test("the tarball holds every file the package needs, and only those", () => {
   // The repository, when Cargo.toml names one (and only then: never an invented address).
   const repository = cargo.split("[workspace.package]")[1].match(/^repository\s*=\s*"([^"]*)"/m)?.[1];
   assert.deepEqual(manifest.repository, repository && { type: "git", url: `git+${repository.replace(/\.git$/, "")}.git` });
+});
+
+test("each entry's inlined copy is its .wasm byte for byte, and init() uses it where the file cannot be fetched", async () => {
+  const dir = join(project, "node_modules/kli");
+  for (const m of ["kli", "swarm", "spline"]) {
+    const { default: base64 } = await import(join(dir, `${m}_bg.inline.js`));
+    const bytes = gunzipSync(Buffer.from(base64, "base64"));
+    assert.ok(bytes.equals(readFileSync(join(dir, `${m}_bg.wasm`))), m);
+  }
+  // The browser entry in Node: fetch cannot read file: URLs, so init() takes the inlined copy.
+  writeFileSync(join(project, "fallback.mjs"), `
+    import init, { kli } from "./node_modules/kli/kli.js";
+    import initSpline, { kliSpline } from "./node_modules/kli/spline.js";
+    await Promise.all([init(), initSpline()]);
+    console.log(JSON.stringify([kli([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]).finalTime, kliSpline([[1, 0, 0, 0], [0, 1, 0, 0]]).at(1)[1]]));
+  `);
+  assert.deepEqual(JSON.parse(execFileSync("node", ["fallback.mjs"], { cwd: project, encoding: "utf8" })), [11.66, 1]);
 });
 
 test("imports by name in Node with initSync and gives T = 11.66", () => {
