@@ -17,6 +17,15 @@ async function saved(page, what, format) {
   return { name: download.suggestedFilename(), bytes: await readFile(await download.path()) };
 }
 
+/** A CSV's provenance (its leading "# key = value" lines) and its table's lines. */
+function readCsv(bytes) {
+  const lines = bytes.toString("utf8").trim().split("\n");
+  const comments = lines.filter((line) => line.startsWith("# "));
+  const parameters = Object.fromEntries(comments.filter((line) => !line.startsWith("# unit of "))
+    .map((line) => line.slice(2).split(" = ")).filter((kv) => kv.length === 2));
+  return { comments, parameters, lines: lines.filter((line) => !line.startsWith("#")) };
+}
+
 /** A PNG's width and height, from its IHDR chunk. */
 const pngSize = (bytes) => ({ width: bytes.readUInt32BE(16), height: bytes.readUInt32BE(20) });
 
@@ -68,9 +77,20 @@ test("KLI page: SVG of the Hopf sphere is vector and holds the curve; PNG at 2×
     // CSV and JSON against the package's own calls on the same pair.
     const csv = (await saved(page, "path", "csv"));
     assert.equal(csv.name, "kli-path-T11.66.csv");
-    const rows = csv.bytes.toString("utf8").trim().split("\n");
-    assert.equal(rows[0], "t,w,x,y,z,slerpParameter,distance,hopfX,hopfY,hopfZ");
+    const { lines: rows, parameters, comments } = readCsv(csv.bytes);
+    assert.equal(rows[0], "t,w,x,y,z,slerpParameter,distance,angleToTarget,hopfX,hopfY,hopfZ");
     const json = JSON.parse((await saved(page, "path", "json")).bytes.toString("utf8"));
+    // Provenance: the run's parameters as the page was given them (its defaults here), and units.
+    assert.deepEqual({ ...json.parameters, rule: undefined },
+      { p: [0, 0, 0, 1], r: [0.5, 0.5, 0.5, 0.5], target: [0.5, 0.5, 0.5, 0.5], epsilon: 1e-5, delta: 0.01,
+        integrator: "rk4", shortestPath: true, finalTime: 11.66, rule: undefined });
+    assert.deepEqual(parameters, { p: "[0, 0, 0, 1]", r: "[0.5, 0.5, 0.5, 0.5]", target: "[0.5, 0.5, 0.5, 0.5]", epsilon: "0.00001",
+      delta: "0.01", integrator: "rk4", shortestPath: "true", rule: parameters.rule, finalTime: "11.66" });
+    assert.match(json.units.t, /flow's time/);
+    assert.match(json.units.distance, /not an angle/);
+    assert.match(json.units.angleToTarget, /degrees/);
+    assert.ok(comments.some((line) => /^# unit of angleToTarget: degrees/.test(line)), comments.join("\n"));
+    assert.match(json.source, /^kli \d+\.\d+\.\d+/);
     const api = await page.evaluate(async () => {
       const { kli, kliToSlerpParameter } = await import("./pkg/kli_demo.js");
       const p = [0, 0, 0, 1], r = [0.5, 0.5, 0.5, 0.5];
@@ -85,8 +105,13 @@ test("KLI page: SVG of the Hopf sphere is vector and holds the curve; PNG at 2×
       const row = rows[k + 1].split(",").map(Number);
       assert.equal(row[0], api.times[k]);
       assert.deepEqual(row.slice(1, 5), api.quaternions.slice(4 * k, 4 * k + 4));
-      assert.deepEqual(row.slice(7, 10), api.hopf.slice(3 * k, 3 * k + 3));
-      hopf(row.slice(1, 5)).forEach((c, j) => assert.ok(Math.abs(c - row[7 + j]) < 1e-12, "eq. 5 by hand"));
+      assert.deepEqual(row.slice(8, 11), api.hopf.slice(3 * k, 3 * k + 3));
+      hopf(row.slice(1, 5)).forEach((c, j) => assert.ok(Math.abs(c - row[8 + j]) < 1e-12, "eq. 5 by hand"));
+      // The angle to the target: twice the angle on S³ (acos of |q·r|), in degrees; 120° at t = 0.
+      const dot = Math.abs(row.slice(1, 5).reduce((sum, c) => sum + c * 0.5, 0));
+      const angle = (2 * Math.acos(Math.min(1, dot)) * 180) / Math.PI;
+      assert.ok(Math.abs(row[7] - angle) < 1e-5, `angle at row ${k}: ${row[7]} vs ${angle}`);
+      assert.equal(json.samples[k].angleToTarget, row[7]);
       assert.ok(Math.abs(row[5] - api.s[k]) < 1e-12, `s at row ${k}: ${row[5]} vs ${api.s[k]}`);
       const q = row.slice(1, 5), target = [0.5, 0.5, 0.5, 0.5];
       assert.ok(Math.abs(row[6] - Math.hypot(...q.map((c, i) => target[i] - c))) < 1e-15);
@@ -124,14 +149,22 @@ test("swarm page: every view as SVG, the sweep too; the swarm's CSV and JSON hol
     assert.deepEqual(pngSize(png.bytes), { width: Math.round(box.width * 2), height: Math.round(box.height * 2) });
     const csv = await saved(page, "swarm", "csv");
     assert.match(csv.name, /^kli-swarm-40-oscillators-t\d+\.\d\d\.csv$/);
-    const rows = csv.bytes.toString("utf8").trim().split("\n").slice(1).map((r) => r.split(",").map(Number));
+    const table = readCsv(csv.bytes);
+    const rows = table.lines.slice(1).map((r) => r.split(",").map(Number));
     assert.equal(rows.length, 40);
+    assert.equal(table.parameters.count, "40");
+    assert.equal(table.parameters.seed, "3");
     for (const [, i, w, x, y, z, hx, hy, hz] of rows) {
       assert.ok(Math.abs(Math.hypot(w, x, y, z) - 1) < 1e-12, `|q_${i}|`);
       hopf([w, x, y, z]).forEach((c, k) => assert.ok(Math.abs(c - [hx, hy, hz][k]) < 1e-12));
     }
     const json = JSON.parse((await saved(page, "swarm", "json")).bytes.toString("utf8"));
     assert.equal(json.oscillators.length, 40);
+    // The swarm's options as the URL gave them, the page's defaults for the rest.
+    assert.equal(json.parameters.count, 40);
+    assert.equal(json.parameters.seed, 3);
+    assert.equal(json.parameters.graph, "all");
+    assert.ok(json.parameters.dt > 0, "the page's step");
     assert.ok(json.orderParameter >= 0 && json.orderParameter <= 1);
     assert.deepEqual(problems, []);
   } finally {
@@ -150,8 +183,20 @@ test("keyframes page: the views as SVG; the curves' CSV rows are kliSpline's, sq
       assert.equal(doc.images, 0, view);
     }
     const csv = await saved(page, "curves", "csv");
-    const lines = csv.bytes.toString("utf8").trim().split("\n");
+    const { lines, parameters } = readCsv(csv.bytes);
     assert.equal(lines[0], "t,curve,w,x,y,z,angularSpeed,hopfX,hopfY,hopfZ");
+    const json = JSON.parse((await saved(page, "curves", "json")).bytes.toString("utf8"));
+    const form = await page.evaluate(() => ({
+      keys: document.querySelector("input[name=keys]").value.split(";").map((key) => key.split(",").map(Number)),
+      smoothness: Number(document.querySelector("input[name=smoothness]").value),
+    }));
+    // The keys as given (unit, signs consistent here), their times (0, 1, … by default), smoothness.
+    assert.equal(json.parameters.keys.length, form.keys.length);
+    json.parameters.keys.forEach((key, i) => key.forEach((c, j) => assert.ok(Math.abs(c - form.keys[i][j] / Math.hypot(...form.keys[i])) < 1e-15)));
+    assert.deepEqual(json.parameters.keyTimes, form.keys.map((_, i) => i));
+    assert.equal(json.parameters.smoothness, form.smoothness);
+    assert.equal(parameters.smoothness, String(form.smoothness));
+    assert.match(json.units.angularSpeed, /radians/);
     const rows = lines.slice(1).map((line) => line.split(","));
     const picks = [0, 7, 300, rows.length / 3 - 1].flatMap((k) => [k, k + rows.length / 3, k + (2 * rows.length) / 3]);
     const expected = await page.evaluate(async (asked) => {

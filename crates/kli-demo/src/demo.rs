@@ -18,6 +18,7 @@ use crate::palette::{INK, KLI, MUTED, SLERP};
 use crate::paper::{self, PAPER_P, PAPER_R};
 use crate::pen::Pen;
 use crate::plots::{draw_plot_cursors, draw_plots};
+use crate::provenance::{Provenance, Value};
 use crate::scene::Scene;
 use crate::sphere_view::{draw_sphere, draw_sphere_cursor};
 
@@ -184,11 +185,24 @@ impl Figure for Demo {
     /// parameter s(t) it sits at (not SLERP's clock u = t/T), the distance `‖target − q‖`, and its Hopf point. JSON adds the
     /// run (`p`, `target`, `finalTime`, `steps`).
     fn export(&self, csv: bool) -> String {
-        const COLUMNS: [&str; 10] =
-            ["t", "w", "x", "y", "z", "slerpParameter", "distance", "hopfX", "hopfY", "hopfZ"];
-        let rows: Vec<[f64; 10]> = self.rows().collect();
+        const COLUMNS: [&str; 11] = [
+            "t",
+            "w",
+            "x",
+            "y",
+            "z",
+            "slerpParameter",
+            "distance",
+            "angleToTarget",
+            "hopfX",
+            "hopfY",
+            "hopfZ",
+        ];
+        let rows: Vec<[f64; 11]> = self.rows().collect();
+        let provenance = self.provenance();
         if csv {
-            return csv_table(&COLUMNS, rows.iter().map(|r| &r[..]));
+            let table = csv_table(&COLUMNS, rows.iter().map(|r| &r[..]));
+            return provenance.csv_comments() + &table;
         }
         let path = self.scene.path();
         let samples = rows.iter().map(|r| {
@@ -197,9 +211,11 @@ impl Figure for Demo {
                 .list("quaternion", &r[1..5])
                 .number("slerpParameter", r[5])
                 .number("distance", r[6])
-                .list("hopf", &r[7..10])
+                .number("angleToTarget", r[7])
+                .list("hopf", &r[8..11])
         });
-        Json::object()
+        provenance
+            .json(Json::object())
             .list("p", &to_wxyz(path.quaternions()[0]))
             .list("target", &to_wxyz(path.target()))
             .number("finalTime", path.final_time())
@@ -209,19 +225,67 @@ impl Figure for Demo {
     }
 }
 
+/// The angle in degrees of the rotation taking `q` to `target`: `2·φ` for the angle `φ` between
+/// them on S³ (of the closer sign), by `φ = 2 atan2(|q − r|, |q + r|)`, accurate at both ends.
+fn rotation_angle_degrees(q: glam::DQuat, target: glam::DQuat) -> f64 {
+    let r = if q.dot(target) < 0.0 { -target } else { target };
+    let phi = 2.0 * (q - r).length().atan2((q + r).length());
+    (2.0 * phi).to_degrees()
+}
+
 impl Demo {
-    /// The exported rows: t, w, x, y, z, s, distance, Hopf x, y, z (every number finite).
-    fn rows(&self) -> impl Iterator<Item = [f64; 10]> + '_ {
+    /// The exported rows: t, w, x, y, z, s, distance, angle to the target (degrees), Hopf x, y,
+    /// z (every number finite).
+    fn rows(&self) -> impl Iterator<Item = [f64; 11]> + '_ {
         let s = &self.scene;
         let path = s.path();
         // The Hopf points as the package computes them (the scene's are of normalised samples).
         let hopf = path.hopf_curve();
+        let target = path.target();
         path.times().iter().zip(path.quaternions()).zip(hopf).enumerate().map(
             move |(i, ((&t, &q), h))| {
                 let [w, x, y, z] = to_wxyz(q);
-                [t, w, x, y, z, s.warp()[i], s.distances()[i], h.x, h.y, h.z]
+                let angle = rotation_angle_degrees(q, target);
+                [t, w, x, y, z, s.warp()[i], s.distances()[i], angle, h.x, h.y, h.z]
             },
         )
+    }
+
+    /// The run's parameters and the columns' units, for both exports.
+    fn provenance(&self) -> Provenance {
+        let path = self.scene.path();
+        let options = path.options();
+        let r = if self.flipped { -path.target() } else { path.target() };
+        let rule = if options.shortest_path {
+            "shortest path: the flow goes to -r when p·r < 0 (the same rotation, the shorter arc)"
+        } else {
+            "as given: the flow goes to r even when p·r < 0"
+        };
+        Provenance {
+            what: "KLI (Kuramoto–Lohe interpolation, Kapić and Crnkić): the path q(t) from p towards r, integrated until |target - q| < epsilon",
+            parameters: vec![
+                ("p", Value::List(to_wxyz(path.quaternions()[0]).to_vec())),
+                ("r", Value::List(to_wxyz(r).to_vec())),
+                ("target", Value::List(to_wxyz(path.target()).to_vec())),
+                ("epsilon", Value::Number(options.tolerance)),
+                ("delta", Value::Number(options.step)),
+                ("integrator", Value::Text(options.integrator.name().into())),
+                ("shortestPath", Value::Flag(options.shortest_path)),
+                ("rule", Value::Text(rule.into())),
+                ("finalTime", Value::Number(path.final_time())),
+            ],
+            units: &[
+                ("quaternions", "[w, x, y, z], scalar first, unit"),
+                ("t", "the flow's time (the paper's t, dimensionless), not seconds"),
+                ("slerpParameter", "s(t) with q(t) = slerp(p, target; s), from 0 to 1"),
+                ("distance", "|target - q| in R^4 (the paper's stopping test), not an angle"),
+                ("angleToTarget", "degrees: the rotation from q(t) to the target"),
+                (
+                    "hopf",
+                    "the point of the unit sphere S^2 the body's x-axis points to (paper eq. 5)",
+                ),
+            ],
+        }
     }
 
     fn paint_object(&self, pen: &Pen, width: f64, height: f64, t: f64) {

@@ -81,6 +81,13 @@ impl Json {
         out
     }
 
+    /// A true/false field.
+    pub fn flag(self, key: &str, value: bool) -> Json {
+        let mut json = self.key(key);
+        json.text.push_str(if value { "true" } else { "false" });
+        json
+    }
+
     /// A string field (escaped as JSON requires).
     pub fn string(self, key: &str, value: &str) -> Json {
         let mut json = self.key(key);

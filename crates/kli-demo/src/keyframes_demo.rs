@@ -18,6 +18,7 @@ use crate::object_view::{draw_object, object_camera};
 use crate::palette::{INK, KLI, MUTED, SLERP};
 use crate::pen::Pen;
 use crate::plots::{Panel, trim};
+use crate::provenance::{Provenance, Value};
 use crate::sphere_view::{Side, View, draw_globe, draw_grid_back, draw_grid_front, grid};
 
 /// Samples a unit of time for the series and the figures (as in MATH.md's measurements).
@@ -44,6 +45,7 @@ struct Series {
 #[wasm_bindgen]
 pub struct KeyframesDemo {
     keys: Keys,
+    smoothness: f64,
     chain: KliSpline,
     squad: Squad,
     slerp: PiecewiseSlerp,
@@ -124,6 +126,7 @@ impl KeyframesDemo {
             curves.iter().zip(&series).flat_map(|(c, s)| figures(*c, &keys, s, dt)).collect();
         Ok(KeyframesDemo {
             keys,
+            smoothness,
             chain,
             squad,
             slerp,
@@ -297,11 +300,14 @@ impl Figure for KeyframesDemo {
     }
 
     /// CSV: a row a curve and sample time, `t`, the curve ("chain", "squad", "slerp"), its
-    /// quaternion `w, x, y, z`, |ω| and its Hopf point. JSON: `keys` ([w, x, y, z] each),
-    /// `keyTimes`, and each curve's `samples`, `{ t, quaternion, angularSpeed, hopf }`.
+    /// quaternion `w, x, y, z`, |ω| and its Hopf point, after the run's parameters as `#`
+    /// lines. JSON: the parameters, `keys` ([w, x, y, z] each), `keyTimes`, and each curve's
+    /// `samples`, `{ t, quaternion, angularSpeed, hopf }`.
     fn export(&self, csv: bool) -> String {
+        let provenance = self.provenance();
         if csv {
-            let mut text = String::from("t,curve,w,x,y,z,angularSpeed,hopfX,hopfY,hopfZ\n");
+            let mut text = provenance.csv_comments();
+            text.push_str("t,curve,w,x,y,z,angularSpeed,hopfX,hopfY,hopfZ\n");
             for (name, curve, s) in self.named_curves() {
                 for (k, &t) in self.times.iter().enumerate() {
                     let [w, x, y, z] = to_wxyz(curve.at(t));
@@ -324,7 +330,8 @@ impl Figure for KeyframesDemo {
             });
             curves = curves.objects(name, samples);
         }
-        Json::object()
+        provenance
+            .json(Json::object())
             .lists("keys", keys.chunks(4))
             .list("keyTimes", self.keys.times())
             .raw("curves", &curves.end())
@@ -333,6 +340,38 @@ impl Figure for KeyframesDemo {
 }
 
 impl KeyframesDemo {
+    /// The keys, their times and the chain's options, and the columns' units.
+    fn provenance(&self) -> Provenance {
+        let keys = self.keys.quaternions().iter().map(|&q| to_wxyz(q).to_vec()).collect();
+        Provenance {
+            what: "three curves through the same keyframes: the Kuramoto–Lohe chain (chain), Shoemake's Squad (squad), piecewise SLERP (slerp)",
+            parameters: vec![
+                ("keys", Value::Lists(keys)),
+                ("keyTimes", Value::List(self.keys.times().to_vec())),
+                ("smoothness", Value::Number(self.smoothness)),
+                (
+                    "samplesPerSegment",
+                    Value::Number(ChainOptions::default().samples_per_segment as f64),
+                ),
+            ],
+            units: &[
+                (
+                    "quaternions",
+                    "[w, x, y, z], scalar first, unit; the keys as used (signs made consistent)",
+                ),
+                ("t", "the keys' time unit (the page's seconds)"),
+                (
+                    "angularSpeed",
+                    "|omega| in radians per unit of t (world frame, q' = omega q / 2)",
+                ),
+                (
+                    "hopf",
+                    "the point of the unit sphere S^2 the body's x-axis points to (paper eq. 5)",
+                ),
+            ],
+        }
+    }
+
     /// Each curve with its export name and its series.
     fn named_curves(&self) -> impl Iterator<Item = (&'static str, &dyn Curve, &Series)> {
         let curves: [&dyn Curve; 3] = [&self.chain, &self.squad, &self.slerp];

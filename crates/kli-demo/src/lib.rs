@@ -8,7 +8,8 @@
 //! Plain-Rust geometry and data ([`camera`], [`aircraft`], [`scene`], [`ticks`], [`palette`]) are
 //! apart from the files that draw ([`pen`], [`object_view`], [`sphere_view`], [`plots`]) and the
 //! classes themselves ([`demo`] for the KLI page, [`swarm_demo`] for the swarm page, with
-//! [`swarm_view`] and [`swarm_plots`], [`keyframes_demo`] for the keyframes page).
+//! [`swarm_view`] and [`swarm_plots`], [`keyframes_demo`] for the keyframes page); every export
+//! says where it came from ([`provenance`]).
 
 pub mod aircraft;
 pub mod camera;
@@ -24,6 +25,7 @@ pub mod palette;
 pub mod paper;
 pub mod pen;
 pub mod plots;
+pub mod provenance;
 pub mod scene;
 pub mod sphere_view;
 #[cfg(feature = "swarm-page")]

@@ -13,6 +13,7 @@ use crate::figure::{Figure, Frame, Layer};
 use crate::format::{Json, csv_table, fixed};
 use crate::palette::BACKGROUND;
 use crate::pen::{Pen, svg_document};
+use crate::provenance::{Provenance, Value};
 use crate::swarm_plots::{History, draw_history, draw_sweep};
 use crate::swarm_view::{draw_swarm_objects, draw_swarm_sphere};
 
@@ -26,6 +27,8 @@ pub struct SwarmDemo {
     options: SwarmOptions,
     history: History,
     mesh: Vec<Face>,
+    /// The step of the last `step` call (the page's), for the exports.
+    dt: Option<f64>,
 }
 
 #[wasm_bindgen]
@@ -35,7 +38,8 @@ impl SwarmDemo {
     pub fn new(options: Option<SwarmOptionsObject>) -> JsResult<SwarmDemo> {
         let (options, _) = read_swarm_options(&JsValue::from(options)).map_err(throw)?;
         let swarm = Swarm::new(&options).map_err(throw)?;
-        let mut demo = SwarmDemo { swarm, options, history: History::default(), mesh: aircraft() };
+        let mut demo =
+            SwarmDemo { swarm, options, history: History::default(), mesh: aircraft(), dt: None };
         demo.record();
         Ok(demo)
     }
@@ -49,6 +53,7 @@ impl SwarmDemo {
     pub fn step(&mut self, dt: f64, steps: f64) -> JsResult<()> {
         let steps = whole_steps(&steps.into()).map_err(throw)?;
         self.swarm.step(dt, steps).map_err(throw)?;
+        self.dt = Some(dt);
         self.record();
         Ok(())
     }
@@ -179,14 +184,16 @@ impl Figure for SwarmDemo {
             let [w, x, y, z] = to_wxyz(q);
             [t, i as f64, w, x, y, z, h.x, h.y, h.z]
         });
+        let provenance = self.provenance();
         if csv {
             let columns = ["t", "oscillator", "w", "x", "y", "z", "hopfX", "hopfY", "hopfZ"];
             let rows: Vec<[f64; 9]> = rows.collect();
-            return csv_table(&columns, rows.iter().map(|r| &r[..]));
+            return provenance.csv_comments() + &csv_table(&columns, rows.iter().map(|r| &r[..]));
         }
         let oscillators =
             rows.map(|r| Json::object().list("quaternion", &r[2..6]).list("hopf", &r[6..9]));
-        Json::object()
+        provenance
+            .json(Json::object())
             .number("t", t)
             .number("orderParameter", s.order_parameter())
             .number("rotationOrder", s.rotation_order())
@@ -197,6 +204,43 @@ impl Figure for SwarmDemo {
 }
 
 impl SwarmDemo {
+    /// The swarm's options and seed, and the columns' units.
+    fn provenance(&self) -> Provenance {
+        let o = &self.options;
+        let start = match o.start_spread {
+            Some(spread) => Value::Number(spread),
+            None => Value::Text("uniform on S^3".into()),
+        };
+        Provenance {
+            what: "a swarm of the non-abelian Kuramoto (Lohe) model on S^3: each oscillator's rotation at time t",
+            parameters: vec![
+                ("count", Value::Number(o.count as f64)),
+                ("coupling", Value::Number(o.coupling)),
+                ("graph", Value::Text(o.graph.name().into())),
+                ("leaders", Value::Number(o.leaders as f64)),
+                ("frequencySpread", Value::Number(o.frequency_spread)),
+                ("startSpread", start),
+                ("seed", Value::Number(o.seed as f64)),
+                ("dt", self.dt.map_or(Value::Text("no step taken yet".into()), Value::Number)),
+                ("integrator", Value::Text("geodesic RK4".into())),
+            ],
+            units: &[
+                ("quaternions", "[w, x, y, z], scalar first, unit"),
+                ("t", "the model's time (dimensionless)"),
+                ("oscillator", "index, from 0 (the leaders first)"),
+                ("orderParameter", "R = |mean of q|, from 0 to 1"),
+                (
+                    "rotationOrder",
+                    "largest eigenvalue of mean(q qT), from 1/4 to 1 (blind to the sign of q)",
+                ),
+                (
+                    "hopf",
+                    "the point of the unit sphere S^2 the body's x-axis points to (paper eq. 5)",
+                ),
+            ],
+        }
+    }
+
     fn paint_sphere(&self, pen: &Pen, frame: &Frame) {
         let viewport = frame.sphere_viewport();
         draw_swarm_sphere(pen, &viewport, &frame.camera, &self.swarm.hopf_points());
