@@ -60,7 +60,7 @@ PKG_SOURCES := $(CORE_SOURCES) crates/kli-wasm/Cargo.toml $(shell find crates/kl
                $(wildcard crates/kli-wasm/js/*) \
                scripts/package-json.mjs scripts/glue.mjs
 WWW_SOURCES := $(PKG_SOURCES) crates/kli-demo/Cargo.toml $(shell find crates/kli-demo/src -name '*.rs') \
-               scripts/pages.mjs www/pages.js node_modules/.installed
+               scripts/pages.mjs www/pages.js www/video/codecs.js node_modules/.installed
 pkg: setup-rust setup-node pkg/.built
 	@cmp -s README.md pkg/README.md || cp README.md pkg/
 pkg/.built: $(PKG_SOURCES)
@@ -95,7 +95,11 @@ www: setup-rust setup-node pkg www/pkg/.built
 	node scripts/pages.mjs write
 www/pkg/.built: $(WWW_SOURCES) pkg/.built
 	@test -n "$(PAGES)" || { echo "no pages: node scripts/pages.mjs names printed nothing"; exit 1; }
-	rm -rf www/pkg www/examples/vendor
+	rm -rf www/pkg www/examples/vendor www/vendor
+	@# Saving a video (www/video/): mediabunny and gifenc, tree-shaken into one module, loaded
+	@# only when a video is saved.
+	esbuild www/video/codecs.js --bundle --format=esm --minify --log-level=warning '--banner:js=// @ts-nocheck' \
+	  --outfile=www/vendor/codecs.js
 	@# The examples import the package and three.js by name (an import map): both served locally.
 	mkdir -p www/examples/vendor/kli www/examples/vendor/three
 	cp pkg/kli.js pkg/kli_bg.wasm pkg/spline.js pkg/spline_bg.wasm pkg/three.js pkg/resample.js www/examples/vendor/kli/
@@ -168,4 +172,4 @@ bench: pkg www setup-browser
 
 clean:
 	cargo clean
-	rm -rf pkg www/pkg www/examples/vendor dist node_modules test-artifacts
+	rm -rf pkg www/pkg www/examples/vendor www/vendor dist node_modules test-artifacts

@@ -32,10 +32,10 @@ function withBundle(html, page) {
 async function offlineFiles() {
   const element = await build({
     entryPoints: [join(www, "kli-figure.js")], bundle: true, write: false, metafile: true, format: "esm",
-    external: ["./pkg/*"], logLevel: "error",
+    external: ["./pkg/*"], logLevel: "error", plugins: [sharedModules],
   });
   const modules = Object.keys(element.metafile.inputs).map((input) => relative(www, resolve(input)));
-  const files = new Set(["style.css", "kli-figure.css", ...modules]);
+  const files = new Set(["style.css", "kli-figure.css", "vendor/codecs.js", ...modules]);
   for (const page of PAGES) {
     files.add(page.html);
     files.add(bundle(page));
@@ -46,11 +46,13 @@ async function offlineFiles() {
 }
 
 /** The .wasm modules' glue stays a module of its own beside the bundle (pkg/<name>_demo.js), so
- *  that the page and anything else on it (a test, the console) share one instance. */
+ *  that the page and anything else on it (a test, the console) share one instance; the video
+ *  codecs (vendor/codecs.js, 60 KB gzipped) stay a module of their own, loaded only to save a video. */
 const sharedModules = {
   name: "shared-modules",
   setup(build) {
     build.onResolve({ filter: /\/pkg\/\w+_demo\.js$/ }, (args) => ({ path: `./${args.path.split("/").pop()}`, external: true }));
+    build.onResolve({ filter: /\/vendor\/codecs\.js$/ }, () => ({ path: "../vendor/codecs.js", external: true }));
   },
 };
 

@@ -8,7 +8,7 @@
  * @param {string} type MIME type
  * @param {BlobPart} content
  */
-function download(name, type, content) {
+export function download(name, type, content) {
   const url = URL.createObjectURL(new Blob([content], { type }));
   const link = Object.assign(document.createElement("a"), { href: url, download: name });
   document.body.append(link);

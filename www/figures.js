@@ -14,7 +14,7 @@ import { png, saveAs } from "./exports.js";
  * @property {(view: string, ctx: CanvasRenderingContext2D, frame: Frame, layer?: "whole" | "still" | "moving") => void} draw
  * @property {(view: string, frame: Frame) => string} toSvg
  */
-/** @typedef {{ width: number, height: number, pixelRatio: number, t: number, azimuth: number, elevation: number }} Frame */
+/** @typedef {{ width: number, height: number, pixelRatio: number, t: number, azimuth: number, elevation: number, textScale?: number }} Frame */
 /** @typedef {(ctx: CanvasRenderingContext2D, frame: Frame) => void} Painter a view the page draws itself */
 
 /**
@@ -36,6 +36,8 @@ export class Figures {
     /** @type {Figure | null} */
     this.figure = null;
     this.camera = new Camera([0, 0]);
+    /** Every label's size is multiplied by this (0.5 to 4): larger text for a projector. */
+    this.textScale = 1;
     /** @type {Partial<Record<Name, import("./canvases.js").Size>>} */
     this.sizes = {};
     /** @type {Map<Name, HTMLCanvasElement>} the still layers, offscreen */
@@ -59,6 +61,30 @@ export class Figures {
     for (const name of names) this.stale.add(name);
   }
 
+  /** Scales the figures' text (clamped to 0.5–4; anything not a number is 1). */
+  scaleText(/** @type {number} */ scale) {
+    this.textScale = Number.isFinite(scale) ? Math.min(Math.max(scale, 0.5), 4) : 1;
+    this.invalidate();
+  }
+
+  /**
+   * Each laid-out view as its SVG at time `t` (for printing): a view the page draws itself uses
+   * its own SVG maker from `svgs`.
+   * @param {number} t
+   * @param {Partial<Record<Name, (frame: Frame) => string>>} [svgs]
+   * @returns {[Name, string][]}
+   */
+  svgs(t, svgs = {}) {
+    const figure = this.figure;
+    if (!figure) return [];
+    return /** @type {Name[]} */ (Object.keys(this.canvases)).flatMap((name) => {
+      const frame = this.frame(name, t);
+      if (!frame) return [];
+      const own = svgs[name];
+      return [[name, own ? own(frame) : figure.toSvg(name, frame)]];
+    });
+  }
+
   /** Turns the sphere views by (azimuth, elevation) radians. */
   turn(/** @type {number} */ azimuth, /** @type {number} */ elevation) {
     this.camera.turn(azimuth, elevation);
@@ -75,7 +101,7 @@ export class Figures {
   frame(name, t, size = this.sizes[name]) {
     if (!size) return null;
     const { azimuth, elevation } = this.camera;
-    return { width: size.width, height: size.height, pixelRatio: size.ratio, t, azimuth, elevation };
+    return { width: size.width, height: size.height, pixelRatio: size.ratio, t, azimuth, elevation, textScale: this.textScale };
   }
 
   /**

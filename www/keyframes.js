@@ -54,6 +54,11 @@ const page = new Page({
   readout: ({ run }, t) => (run ? `t = ${t.toFixed(2)} / ${run.endTime.toFixed(2)}` : ""),
   data: { kind: "curves", file: (run) => `kli-keyframes-curves-${run.keys.length / 4}-keys` },
   file: (run, view, t) => `kli-keyframes-${FILE_NAMES[view]}-${run.keys.length / 4}-keys-${timeTag(t)}`,
+  video: {
+    views: ["objects", "hopf"],
+    title: (run) => `Through ${run.keys.length / 4} keys: the Kuramoto–Lohe chain, Squad and piecewise SLERP`,
+    file: (run) => `kli-keyframes-${run.keys.length / 4}-keys`,
+  },
   shown: (_, run, state) => {
     $("#smoothness-value", HTMLOutputElement).textContent = String(state.smoothness);
     fillFigures(run, state);

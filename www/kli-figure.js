@@ -16,13 +16,15 @@ import { DEFAULTS as KLI_DEFAULTS } from "./presets.js";
 import { parseText } from "./schema.js";
 import { STATES } from "./states.js";
 import { PAGES, pageOfView } from "./pages.js";
+import { wirePrinting } from "./print.js";
+import { record } from "./video/panel.js";
 
 const VIEWS = PAGES.flatMap((page) => Object.keys(page.views));
 /** A state key as an attribute: `shortestPath` → `shortest-path`. */
 const attributeName = (/** @type {string} */ key) => key.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`);
 /** The figure's own attributes, then each page state's keys (states.js), read as the pages read
  *  their URL (schema.js). */
-const ATTRIBUTES = ["view", "t", "autoplay", "speed", "label",
+const ATTRIBUTES = ["view", "t", "autoplay", "speed", "label", "text-scale", "print-t",
   ...new Set(Object.values(STATES).flatMap((state) => state.schema.map((entry) => attributeName(entry.key))))];
 /** What a figure shows when its attributes do not say. */
 const DEFAULTS = {
@@ -64,6 +66,7 @@ const STYLE = `
 :host([view="filmstrip"]) { aspect-ratio: 5 / 1; }
 :host([view="plots"]) { aspect-ratio: 3 / 1; }
 canvas { display: block; width: 100%; height: 100%; }
+.print-figure { height: 100%; }
 p { position: absolute; inset: auto 0 0 0; margin: 0; padding: 4px 8px; font: .85rem system-ui, sans-serif;
     color: #a61e1e; background: #fff; }
 p:empty { display: none; }`;
@@ -81,6 +84,7 @@ export class KliFigure extends HTMLElement {
     this.message = document.createElement("p");
     this.message.setAttribute("role", "status");
     root.append(style, this.canvas, this.message);
+    this.root = root;
     /** @type {any} the module's Demo, KeyframesDemo or SwarmDemo */
     this.demo = null;
     this.t = 0;
@@ -93,6 +97,8 @@ export class KliFigure extends HTMLElement {
     this.last = 0;
     this.visible = true;
     this.built = 0;
+    /** @type {{ show(): void, remove(): void, dispose(): void } | null} printing as SVG, while connected */
+    this.printing = null;
     // Off screen, an animated figure stops asking for frames. The browser may deliver several
     // entries at once (hidden, then shown, on a slide that appears): the last one is the news.
     this.intersection = new IntersectionObserver((entries) => {
@@ -108,6 +114,8 @@ export class KliFigure extends HTMLElement {
   }
 
   disconnectedCallback() {
+    this.printing?.dispose();
+    this.printing = null;
     this.figures?.sizing?.disconnect();
     this.figures = null;
     this.intersection.disconnect();
@@ -157,6 +165,10 @@ export class KliFigure extends HTMLElement {
     const moduleView = page.views[view];
     this.figures = new Figures({ [moduleView]: this.canvas }, { layered: page.layered, still: page.still });
     this.figures.camera = new Camera(module.defaultCamera());
+    const scale = this.getAttribute("text-scale");
+    this.figures.scaleText(scale === null ? 1 : parseNumber(scale));
+    // Printed (or a deck's PDF): the figure as vector, at `print-t` (else its time now).
+    this.printing ??= wirePrinting(() => this.figures, () => this.printTime, {}, this.root);
     this.figures.show(demo);
     this.figures.observe(() => this.draw());
     this.message.textContent = "";
@@ -234,6 +246,49 @@ export class KliFigure extends HTMLElement {
     const context = this.canvas.getContext("2d");
     context?.clearRect(0, 0, this.canvas.width, this.canvas.height);
     this.dispatchEvent(new CustomEvent("kli-error", { detail: text }));
+  }
+
+  /** The time a printed figure shows: `print-t`, else the figure's time now. */
+  get printTime() {
+    const asked = this.getAttribute("print-t");
+    return asked === null ? Math.min(this.t, this.end) : Math.min(parseNumber(asked), this.end);
+  }
+
+  /**
+   * The figure as an SVG document at time `t` (default: its time now).
+   * @param {number} [t]
+   */
+  toSvg(t = this.t) {
+    const [entry] = this.figures?.svgs(Math.min(t, this.end)) ?? [];
+    if (!entry) throw new Error("kli-figure: the figure is not built or not laid out yet");
+    return entry[1];
+  }
+
+  /**
+   * The figure's animation as a video (MP4 H.264, WebM VP9) or animated GIF, each frame drawn
+   * for its own time: over [from, to] (default: the whole run) in `seconds` (default: the run's
+   * span at 1×, 1 to 60 s), at 720p or 1080p and 30 or 60 frames a second.
+   * @param {{ format?: "mp4" | "webm" | "gif", size?: "720p" | "1080p", fps?: number, from?: number, to?: number,
+   *   seconds?: number, title?: string, signal?: AbortSignal, progress?: (done: number, total: number) => void }} [options]
+   * @returns {Promise<{ blob: Blob, name: string, frames: number }>}
+   */
+  async toVideo(options = {}) {
+    const figures = this.figures, demo = this.demo;
+    if (!figures || !demo) throw new Error("kli-figure: the figure is not built yet");
+    const [view] = Object.keys(figures.canvases);
+    const swarm = this.kind === "swarm";
+    const start = this.kind === "keyframes" ? demo.startTime : 0;
+    const span = /** @type {[number, number] | null} */ (swarm ? null : [start, this.end]);
+    const seconds = options.seconds ?? (span ? Math.min(60, Math.max(1, span[1] - span[0])) : 10);
+    return record({
+      figures, views: [view], chosen: [view], spanned: !swarm, span: () => span,
+      advance: () => this.stepSwarm(this.swarmSteps(SWARM_DT * 2)),
+      now: () => (swarm ? demo.time : this.t),
+      title: () => options.title ?? this.getAttribute("label") ?? this.canvas.getAttribute("aria-label") ?? "",
+      file: () => `kli-${this.kind}`,
+      textScale: () => figures.textScale,
+    }, { format: options.format ?? "mp4", size: options.size ?? "720p", fps: options.fps ?? 30, views: [view],
+      from: options.from, to: options.to, seconds, signal: options.signal, progress: options.progress });
   }
 
   /** The canvas's text alternative: the `label` attribute, or what the figure shows. */

@@ -39,6 +39,12 @@ const page = new Page({
   timeInUrl: true,
   data: { kind: "path", file: (run) => `kli-path-T${pathOf(run).finalTime.toFixed(2)}` },
   file: (_, view, t) => `kli-${view}${view === "filmstrip" ? "" : `-${timeTag(t)}`}`,
+  // The paper's video: the object turning beside its Hopf curve.
+  video: {
+    views: ["object", "hopf"],
+    title: (run) => (run.isPaperExample ? "The paper's example: KLI from p to r, and its Hopf curve on S²" : "KLI from p to r, and its Hopf curve on S²"),
+    file: (run) => (run.isPaperExample ? "kli-paper-example" : `kli-path-T${pathOf(run).finalTime.toFixed(2)}`),
+  },
   shown: (page, run, state) => {
     if (page.ui.time) page.ui.time.step = String(state.step);
     const path = pathOf(run);

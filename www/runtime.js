@@ -7,11 +7,13 @@
 //
 // The page's elements, by id: #load-status, #play, #readout, #share, #save and #save-status;
 // where present: #time (slider), #restart, #speed, #status (announced once the time rests),
-// #note.
+// #note. The runtime adds the video panel to #save and a text size choice beside #speed (or to
+// #save); `?text=1.5` scales the figures' text, `?print=1.8` the time the figures print at
+// (else the time on show), as SVG.
 import { Camera } from "./camera.js";
 import { Clock } from "./clock.js";
 import { $ } from "./dom.js";
-import { saveAs, timeTag, wireSaving } from "./exports.js";
+import { download, saveAs, timeTag, wireSaving } from "./exports.js";
 import { Figures } from "./figures.js";
 import { wireDragging, wireKeyboard } from "./input.js";
 import { page as pageNamed } from "./pages.js";
@@ -20,6 +22,8 @@ import { presetName } from "./presets.js";
 import { buildAll, clearErrors, messageOf, showFieldError } from "./runs.js";
 import { Schema } from "./schema.js";
 import { throttledUrl } from "./url.js";
+import { wirePrinting } from "./print.js";
+import { videoPanel } from "./video/panel.js";
 
 /**
  * What the module's page classes have: the figure interface, and `free`.
@@ -60,6 +64,8 @@ import { throttledUrl } from "./url.js";
  * @property {(page: Page<State, R>) => void} [drawn] after each frame
  * @property {(page: Page<State, R>) => void} [rested] when the time comes to rest (paused, or moved while paused)
  * @property {(x: number, y: number) => ((x: number, y: number) => void) | null} [grab] dragging on the sphere that moves something
+ * @property {{ views: readonly string[], title: (run: R) => string, file: (run: R) => string }} video the figures of the
+ *   page's clip by default (the paper's video: object and Hopf sphere), its title line and its file name's stem
  */
 
 /**
@@ -115,6 +121,8 @@ export class Page {
     this.drawPending = false;
     this.announcement = 0;
     this.lastReadout = "";
+    /** @type {{ fill(): void, check(): Promise<void> } | undefined} */
+    this.video = undefined;
   }
 
   static reducedMotion() {
@@ -173,6 +181,7 @@ export class Page {
     const preset = this.form.elements.namedItem("preset");
     if (preset instanceof HTMLSelectElement) preset.value = presetName(this.d.presets, state);
     this.d.shown?.(this, run, state);
+    this.video?.fill();
     this.showTime();
     this.requestDraw();
   }
@@ -332,7 +341,49 @@ export class Page {
       wireKeyboard(hopf, actions);
       wireDragging(hopf, actions.turn, this.d.grab);
     }
+    this.wireFigureChoices();
     this.d.wire?.(this);
+  }
+
+  /** The video panel, the text size, and printing as SVG: for every page, here once. */
+  wireFigureChoices() {
+    const save = $("#save", HTMLElement);
+    const svgs = Object.fromEntries(Object.entries(this.d.own ?? {}).map(([view, { svg }]) => [view, svg]));
+    this.video = videoPanel(save, {
+      figures: this.figures,
+      views: Object.keys(this.figures.canvases),
+      chosen: this.d.video.views,
+      spanned: Boolean(this.d.span),
+      span: () => (this.d.span && this.run ? this.d.span(this.run) : null),
+      advance: () => this.run && this.d.advance?.(this.run),
+      now: () => this.t,
+      title: () => (this.run ? this.d.video.title(this.run) : ""),
+      file: () => (this.run ? this.d.video.file(this.run) : "kli"),
+      textScale: () => this.figures.textScale,
+      svgs,
+    }, (name, blob) => download(name, blob.type, blob));
+    const sizes = [["1", "normal"], ["1.5", "large (1.5×)"], ["2", "projector (2×)"], ["3", "hall (3×)"]];
+    const label = Object.assign(document.createElement("label"), { className: "text-size" });
+    label.append("Text size ");
+    const select = document.createElement("select");
+    select.name = "text-size";
+    select.innerHTML = sizes.map(([value, name]) => `<option value="${value}">${name}</option>`).join("");
+    label.append(select);
+    const asked = parseNumber(this.query.get("text") ?? "1");
+    this.figures.scaleText(asked);
+    if (!sizes.some(([value]) => Number(value) === this.figures.textScale)) {
+      select.append(new Option(`${this.figures.textScale}×`, String(this.figures.textScale)));
+    }
+    select.value = String(this.figures.textScale);
+    const speed = this.ui.speed?.closest("label");
+    if (speed) speed.after(label);
+    else save.prepend(label);
+    select.addEventListener("input", () => {
+      this.figures.scaleText(Number(select.value));
+      this.requestDraw();
+    });
+    const printAt = this.query.get("print");
+    wirePrinting(() => this.figures, () => (printAt === null ? this.t : parseNumber(printAt)), svgs);
   }
 
   /** Loads the module, then shows the URL's state: the values the module refuses are shown

@@ -54,6 +54,11 @@ const page = new Page({
   },
   data: { kind: "swarm", file: (run, t) => `kli-swarm-${run.count}-oscillators-${timeTag(t)}` },
   file: (_, view, t) => `kli-swarm-${FILE_NAMES[view]}${view === "sweep" ? "" : `-${timeTag(t)}`}`,
+  video: {
+    views: ["hopf", "objects"],
+    title: (run) => `A Lohe swarm of ${run.count} oscillators on S³, through the Hopf map`,
+    file: (run) => `kli-swarm-${run.count}-oscillators`,
+  },
   shown: (page, run) => {
     if (page.ui.note) {
       page.ui.note.textContent = run.isKli

@@ -12,10 +12,10 @@ use web_sys::CanvasRenderingContext2d;
 
 use crate::camera::{Camera, Viewport};
 use crate::palette::BACKGROUND;
-use crate::pen::{Pen, size, svg_document};
+use crate::pen::{MAX_TEXT_SCALE, MIN_TEXT_SCALE, Pen, size, svg_document};
 
-/// What a view is drawn at: its size in CSS pixels, device pixels per CSS pixel, the time, and
-/// where the sphere views are seen from. Read from the page's `{ width, height, pixelRatio, t,
+/// What a view is drawn at: its size in CSS pixels, device pixels per CSS pixel, the time,
+/// where the sphere views are seen from, and the text's scale. Read from the page's `{ width, height, pixelRatio, t,
 /// azimuth, elevation }`; what is missing or not a finite number takes its default (1 × 1 px at
 /// ratio 1, t = 0, the default camera), so drawing never fails.
 pub(crate) struct Frame {
@@ -26,6 +26,8 @@ pub(crate) struct Frame {
     #[cfg_attr(not(any(feature = "kli-page", feature = "keyframes-page")), allow(dead_code))]
     pub t: f64,
     pub camera: Camera,
+    /// Every text's size is multiplied by this (0.5 to 4).
+    pub text_scale: f64,
 }
 
 impl Frame {
@@ -44,6 +46,7 @@ impl Frame {
             pixel_ratio: field(2).unwrap_or(1.0).clamp(0.1, 16.0),
             t: finite(field(3).unwrap_or(0.0)),
             camera: Camera::orbit(field(4).unwrap_or(azimuth), field(5).unwrap_or(elevation)),
+            text_scale: field(6).unwrap_or(1.0).clamp(MIN_TEXT_SCALE, MAX_TEXT_SCALE),
         }
     }
 
@@ -56,8 +59,8 @@ impl Frame {
 thread_local! {
     /// A frame's field names as JavaScript strings, made once: every view reads a frame every
     /// animation frame.
-    static FIELDS: [JsValue; 6] =
-        ["width", "height", "pixelRatio", "t", "azimuth", "elevation"].map(JsValue::from_str);
+    static FIELDS: [JsValue; 7] = ["width", "height", "pixelRatio", "t", "azimuth", "elevation", "textScale"]
+        .map(JsValue::from_str);
 }
 
 /// Which part of a view to draw. A page keeps the still part of a view (it changes only with
@@ -130,6 +133,7 @@ pub(crate) fn draw<F: Figure>(
     } else {
         Pen::begin(ctx, frame.width, frame.height, frame.pixel_ratio, BACKGROUND)
     };
+    pen.scale_text(frame.text_scale);
     figure.paint(view, layer, &pen, &frame);
     Ok(())
 }
@@ -138,7 +142,10 @@ pub(crate) fn draw<F: Figure>(
 pub(crate) fn to_svg<F: Figure>(figure: &F, view: &str, frame: &JsValue) -> JsResult<String> {
     let view = F::view(view).map_err(throw)?;
     let frame = Frame::read(frame);
-    let paint = |pen: &Pen| figure.paint(view, Layer::Whole, pen, &frame);
+    let paint = |pen: &Pen| {
+        pen.scale_text(frame.text_scale);
+        figure.paint(view, Layer::Whole, pen, &frame)
+    };
     Ok(svg_document(frame.width, frame.height, F::TITLES[view], &paint))
 }
 
@@ -214,6 +221,8 @@ export interface Frame {
   t?: number;
   azimuth?: number;
   elevation?: number;
+  /** Every text's size is multiplied by this, 0.5 to 4 (default 1): larger labels for a projector. */
+  textScale?: number;
 }
 /** The part of a view to draw: all of it, the part that does not follow the time, or the part
  *  that does (over the still part). */

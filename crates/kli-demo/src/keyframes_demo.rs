@@ -14,6 +14,7 @@ use crate::aircraft::{Face, aircraft};
 use crate::camera::Viewport;
 use crate::figure::{Figure, Frame, Layer, finite};
 use crate::format::{Json, joined, number};
+use crate::legend::{Entry, Mark, draw_legend, draw_legend_row, grouped_labels, legend_row_width};
 use crate::object_view::{draw_object, object_camera};
 use crate::palette::{INK, KLI, MUTED, SLERP};
 use crate::pen::Pen;
@@ -425,14 +426,39 @@ impl KeyframesDemo {
         for (s, (colour, dash)) in self.series.iter().zip(COLOURS.iter().zip(dashes)) {
             view.polyline_on(&s.hopf, Side::Front, (colour, 2.5, dash));
         }
-        for (i, &k) in self.keys.quaternions().iter().enumerate() {
-            let p = hopf(k);
+        let points: Vec<DVec3> = self.keys.quaternions().iter().map(|&k| hopf(k)).collect();
+        for &p in &points {
             pen.alpha(if view.in_front(p) { 1.0 } else { 0.4 });
             pen.disc(view.at(p), 5.5, Some("#ffffff"), Some((INK, 2.0)));
-            let (x, y) = view.at(p);
-            pen.text(&format!("k{i}"), (x + 9.0, y - 9.0), INK, 11.0, "left");
         }
         pen.alpha(1.0);
+        // Keys whose points coincide (a turn about the body's x-axis) share one label.
+        let pixels: Vec<(f64, f64)> = points.iter().map(|&p| view.at(p)).collect();
+        let names: Vec<String> = (0..points.len()).map(|i| format!("k{i}")).collect();
+        for (label, (x, y)) in grouped_labels(&pixels, &names, 14.0) {
+            pen.text(&label, (x + 9.0, y - 9.0), INK, 11.0, "left");
+        }
+        let entries = [
+            Entry { mark: Mark::Line(KLI, 2.5, &[]), label: NAMES[0] },
+            Entry { mark: Mark::Line(SLERP, 2.5, &[6.0, 4.0]), label: NAMES[1] },
+            Entry { mark: Mark::Line(INK, 2.5, &[2.0, 3.0]), label: NAMES[2] },
+            Entry { mark: Mark::Disc(Some("#ffffff"), INK), label: "k0, k1, …: the keys" },
+        ];
+        let note = self
+            .hidden_turn()
+            .map(|i| format!("k{i} → k{}: turns about the body's x-axis: not seen here", i + 1));
+        let v = view.viewport;
+        draw_legend(pen, (v.left + 4.0, v.top + v.height - 4.0), &entries, note.as_deref());
+    }
+
+    /// The first pair of consecutive keys that differ (by more than 0.5°) but have the same
+    /// Hopf point: the turn between them is about the body's x-axis, invisible on the sphere.
+    fn hidden_turn(&self) -> Option<usize> {
+        let k = self.keys.quaternions();
+        (0..k.len().saturating_sub(1)).find(|&i| {
+            let turn = 2.0 * k[i].dot(k[i + 1]).abs().min(1.0).acos();
+            turn > 0.5f64.to_radians() && (hopf(k[i]) - hopf(k[i + 1])).length() < 1e-6
+        })
     }
 
     /// The two panels and their curves (the still part), and the time t on each (the moving part).
@@ -466,6 +492,22 @@ impl KeyframesDemo {
                 panel.frame_with(pen, title, &ticks, "t");
                 for (s, colour) in self.series.iter().zip(COLOURS).rev() {
                     panel.series(pen, &self.times, values(s).into_iter(), colour, 1.8, &[]);
+                }
+                if index == 0 {
+                    let entries: Vec<Entry> = ["chain", "Squad", "SLERP"]
+                        .iter()
+                        .zip(COLOURS)
+                        .map(|(label, colour)| Entry { mark: Mark::Line(colour, 2.0, &[]), label })
+                        .collect();
+                    // Beside the title when there is room, else inside the panel's top (the
+                    // curves reach 1/1.08 of its height).
+                    let room = panel.width - pen.text_width(title, 12.5) - 12.0;
+                    let y = if legend_row_width(pen, &entries) <= room {
+                        panel.top - 14.0
+                    } else {
+                        panel.top + 8.0 * pen.text_scale()
+                    };
+                    draw_legend_row(pen, (panel.left + panel.width - 4.0, y), &entries);
                 }
             }
             if layer != Layer::Still {

@@ -19,6 +19,7 @@ mod figure;
 pub mod format;
 #[cfg(feature = "keyframes-page")]
 pub mod keyframes_demo;
+pub mod legend;
 pub mod object_view;
 pub mod palette;
 #[cfg(feature = "kli-page")]

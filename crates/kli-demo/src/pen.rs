@@ -27,6 +27,8 @@ pub struct Pen<'a> {
     surface: Surface<'a>,
     /// The opacity of what is drawn next (the canvas keeps its own; SVG elements carry it).
     opacity: Cell<f64>,
+    /// Every text's size is multiplied by this (a projector's larger labels: issue 15).
+    text_scale: Cell<f64>,
 }
 
 /// `rgb(…)` of a colour scaled by `light` (1 = as is).
@@ -71,7 +73,7 @@ impl<'a> Pen<'a> {
         ctx.fill_rect(0.0, 0.0, width, height);
         ctx.set_line_join("round");
         ctx.set_line_cap("round");
-        Self { surface: Surface::Canvas(ctx), opacity: Cell::new(1.0) }
+        Self { surface: Surface::Canvas(ctx), opacity: Cell::new(1.0), text_scale: Cell::new(1.0) }
     }
 
     /// Draws over what the canvas holds (no clearing), in CSS pixels at `pixel_ratio`.
@@ -79,7 +81,7 @@ impl<'a> Pen<'a> {
         let ratio = ratio_or_one(pixel_ratio);
         let _ = ctx.set_transform(ratio, 0.0, 0.0, ratio, 0.0, 0.0);
         ctx.set_global_alpha(1.0);
-        Self { surface: Surface::Canvas(ctx), opacity: Cell::new(1.0) }
+        Self { surface: Surface::Canvas(ctx), opacity: Cell::new(1.0), text_scale: Cell::new(1.0) }
     }
 
     /// A new SVG document `width` × `height` CSS pixels, filled with `background`; `title` is its
@@ -93,7 +95,11 @@ impl<'a> Pen<'a> {
             escape(title)
         );
         let _ = writeln!(doc, "<rect width=\"{w}\" height=\"{h}\" fill=\"{background}\"/>");
-        Pen { surface: Surface::Svg(RefCell::new(doc), Cell::new(0)), opacity: Cell::new(1.0) }
+        Pen {
+            surface: Surface::Svg(RefCell::new(doc), Cell::new(0)),
+            opacity: Cell::new(1.0),
+            text_scale: Cell::new(1.0),
+        }
     }
 
     /// The SVG document, closed (empty for a canvas pen).
@@ -306,8 +312,23 @@ impl<'a> Pen<'a> {
         }
     }
 
+    /// Scales every text drawn from now on by `scale` (from [`MIN_TEXT_SCALE`] to
+    /// [`MAX_TEXT_SCALE`]; anything else, non-finite included, is clamped or taken as 1).
+    pub fn scale_text(&self, scale: f64) {
+        let scale =
+            if scale.is_finite() { scale.clamp(MIN_TEXT_SCALE, MAX_TEXT_SCALE) } else { 1.0 };
+        self.text_scale.set(scale);
+    }
+
+    /// The factor texts are drawn at (see [`Pen::scale_text`]).
+    pub fn text_scale(&self) -> f64 {
+        self.text_scale.get()
+    }
+
     /// Text at `(x, y)`; `align` is "left", "center" or "right", the baseline is the middle.
+    /// `size` is multiplied by the pen's text scale.
     pub fn text(&self, text: &str, (x, y): (f64, f64), color: &str, size: f64, align: &str) {
+        let size = size * self.text_scale.get();
         match &self.surface {
             Surface::Canvas(ctx) => {
                 ctx.set_font(&font(size));
@@ -337,6 +358,7 @@ impl<'a> Pen<'a> {
     /// The width of `text` in CSS pixels at `size` (in SVG, where the viewer's font decides, an
     /// estimate of 0.56 em a character).
     pub fn text_width(&self, text: &str, size: f64) -> f64 {
+        let size = size * self.text_scale.get();
         match &self.surface {
             Surface::Canvas(ctx) => {
                 ctx.set_font(&font(size));
@@ -354,6 +376,10 @@ pub fn svg_document(width: f64, height: f64, title: &str, paint: &dyn Fn(&Pen)) 
     paint(&pen);
     pen.finish()
 }
+
+/// The range of the text scale (a figure's `textScale`).
+pub const MIN_TEXT_SCALE: f64 = 0.5;
+pub const MAX_TEXT_SCALE: f64 = 4.0;
 
 /// A figure's side in CSS pixels: 1 to 10⁴ (a non-finite size is 1).
 pub fn size(x: f64) -> f64 {

@@ -6,6 +6,7 @@ use glam::DVec3;
 
 use crate::camera::{Camera, Viewport};
 use crate::format::fixed;
+use crate::legend::{Entry, Mark, draw_legend, outward};
 use crate::palette::{AXIS_X, AXIS_Y, AXIS_Z, GRID, INK, KLI, MUTED, SLERP};
 use crate::pen::Pen;
 use crate::scene::Scene;
@@ -90,6 +91,26 @@ pub fn draw_sphere(pen: &Pen, viewport: &Viewport, camera: &Camera, scene: &Scen
     draw_front(&view, &grid, scene);
     draw_moments(&view, scene);
     draw_ends(&view, scene);
+    draw_key(&view, !scene.moments().is_empty());
+}
+
+/// The legend, bottom left: which curve is which (they lie on one arc), the ends, the moments.
+fn draw_key(view: &View, moments: bool) {
+    let mut entries = vec![
+        Entry { mark: Mark::Line(KLI, 3.5, &[]), label: "KLI" },
+        Entry { mark: Mark::Line(SLERP, 1.5, &[5.0, 4.0]), label: "SLERP" },
+        Entry { mark: Mark::Disc(Some("#ffffff"), INK), label: "h(p), the start" },
+        Entry { mark: Mark::Disc(Some(INK), INK), label: "h(r), the end" },
+    ];
+    if moments {
+        entries.push(Entry {
+            mark: Mark::Disc(Some(KLI), KLI),
+            label: "Table 1's times (the paper's)",
+        });
+    }
+    let v = view.viewport;
+    let note = Some("KLI and SLERP: one arc, two speeds");
+    draw_legend(view.pen, (v.left + 4.0, v.top + v.height - 4.0), &entries, note);
 }
 
 /// The half of the grid behind the sphere, faint (alpha left at 0.35 for what follows).
@@ -152,10 +173,13 @@ fn draw_moments(view: &View, scene: &Scene) {
 fn draw_ends(view: &View, scene: &Scene) {
     let (start, end) =
         (view.at(hopf(scene.path().arc().start())), view.at(hopf(scene.path().target())));
+    // Labelled away from the sphere's centre: off the curves, which run inside the disc, and
+    // clear of the markers that move along them.
+    let centre = view.at(DVec3::ZERO);
     view.pen.disc(start, 6.0, Some("#ffffff"), Some((INK, 2.0)));
-    view.pen.text("h(p)", offset(start, 0.0, -14.0), INK, 12.0, "center");
+    view.pen.text("h(p)", outward(start, centre, 18.0), INK, 12.0, "center");
     view.pen.disc(end, 6.0, Some(INK), Some(("#ffffff", 1.5)));
-    view.pen.text("h(r)", offset(end, 0.0, -14.0), INK, 12.0, "center");
+    view.pen.text("h(r)", outward(end, centre, 18.0), INK, 12.0, "center");
 }
 
 /// The KLI and SLERP points at time `t`, over [`draw_sphere`]'s drawing.
@@ -170,8 +194,4 @@ pub fn draw_sphere_cursor(pen: &Pen, viewport: &Viewport, camera: &Camera, scene
         12.0,
         "left",
     );
-}
-
-fn offset((x, y): (f64, f64), dx: f64, dy: f64) -> (f64, f64) {
-    (x + dx, y + dy)
 }

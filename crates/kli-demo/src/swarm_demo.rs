@@ -107,6 +107,7 @@ impl SwarmDemo {
         let frame = Frame::read(frame);
         let title = "The order parameter R against the coupling K";
         svg_document(frame.width, frame.height, title, &|pen| {
+            pen.scale_text(frame.text_scale);
             draw_sweep(pen, frame.width, frame.height, couplings, orders, current)
         })
     }
@@ -145,6 +146,7 @@ impl SwarmDemo {
         let frame = Frame::read(frame);
         let (width, height) = (frame.width, frame.height);
         let pen = Pen::begin(ctx, width, height, frame.pixel_ratio, BACKGROUND);
+        pen.scale_text(frame.text_scale);
         draw_sweep(&pen, width, height, couplings, orders, current);
     }
 }

@@ -7,6 +7,7 @@ use crate::aircraft::Face;
 use crate::camera::{Camera, Viewport};
 use crate::object_view::{draw_object, object_camera};
 use crate::palette::{INK, KLI, MUTED, SLERP};
+use crate::legend::{Entry, Mark, draw_legend};
 use crate::pen::Pen;
 use crate::sphere_view::{View, draw_globe, draw_grid_back, draw_grid_front, grid};
 
@@ -38,6 +39,14 @@ pub fn draw_swarm_sphere(pen: &Pen, viewport: &Viewport, camera: &Camera, points
         pen.disc(view.at(p), r + 3.5, None, Some((colour, 2.0)));
     }
     pen.alpha(1.0);
+    let entries = [
+        Entry { mark: Mark::Disc(Some("#1864ab"), "#1864ab"), label: "an oscillator: h(q_i)" },
+        Entry { mark: Mark::Disc(Some(MUTED), MUTED), label: "behind the sphere" },
+        Entry { mark: Mark::Disc(Some("#ffffff"), KLI), label: "ringed: drawn as objects" },
+    ];
+    let note = Some("h(q) is where q sends the body's x-axis");
+    let v = viewport;
+    draw_legend(pen, (v.left + 4.0, v.top + v.height - 4.0), &entries, note);
 }
 
 /// The first oscillators as whole objects in a row, each labelled.

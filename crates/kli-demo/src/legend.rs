@@ -1,0 +1,142 @@
+//! Legends and labels that keep a figure readable on its own (issue 15): a key of what each
+//! curve and mark is, drawn in the figure itself (so in its SVG, PNG and video too), labels that
+//! stay clear of each other, and a note where the figure cannot show something.
+
+use crate::palette::{INK, MUTED};
+use crate::pen::Pen;
+
+/// What a legend entry shows beside its label.
+#[derive(Clone, Copy)]
+pub enum Mark<'a> {
+    /// A line of `colour`, `width` and `dash` (`[on, off]`, empty for solid).
+    Line(&'a str, f64, &'a [f64]),
+    /// A disc: its fill and its ring's colour.
+    Disc(Option<&'a str>, &'a str),
+}
+
+/// A legend's entry.
+pub struct Entry<'a> {
+    pub mark: Mark<'a>,
+    pub label: &'a str,
+}
+
+/// The font size of legends and notes (before the pen's text scale).
+const SIZE: f64 = 11.0;
+
+/// Draws `entries` in a box whose bottom-left corner is `(left, bottom)`, one a line, then
+/// `note` (muted, below them) if any; returns the box's height.
+pub fn draw_legend(
+    pen: &Pen,
+    (left, bottom): (f64, f64),
+    entries: &[Entry],
+    note: Option<&str>,
+) -> f64 {
+    let scale = pen.text_scale();
+    let line = 15.0 * scale;
+    let swatch = 22.0 * scale.sqrt();
+    let rows = entries.len() + usize::from(note.is_some());
+    let height = rows as f64 * line + 6.0;
+    let widths = entries.iter().map(|e| swatch + 6.0 + pen.text_width(e.label, SIZE));
+    let note_width = note.map_or(0.0, |n| pen.text_width(n, SIZE));
+    let width = widths.fold(note_width, f64::max) + 10.0;
+    let top = bottom - height;
+    pen.alpha(0.88);
+    let corners = [(left, top), (left + width, top), (left + width, bottom), (left, bottom)];
+    pen.fill_polygon(&corners, "#ffffff", Some("#ced4da"));
+    pen.alpha(1.0);
+    for (i, entry) in entries.iter().enumerate() {
+        let y = top + 3.0 + (i as f64 + 0.5) * line;
+        let (x0, x1) = (left + 5.0, left + 5.0 + swatch);
+        match entry.mark {
+            Mark::Line(colour, width, dash) => pen.line((x0, y), (x1, y), colour, width, dash),
+            Mark::Disc(fill, ring) => pen.disc((0.5 * (x0 + x1), y), 4.5, fill, Some((ring, 1.5))),
+        }
+        pen.text(entry.label, (x1 + 6.0, y), INK, SIZE, "left");
+    }
+    if let Some(note) = note {
+        let y = top + 3.0 + (entries.len() as f64 + 0.5) * line;
+        pen.text(note, (left + 5.0, y), MUTED, SIZE, "left");
+    }
+    height
+}
+
+/// The width of [`draw_legend_row`]'s row.
+pub fn legend_row_width(pen: &Pen, entries: &[Entry]) -> f64 {
+    let swatch = 16.0 * pen.text_scale().sqrt();
+    entries.iter().map(|e| pen.text_width(e.label, SIZE) + swatch + 14.0).sum::<f64>() - 10.0
+}
+
+/// Draws `entries` in one row ending at `(right, y)` (a plot's title line): each a short line
+/// of its mark and its label.
+pub fn draw_legend_row(pen: &Pen, (right, y): (f64, f64), entries: &[Entry]) {
+    let swatch = 16.0 * pen.text_scale().sqrt();
+    let mut x = right;
+    for entry in entries.iter().rev() {
+        let width = pen.text_width(entry.label, SIZE);
+        pen.text(entry.label, (x, y), INK, SIZE, "right");
+        x -= width + 4.0;
+        match entry.mark {
+            Mark::Line(colour, width, dash) => {
+                pen.line((x - swatch, y), (x, y), colour, width, dash)
+            }
+            Mark::Disc(fill, ring) => pen.disc((x - 0.5 * swatch, y), 4.0, fill, Some((ring, 1.5))),
+        }
+        x -= swatch + 10.0;
+    }
+}
+
+/// Labels for points that may fall on top of each other (keys whose Hopf points coincide):
+/// points within `radius` pixels of an earlier one share its label ("k0, k1"). Returns each
+/// label and where its first point is.
+pub fn grouped_labels(
+    points: &[(f64, f64)],
+    names: &[String],
+    radius: f64,
+) -> Vec<(String, (f64, f64))> {
+    let mut groups: Vec<(String, (f64, f64))> = Vec::new();
+    for (point, name) in points.iter().zip(names) {
+        let near =
+            groups.iter_mut().find(|(_, at)| (at.0 - point.0).hypot(at.1 - point.1) < radius);
+        match near {
+            Some((label, _)) => {
+                label.push_str(", ");
+                label.push_str(name);
+            }
+            None => groups.push((name.clone(), *point)),
+        }
+    }
+    groups
+}
+
+/// Where a label of a point on the sphere's outline goes: `distance` pixels from the point,
+/// away from the sphere's centre (off the curves through the point, which cross the disc).
+pub fn outward((x, y): (f64, f64), (cx, cy): (f64, f64), distance: f64) -> (f64, f64) {
+    let (dx, dy) = (x - cx, y - cy);
+    let length = dx.hypot(dy);
+    if length < 1e-9 {
+        return (x, y - distance);
+    }
+    (x + distance * dx / length, y + distance * dy / length)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn points_that_coincide_share_one_label() {
+        let points = [(10.0, 10.0), (11.0, 10.5), (80.0, 40.0), (10.0, 30.0)];
+        let names: Vec<String> = (0..4).map(|i| format!("k{i}")).collect();
+        let groups = grouped_labels(&points, &names, 12.0);
+        let labels: Vec<&str> = groups.iter().map(|(l, _)| l.as_str()).collect();
+        assert_eq!(labels, ["k0, k1", "k2", "k3"]);
+        assert_eq!(groups[0].1, (10.0, 10.0));
+    }
+
+    #[test]
+    fn outward_moves_away_from_the_centre() {
+        assert_eq!(outward((110.0, 100.0), (100.0, 100.0), 5.0), (115.0, 100.0));
+        assert_eq!(outward((100.0, 90.0), (100.0, 100.0), 5.0), (100.0, 85.0));
+        assert_eq!(outward((100.0, 100.0), (100.0, 100.0), 5.0), (100.0, 95.0));
+    }
+}
