@@ -103,6 +103,11 @@ www/pkg/.built: $(WWW_SOURCES) pkg/.built
 	@# The examples import the package and three.js by name (an import map): both served locally.
 	mkdir -p www/examples/vendor/kli www/examples/vendor/three
 	cp pkg/kli.js pkg/kli_bg.wasm pkg/spline.js pkg/spline_bg.wasm pkg/three.js pkg/resample.js www/examples/vendor/kli/
+	@# reveal.js for the example deck (examples/slides.html), from the dev dependencies.
+	mkdir -p www/examples/vendor/reveal/theme
+	cp node_modules/reveal.js/dist/reveal.mjs www/examples/vendor/reveal/reveal.module.js
+	cp node_modules/reveal.js/dist/reveal.css www/examples/vendor/reveal/
+	cp node_modules/reveal.js/dist/theme/white.css www/examples/vendor/reveal/theme/
 	@# three.js as one minified module with its source map, as an app's bundler would serve it.
 	esbuild node_modules/three/build/three.module.js --bundle --format=esm --minify --sourcemap \
 	  --log-level=warning --outfile=www/examples/vendor/three/three.module.js

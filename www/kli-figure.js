@@ -97,6 +97,8 @@ export class KliFigure extends HTMLElement {
     this.last = 0;
     this.visible = true;
     this.built = 0;
+    /** A pending look at whether a figure hidden by style can be seen again. */
+    this.recheck = 0;
     /** @type {{ show(): void, remove(): void, dispose(): void } | null} printing as SVG, while connected */
     this.printing = null;
     // Off screen, an animated figure stops asking for frames. The browser may deliver several
@@ -114,6 +116,7 @@ export class KliFigure extends HTMLElement {
   }
 
   disconnectedCallback() {
+    clearTimeout(this.recheck);
     this.printing?.dispose();
     this.printing = null;
     this.figures?.sizing?.disconnect();
@@ -327,9 +330,21 @@ export class KliFigure extends HTMLElement {
     this.frame = requestAnimationFrame((now) => this.tick(now));
   }
 
+  /** Whether the figure can be seen: in the viewport (the IntersectionObserver) and not made
+   *  invisible by a host (reveal.js keeps the slides beside the current one laid out at opacity 0). */
+  get seen() {
+    return this.visible && (typeof this.checkVisibility !== "function" || this.checkVisibility({ opacityProperty: true, visibilityProperty: true }));
+  }
+
   tick(/** @type {number} */ now) {
     this.frame = 0;
     if (!this.demo || !this.playing || !this.visible) return;
+    if (!this.seen) {
+      // Hidden by style, which no observer reports: look again in a quarter of a second.
+      clearTimeout(this.recheck);
+      this.recheck = setTimeout(() => this.schedule(), 250);
+      return;
+    }
     const dt = (Math.min(Math.max(now - this.last, 0), 100) / 1000) * this.speed;
     this.last = now;
     if (this.kind === "swarm") {

@@ -164,6 +164,13 @@ export function videoPanel(container, source, download) {
   });
   cancel.addEventListener("click", () => running?.abort());
   fill();
-  check();
+  // The codecs (60 KB gzipped) load when the panel is first used, not with the page.
+  const firstUse = () => {
+    section.removeEventListener("focusin", firstUse);
+    section.removeEventListener("pointerenter", firstUse);
+    check();
+  };
+  section.addEventListener("focusin", firstUse);
+  section.addEventListener("pointerenter", firstUse);
   return { fill, check };
 }

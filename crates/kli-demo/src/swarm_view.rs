@@ -5,9 +5,9 @@ use glam::{DQuat, DVec3};
 
 use crate::aircraft::Face;
 use crate::camera::{Camera, Viewport};
+use crate::legend::{Entry, Mark, draw_legend};
 use crate::object_view::{draw_object, object_camera};
 use crate::palette::{INK, KLI, MUTED, SLERP};
-use crate::legend::{Entry, Mark, draw_legend};
 use crate::pen::Pen;
 use crate::sphere_view::{View, draw_globe, draw_grid_back, draw_grid_front, grid};
 
