@@ -173,6 +173,7 @@ bench: pkg www setup-browser
 	node bench/spline.mjs
 	node bench/smoothness.mjs
 	node bench/page.mjs
+	node bench/video.mjs
 	node bench/lighthouse.mjs
 
 clean:
