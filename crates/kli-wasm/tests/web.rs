@@ -466,10 +466,16 @@ fn batch_errors_name_the_argument_and_element() {
         kli_batch(&starts, &params, f64s(&[0.0; 8])),
         "out must hold 4 numbers per t value",
     );
+    // A plain array is read (issue 16: three.js's and glTF's arrays are taken as they are), so
+    // one of 4 numbers is checked against the others' length; a string is refused by type.
     let plain: Array = [1.0, 0.0, 0.0, 0.0].iter().map(|&v| JsValue::from(v)).collect();
     expect_error(
         api::slerp_batch(&plain, &f64s(&ends), &f64s(&params), &out(), None),
-        "starts must be a Float64Array (got an array of length 4)",
+        "starts must hold 4 numbers per s value: 20000 for 5000 values (got 4)",
+    );
+    expect_error(
+        api::slerp_batch(&"abcd".into(), &f64s(&ends), &f64s(&params), &out(), None),
+        "starts must be a typed array or an array of numbers (got \"abcd\", a string)",
     );
     params[4321] = -1.0;
     expect_error(
