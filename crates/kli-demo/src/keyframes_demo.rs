@@ -444,11 +444,13 @@ impl KeyframesDemo {
             Entry { mark: Mark::Line(INK, 2.5, &[2.0, 3.0]), label: NAMES[2] },
             Entry { mark: Mark::Disc(Some("#ffffff"), INK), label: "k0, k1, …: the keys" },
         ];
-        let note = self
-            .hidden_turn()
-            .map(|i| format!("k{i} → k{}: turns about the body's x-axis: not seen here", i + 1));
-        let v = view.viewport;
-        draw_legend(pen, (v.left + 4.0, v.top + v.height - 4.0), &entries, note.as_deref());
+        draw_legend(pen, view.viewport, &entries, None);
+        // Along the top, where it has the figure's whole width.
+        if let Some(i) = self.hidden_turn() {
+            let note = format!("k{i} → k{}: turns about the body's x-axis: not seen here", i + 1);
+            let v = view.viewport;
+            pen.text(&note, (v.left + 8.0, v.top + 12.0), MUTED, 11.0, "left");
+        }
     }
 
     /// The first pair of consecutive keys that differ (by more than 0.5°) but have the same

@@ -2,6 +2,7 @@
 //! curve and mark is, drawn in the figure itself (so in its SVG, PNG and video too), labels that
 //! stay clear of each other, and a note where the figure cannot show something.
 
+use crate::camera::Viewport;
 use crate::palette::{INK, MUTED};
 use crate::pen::Pen;
 
@@ -23,14 +24,11 @@ pub struct Entry<'a> {
 /// The font size of legends and notes (before the pen's text scale).
 const SIZE: f64 = 11.0;
 
-/// Draws `entries` in a box whose bottom-left corner is `(left, bottom)`, one a line, then
-/// `note` (muted, below them) if any; returns the box's height.
-pub fn draw_legend(
-    pen: &Pen,
-    (left, bottom): (f64, f64),
-    entries: &[Entry],
-    note: Option<&str>,
-) -> f64 {
+/// Draws `entries` in a box at the bottom left of `area`, one a line, then `note` (muted,
+/// below them) if any. A legend that would cover more than 60% of the area's width or 40% of
+/// its height (a thumbnail, a large text scale on a small figure) is left out: it would hide
+/// the figure it explains. Returns whether it was drawn.
+pub fn draw_legend(pen: &Pen, area: &Viewport, entries: &[Entry], note: Option<&str>) -> bool {
     let scale = pen.text_scale();
     let line = 15.0 * scale;
     let swatch = 22.0 * scale.sqrt();
@@ -39,6 +37,10 @@ pub fn draw_legend(
     let widths = entries.iter().map(|e| swatch + 6.0 + pen.text_width(e.label, SIZE));
     let note_width = note.map_or(0.0, |n| pen.text_width(n, SIZE));
     let width = widths.fold(note_width, f64::max) + 10.0;
+    if width > 0.6 * area.width || height > 0.4 * area.height {
+        return false;
+    }
+    let (left, bottom) = (area.left + 4.0, area.top + area.height - 4.0);
     let top = bottom - height;
     pen.alpha(0.88);
     let corners = [(left, top), (left + width, top), (left + width, bottom), (left, bottom)];
@@ -57,7 +59,7 @@ pub fn draw_legend(
         let y = top + 3.0 + (entries.len() as f64 + 0.5) * line;
         pen.text(note, (left + 5.0, y), MUTED, SIZE, "left");
     }
-    height
+    true
 }
 
 /// The width of [`draw_legend_row`]'s row.

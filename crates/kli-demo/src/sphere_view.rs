@@ -108,9 +108,8 @@ fn draw_key(view: &View, moments: bool) {
             label: "Table 1's times (the paper's)",
         });
     }
-    let v = view.viewport;
     let note = Some("KLI and SLERP: one arc, two speeds");
-    draw_legend(view.pen, (v.left + 4.0, v.top + v.height - 4.0), &entries, note);
+    draw_legend(view.pen, view.viewport, &entries, note);
 }
 
 /// The half of the grid behind the sphere, faint (alpha left at 0.35 for what follows).

@@ -45,8 +45,7 @@ pub fn draw_swarm_sphere(pen: &Pen, viewport: &Viewport, camera: &Camera, points
         Entry { mark: Mark::Disc(Some("#ffffff"), KLI), label: "ringed: drawn as objects" },
     ];
     let note = Some("h(q) is where q sends the body's x-axis");
-    let v = viewport;
-    draw_legend(pen, (v.left + 4.0, v.top + v.height - 4.0), &entries, note);
+    draw_legend(pen, viewport, &entries, note);
 }
 
 /// The first oscillators as whole objects in a row, each labelled.
