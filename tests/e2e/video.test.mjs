@@ -182,12 +182,38 @@ test("<kli-figure>.toVideo(): a WebM of the figure, its frame count, and the GIF
       const figure = document.querySelector("kli-figure");
       await new Promise((resolve) => setTimeout(resolve, 300));
       const { blob, name, frames } = await figure.toVideo({ format: "webm", size: "720p", fps: 30, seconds: 0.5 });
-      return { name, frames, type: blob.type, size: blob.size, svg: figure.toSvg(1).startsWith("<svg") };
+      // Whatever a program passes ends in a clear Error.
+      const refused = [];
+      for (const options of [{ format: "avi" }, { size: "4k" }, { fps: 0 }, { seconds: 1e9 }, { from: 5, to: 1 }, { fps: NaN }]) {
+        refused.push(await figure.toVideo(options).then(() => "accepted", (e) => e.message));
+      }
+      return { name, frames, type: blob.type, size: blob.size, svg: figure.toSvg(1).startsWith("<svg"), refused };
     });
+    assert.deepEqual(result.refused, [
+      "kli video: format must be one of mp4, webm, gif (got avi)",
+      "kli video: size must be one of 720p, 1080p (got 4k)",
+      "kli video: fps must be a number from 1 to 120 (got 0)",
+      "kli video: the length must be from 0.1 to 600 seconds (got 1000000000)",
+      `kli video: the times must satisfy 0 ≤ from < to ≤ 11.66`,
+      "kli video: fps must be a number from 1 to 120 (got NaN)",
+    ]);
     assert.equal(result.frames, 15);
     assert.match(result.name, /^kli-\w+-720p30\.webm$/);
     assert.equal(result.type, "video/webm");
     assert.ok(result.size > 1000 && result.svg, JSON.stringify(result));
+    assert.deepEqual(real(problems), []);
+  } finally {
+    await context.close();
+  }
+});
+
+test("swarm page: a run that keeps its own time is recorded forward from now (no time range), frames = rate × length", async () => {
+  const { page, context, problems } = await open("swarm.html?n=60&seed=4");
+  try {
+    assert.equal(await page.locator('[name="video-from"]').count(), 0, "no time range for a swarm");
+    const saved = await saveVideo(page, { format: "webm", size: "720p", fps: 30, seconds: 0.4 });
+    assert.equal(saved.name, "kli-swarm-60-oscillators-720p30.webm");
+    assert.match(await saved.status(), /: 12 frames,/);
     assert.deepEqual(real(problems), []);
   } finally {
     await context.close();

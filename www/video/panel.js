@@ -35,6 +35,28 @@ export function frameTimes(from, to, seconds, fps) {
 }
 
 /**
+ * What is wrong with a clip's choice, or "" (every choice a program can make ends in a clear
+ * Error, not a trap or an endless encoding).
+ * @param {Source} source
+ * @param {{ format: string, size: string, fps: number, views: readonly string[], from?: number, to?: number, seconds: number }} c
+ */
+export function refusal(source, c) {
+  const span = source.span();
+  const from = c.from ?? span?.[0], to = c.to ?? span?.[1];
+  if (!Object.hasOwn(FORMATS, c.format)) return `format must be one of ${Object.keys(FORMATS).join(", ")} (got ${String(c.format)})`;
+  if (!Object.hasOwn(SIZES, c.size)) return `size must be one of ${Object.keys(SIZES).join(", ")} (got ${String(c.size)})`;
+  if (!(c.fps >= 1 && c.fps <= 120)) return `fps must be a number from 1 to 120 (got ${String(c.fps)})`;
+  if (!(c.seconds >= 0.1 && c.seconds <= 600)) return `the length must be from 0.1 to 600 seconds (got ${String(c.seconds)})`;
+  if (!Array.isArray(c.views) || c.views.length === 0 || !c.views.every((v) => source.views.includes(v))) {
+    return `the figures must be some of ${source.views.join(", ")}`;
+  }
+  if (span && !(Number.isFinite(from) && Number.isFinite(to) && /** @type {number} */ (from) >= span[0] && /** @type {number} */ (to) <= span[1] && /** @type {number} */ (from) < /** @type {number} */ (to))) {
+    return `the times must satisfy ${span[0]} ≤ from < to ≤ ${span[1].toFixed(2)}`;
+  }
+  return "";
+}
+
+/**
  * Records a clip.
  * @param {Source} source
  * @param {{ format: import("./encode.js").Format, size: import("./encode.js").Size, fps: number, views: readonly string[],
@@ -42,6 +64,8 @@ export function frameTimes(from, to, seconds, fps) {
  * @returns {Promise<{ blob: Blob, name: string, frames: number }>}
  */
 export async function record(source, choice) {
+  const problem = refusal(source, choice);
+  if (problem) throw new Error(`kli video: ${problem}`);
   const [width, height] = SIZES[choice.size];
   const fps = choice.format === "gif" ? GIF_RATE : choice.fps;
   const span = source.span();
@@ -123,14 +147,14 @@ export function videoPanel(container, source, download) {
   start.addEventListener("click", async () => {
     if (running) return;
     const chosen = [...section.querySelectorAll('input[name="video-view"]:checked')].map((i) => /** @type {HTMLInputElement} */ (i).value);
-    const seconds = Number(field("video-seconds").value);
-    const from = spanned ? Number(field("video-from").value) : undefined;
-    const to = spanned ? Number(field("video-to").value) : undefined;
-    const span = source.span();
-    const problem = chosen.length === 0 ? "choose at least one figure"
-      : !(seconds >= 0.1 && seconds <= 600) ? "the length must be from 0.1 to 600 seconds"
-      : span && !(Number.isFinite(from) && Number.isFinite(to) && /** @type {number} */ (from) >= span[0] && /** @type {number} */ (to) <= span[1] && /** @type {number} */ (from) < /** @type {number} */ (to))
-        ? `the times must satisfy ${span[0]} ≤ from < to ≤ ${span[1].toFixed(2)}` : "";
+    const choice = {
+      format: /** @type {import("./encode.js").Format} */ (field("video-format").value),
+      size: /** @type {import("./encode.js").Size} */ (field("video-size").value),
+      fps: Number(field("video-fps").value), views: chosen, seconds: Number(field("video-seconds").value),
+      from: spanned ? Number(field("video-from").value) : undefined,
+      to: spanned ? Number(field("video-to").value) : undefined,
+    };
+    const problem = chosen.length === 0 ? "choose at least one figure" : refusal(source, choice);
     if (problem) {
       status.textContent = `Cannot save the video: ${problem}.`;
       return;
@@ -144,10 +168,7 @@ export function videoPanel(container, source, download) {
     const began = performance.now();
     try {
       const { blob, name, frames } = await record(source, {
-        format: /** @type {import("./encode.js").Format} */ (field("video-format").value),
-        size: /** @type {import("./encode.js").Size} */ (field("video-size").value),
-        fps: Number(field("video-fps").value), views: chosen, from, to, seconds, signal: running.signal,
-        progress: (done, total) => (bar.value = done / total),
+        ...choice, signal: running.signal, progress: (done, total) => (bar.value = done / total),
       });
       download(name, blob);
       const took = ((performance.now() - began) / 1000).toFixed(1);
