@@ -253,8 +253,9 @@ export class KliFigure extends HTMLElement {
 
   /** The time a printed figure shows: `print-t`, else the figure's time now. */
   get printTime() {
-    const asked = this.getAttribute("print-t");
-    return asked === null ? Math.min(this.t, this.end) : Math.min(parseNumber(asked), this.end);
+    // A `print-t` that is not a number prints the time now, as no `print-t` does.
+    const asked = parseNumber(this.getAttribute("print-t") ?? "");
+    return Math.min(Number.isFinite(asked) ? asked : this.t, this.end);
   }
 
   /**

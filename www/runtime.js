@@ -382,8 +382,9 @@ export class Page {
       this.figures.scaleText(Number(select.value));
       this.requestDraw();
     });
-    const printAt = this.query.get("print");
-    wirePrinting(() => this.figures, () => (printAt === null ? this.t : parseNumber(printAt)), svgs);
+    // `?print=` that is not a number prints the time on show, as no `?print=` does.
+    const printAt = parseNumber(this.query.get("print") ?? "");
+    wirePrinting(() => this.figures, () => (Number.isFinite(printAt) ? printAt : this.t), svgs);
   }
 
   /** Loads the module, then shows the URL's state: the values the module refuses are shown

@@ -99,6 +99,17 @@ test("print: every figure of the page as its SVG at ?print=, the canvases hidden
   } finally {
     await context.close();
   }
+  // A ?print= that is no number prints the time on show.
+  const other = await open("?t=5&print=soon");
+  try {
+    await other.page.evaluate(() => dispatchEvent(new Event("beforeprint")));
+    const hopf = await other.page.evaluate(() => Array.from(document.querySelectorAll(".print-figure svg"))
+      .find((svg) => /Hopf/.test(svg.querySelector("title").textContent)).textContent);
+    assert.match(hopf, /t = 5\.00/);
+    assert.deepEqual(other.problems, []);
+  } finally {
+    await other.context.close();
+  }
 });
 
 test("a <kli-figure> whose script cannot run (module scripts from file://) says so in its box", async () => {
