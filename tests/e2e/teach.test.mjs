@@ -66,6 +66,19 @@ test("text size: ?text=2 doubles every label, the page's choice sets it back, an
     assert.equal(await size(), 12);
     await page.locator('select[name="text-size"]').selectOption("3");
     assert.equal(await size(), 36);
+    // The plots' margins grow with the text: at 2× every right-aligned tick label (0.56 em a
+    // character, the SVG's own estimate) still starts inside the figure.
+    await page.locator('select[name="text-size"]').selectOption("2");
+    const ticks = await page.evaluate(async () => {
+      const demo = await import("./pkg/kli_demo.js");
+      const run = new demo.Demo([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]);
+      const svg = run.toSvg("plots", { width: 1200, height: 300, textScale: 2 });
+      run.free();
+      const doc = new DOMParser().parseFromString(svg, "image/svg+xml");
+      return Array.from(doc.querySelectorAll('text[text-anchor="end"]'), (t) =>
+        Number(t.getAttribute("x")) - 0.56 * Number(t.getAttribute("font-size")) * t.textContent.length);
+    });
+    assert.ok(ticks.length > 10 && ticks.every((left) => left >= 0), ticks.join(", "));
     assert.deepEqual(problems, []);
   } finally {
     await context.close();

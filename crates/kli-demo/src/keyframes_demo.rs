@@ -18,7 +18,7 @@ use crate::legend::{Entry, Mark, draw_legend, draw_legend_row, grouped_labels, l
 use crate::object_view::{draw_object, object_camera};
 use crate::palette::{INK, KLI, MUTED, SLERP};
 use crate::pen::Pen;
-use crate::plots::{Panel, trim};
+use crate::plots::{Panel, inset, trim};
 use crate::provenance::{Provenance, Value};
 use crate::sphere_view::{Side, View, draw_globe, draw_grid_back, draw_grid_front, grid};
 
@@ -478,11 +478,13 @@ impl KeyframesDemo {
             let largest = self.series[..2].iter().flat_map(&values).fold(0.0_f64, f64::max);
             let top_value = largest.max(1e-9) * 1.08;
             let (col, row) = if wide { (index as f64, 0.0) } else { (0.0, index as f64) };
+            let area = (col * cell_w, row * cell_h, cell_w, cell_h);
+            let (left, top, width, height) = inset(area, pen.text_scale(), 52.0);
             let panel = Panel {
-                left: col * cell_w + 52.0,
-                top: row * cell_h + 30.0,
-                width: (cell_w - 76.0).max(10.0),
-                height: (cell_h - 58.0).max(10.0),
+                left,
+                top,
+                width,
+                height,
                 x_min: start,
                 x_max: end,
                 y_min: 0.0,
@@ -505,7 +507,7 @@ impl KeyframesDemo {
                     // curves reach 1/1.08 of its height).
                     let room = panel.width - pen.text_width(title, 12.5) - 12.0;
                     let y = if legend_row_width(pen, &entries) <= room {
-                        panel.top - 14.0
+                        panel.top - 14.0 * pen.text_scale()
                     } else {
                         panel.top + 8.0 * pen.text_scale()
                     };

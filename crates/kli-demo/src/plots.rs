@@ -31,7 +31,9 @@ impl Panel {
     /// The title, the y ticks given, x ticks at a nice step, the axes, and `x_label` at the end
     /// of the x axis.
     pub fn frame_with(&self, pen: &Pen, title: &str, y_ticks: &[(f64, String)], x_label: &str) {
-        pen.text(title, (self.left, self.top - 14.0), INK, 12.5, "left");
+        // Offsets from the axes grow with the text, as the margins do (see `inset`).
+        let s = pen.text_scale();
+        pen.text(title, (self.left, self.top - 14.0 * s), INK, 12.5, "left");
         for (y, label) in y_ticks {
             let (_, py) = self.at(0.0, *y);
             pen.line((self.left, py), (self.left + self.width, py), GRID, 1.0, &[]);
@@ -42,7 +44,7 @@ impl Panel {
         while x <= self.x_max + 1e-9 * (self.x_max - self.x_min).abs() && step > 0.0 {
             let (px, py) = self.at(x, self.y_min);
             pen.line((px, py), (px, py + 4.0), MUTED, 1.0, &[]);
-            pen.text(&trim(x), (px, py + 12.0), MUTED, 10.5, "center");
+            pen.text(&trim(x), (px, py + 12.0 * s), MUTED, 10.5, "center");
             x += step;
         }
         pen.line(
@@ -53,7 +55,7 @@ impl Panel {
             &[],
         );
         pen.line((self.left, self.top), (self.left, self.top + self.height), MUTED, 1.0, &[]);
-        let end = (self.left + self.width + 8.0, self.top + self.height);
+        let end = (self.left + self.width + 8.0 * s, self.top + self.height);
         pen.text(x_label, end, MUTED, 11.0, "center");
     }
 
@@ -89,13 +91,30 @@ fn log10_floor(values: &[f64], floor: f64) -> impl Iterator<Item = f64> + '_ {
     values.iter().map(move |&v| if v > 0.0 { v.log10().max(floor) } else { floor })
 }
 
-/// The plotting rectangle `(left, top, width, height)` of plot `index` (0 distance, 1 time warp,
-/// 2 drift) in a canvas of `(width, height)`: side by side when wide, stacked when narrow.
-pub fn plot_area(index: usize, width: f64, height: f64) -> (f64, f64, f64, f64) {
+/// A rectangle `(left, top, width, height)` in CSS pixels.
+pub type Rect = (f64, f64, f64, f64);
+
+/// The plotting rectangle inside a plot's cell: `left_margin` for the tick labels, 30 above for
+/// the title, 24 right, 28 below for the axis labels, all grown with the text `scale` (so
+/// projector-sized labels stay inside the figure).
+pub fn inset((left, top, width, height): Rect, scale: f64, left_margin: f64) -> Rect {
+    let right = (left_margin + 24.0) * scale;
+    (
+        left + left_margin * scale,
+        top + 30.0 * scale,
+        (width - right).max(10.0),
+        (height - 58.0 * scale).max(10.0),
+    )
+}
+
+/// The plotting rectangle of plot `index` of three (0 distance, 1 time warp, 2 drift; the
+/// swarm's three too) in a canvas of `(width, height)`: side by side when wide, stacked when
+/// narrow, at text `scale`.
+pub fn plot_area(index: usize, width: f64, height: f64, scale: f64) -> Rect {
     let wide = width >= 2.0 * height;
     let (cell_w, cell_h) = if wide { (width / 3.0, height) } else { (width, height / 3.0) };
     let (col, row) = if wide { (index as f64, 0.0) } else { (0.0, index as f64) };
-    (col * cell_w + 46.0, row * cell_h + 30.0, (cell_w - 70.0).max(10.0), (cell_h - 58.0).max(10.0))
+    inset((col * cell_w, row * cell_h, cell_w, cell_h), scale, 46.0)
 }
 
 /// The time axis of every plot ends a little past both `T` and `T*` (and spans at least 1, so
@@ -108,7 +127,7 @@ pub fn time_axis_end(scene: &Scene) -> f64 {
 pub fn draw_plots(pen: &Pen, width: f64, height: f64, scene: &Scene) {
     let x_max = time_axis_end(scene);
     let cell = |i: usize, y_min: f64, y_max: f64| {
-        let (left, top, width, height) = plot_area(i, width, height);
+        let (left, top, width, height) = plot_area(i, width, height, pen.text_scale());
         Panel { left, top, width, height, x_min: 0.0, x_max, y_min, y_max }
     };
     draw_distance(pen, scene, |low| cell(0, low, 0.5));
@@ -179,7 +198,7 @@ fn draw_drift(pen: &Pen, scene: &Scene, panel: impl Fn(f64) -> Panel) {
 pub fn draw_plot_cursors(pen: &Pen, width: f64, height: f64, scene: &Scene, t: f64) {
     let x_max = time_axis_end(scene);
     for i in 0..3 {
-        let (left, top, w, h) = plot_area(i, width, height);
+        let (left, top, w, h) = plot_area(i, width, height, pen.text_scale());
         let x = left + t.max(0.0).min(x_max) / x_max * w;
         pen.line((x, top), (x, top + h), INK, 1.0, &[2.0, 3.0]);
     }

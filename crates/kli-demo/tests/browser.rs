@@ -104,7 +104,7 @@ fn time_warp_plot_follows_the_closed_form() {
     let scene = paper_scene();
     let pen = Pen::begin(&ctx, width, height, 1.0, "#ffffff");
     draw_plots(&pen, width, height, &scene);
-    let (left, top, w, h) = plot_area(1, width, height);
+    let (left, top, w, h) = plot_area(1, width, height, 1.0);
     let x_max = time_axis_end(&scene);
     // s(t) = 1 − φ(t)/φ0 with tan(φ/2) = tan(π/6) e^−t: at t = 2, computed here.
     let phi0 = std::f64::consts::FRAC_PI_3;
@@ -126,7 +126,7 @@ fn time_warp_plot_follows_the_closed_form() {
     assert!((mean - expected_y).abs() < 2.0, "curve at y = {mean}, expected {expected_y}");
     // The time cursor at t = 6 on the distance plot: a dark dotted line at the computed x.
     draw_plot_cursors(&Pen::over(&ctx, 1.0), width, height, &scene, 6.0);
-    let (left, top, w, h) = plot_area(0, width, height);
+    let (left, top, w, h) = plot_area(0, width, height, 1.0);
     let x = left + 6.0 / x_max * w;
     // A 1 px antialiased line on a fractional x: look one pixel either side.
     let darkened =
