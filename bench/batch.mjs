@@ -11,15 +11,13 @@ import { performance } from "node:perf_hooks";
 import { Quaternion } from "three";
 import { quat } from "gl-matrix";
 import { Float64Buffer, initSync, kli, kliExactBatch, kliSample, nlerpBatch, slerpBatch } from "../pkg/kli.js";
-import { previous } from "./previous.mjs";
+import { load, previous } from "./previous.mjs";
 
 initSync({ module: readFileSync(new URL("../pkg/kli_bg.wasm", import.meta.url)) });
-// Each reference's own module instance (a query string makes it a separate ES module).
+// Each reference's own module instance.
 const references = [];
 for (const { name, commit, dir } of previous()) {
-  const module = await import(`${dir}/kli.js?${commit}`);
-  module.initSync({ module: readFileSync(`${dir}/kli_bg.wasm`) });
-  references.push({ name: `${name}, ${commit}`, module });
+  references.push({ name: `${name}, ${commit}`, module: await load(dir, "kli", commit) });
 }
 
 const n = Number(process.argv[2] ?? 1e6);

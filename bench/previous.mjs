@@ -4,7 +4,7 @@
 // (`make pkg`, using this checkout's node_modules/.bin for wasm-opt); its pkg/ is kept in
 // target/previous/<commit>/, so a commit is built once (about 3 minutes on 2 cores).
 //   node bench/previous.mjs            builds what is missing, prints the directories
-//   import { previous } from "./previous.mjs"   → [{ name, commit, dir }]
+//   import { previous, load } from "./previous.mjs"   → [{ name, commit, dir }], an entry of one
 import { execFileSync } from "node:child_process";
 import { existsSync, mkdirSync, readFileSync, writeFileSync, cpSync, rmSync } from "node:fs";
 import { join } from "node:path";
@@ -32,6 +32,14 @@ function build(commit) {
     execFileSync("git", ["worktree", "remove", "--force", work], { cwd: root, stdio: "ignore" });
   }
   return join(dir, "pkg");
+}
+
+/** An entry (`kli`, `swarm`, `spline`) of the package in `dir`, initialised: its own module
+ *  instance (the query string `tag` makes it a separate ES module beside this build's). */
+export async function load(dir, entry, tag = dir) {
+  const module = await import(`${dir}/${entry}.js?${tag}`);
+  module.initSync({ module: readFileSync(join(dir, `${entry}_bg.wasm`)) });
+  return module;
 }
 
 /** Every reference, built if need be: `{ name, commit, dir }`. */

@@ -6,20 +6,13 @@
 //   - the largest step of ω̇ between evaluations 1e-4 apart, over its largest |ω̇|: at most 1e-2.
 // SciPy runs in a virtual environment the bench makes itself (bench/python.mjs).
 //   node bench/smoothness.mjs
-import { readFileSync } from "node:fs";
-import { join } from "node:path";
 import { bending, grid, randomKeys, stepTimes, steps, uniform } from "./measures.mjs";
-import { previous } from "./previous.mjs";
+import { load, previous } from "./previous.mjs";
 import { SCIPY, python, runPython } from "./python.mjs";
 
-const load = async (dir) => {
-  const module = await import(join(dir, "spline.js"));
-  module.initSync({ module: readFileSync(join(dir, "spline_bg.wasm")) });
-  return module;
-};
-const current = await load(new URL("../pkg/", import.meta.url).pathname);
+const current = await load(new URL("../pkg", import.meta.url).pathname, "spline");
 const release = previous()[0];
-const old = await load(release.dir);
+const old = await load(release.dir, "spline");
 
 // 24 sets: 6 and 10 keys, steps of 20–120°, even times and uneven (spans 0.4–1.6).
 const sets = [];

@@ -9,11 +9,10 @@ import { QuaternionKeyframeTrack } from "three";
 import { quat } from "gl-matrix";
 import { initSync, kliSpline, slerpSpline, squadSpline } from "../pkg/spline.js";
 import { bending, grid, randomKeys, uniform } from "./measures.mjs";
-import { previous } from "./previous.mjs";
+import { load, previous } from "./previous.mjs";
 
 const release = previous()[0];
-const old = await import(`${release.dir}/spline.js`);
-old.initSync({ module: readFileSync(`${release.dir}/spline_bg.wasm`) });
+const old = await load(release.dir, "spline");
 
 initSync({ module: readFileSync(new URL("../pkg/spline_bg.wasm", import.meta.url)) });
 const rounds = Number(process.argv[2] ?? 9);

@@ -75,14 +75,20 @@ export class Figures {
    * @returns {[Name, string][]}
    */
   svgs(t, svgs = {}) {
-    const figure = this.figure;
-    if (!figure) return [];
     return /** @type {Name[]} */ (Object.keys(this.canvases)).flatMap((name) => {
       const frame = this.frame(name, t);
-      if (!frame) return [];
-      const own = svgs[name];
-      return [[name, own ? own(frame) : figure.toSvg(name, frame)]];
+      return frame && this.figure ? [[name, this.svgOf(name, frame, svgs[name])]] : [];
     });
+  }
+
+  /**
+   * View `name` at `frame` as an SVG document: the module's, or `own`'s for a view the page draws.
+   * @param {Name} name
+   * @param {Frame} frame
+   * @param {(frame: Frame) => string} [own]
+   */
+  svgOf(name, frame, own) {
+    return own ? own(frame) : /** @type {Figure} */ (this.figure).toSvg(name, frame);
   }
 
   /** Turns the sphere views by (azimuth, elevation) radians. */
@@ -204,7 +210,7 @@ export class Figures {
     const frame = this.frame(name, t);
     if (!figure || !frame) throw new Error(`the ${name} view is not laid out`);
     return saveAs(file, format, {
-      svg: () => (svg ? svg(frame) : figure.toSvg(name, frame)),
+      svg: () => this.svgOf(name, frame, svg),
       png: () => png(frame, (ctx, ratio) => this.paint(name, ctx, { ...frame, pixelRatio: ratio })),
     });
   }

@@ -118,24 +118,38 @@ fn jacobian(theta: DVec3) -> DMat3 {
     DMat3::IDENTITY - c * k1 + c * c * k2
 }
 
-/// `N(θ, θ') = (dJ/ds) θ'`, with `φ' = θ·θ'/φ`.
-fn nonlinear(theta: DVec3, dtheta: DVec3) -> DVec3 {
-    let (dk1, dk2) = dk12(theta.length());
-    let (_, k2) = k12(theta.length());
-    let cp = theta.cross(dtheta);
-    theta.dot(dtheta) * (-dk1 * cp + dk2 * theta.cross(cp)) + k2 * dtheta.cross(cp)
+/// A piece's end rotation vector `θ = Δ` with the coefficients of `N` at it, computed once: the
+/// Newton steps evaluate `N` and its derivative there many times.
+struct Turn {
+    theta: DVec3,
+    k2: f64,
+    /// `[θ]×`
+    cross: DMat3,
+    /// `A = −(k₁'/φ)[θ]× + (k₂'/φ)[θ]×²`
+    a: DMat3,
 }
 
-/// `∂N(θ, v)/∂v` for `N(θ, v) = (θ·v) A v + k₂ v × (θ × v)`, `A = −(k₁'/φ)[θ]× + (k₂'/φ)[θ]×²`.
-fn nonlinear_derivative(theta: DVec3, v: DVec3) -> DMat3 {
-    let (dk1, dk2) = dk12(theta.length());
-    let (_, k2) = k12(theta.length());
-    let c = cross_matrix(theta);
-    let a = c * (-dk1) + c * c * dk2;
-    let outer = DMat3::from_cols(a * v * theta.x, a * v * theta.y, a * v * theta.z);
-    // d/dv [v × (θ × v)] e = e × (θ × v) + v × (θ × e)
-    let cross = cross_matrix(theta.cross(v)) * -1.0 + cross_matrix(v) * c;
-    outer + a * theta.dot(v) + cross * k2
+impl Turn {
+    fn new(theta: DVec3) -> Self {
+        let (dk1, dk2) = dk12(theta.length());
+        let (_, k2) = k12(theta.length());
+        let cross = cross_matrix(theta);
+        Turn { theta, k2, cross, a: cross * (-dk1) + cross * cross * dk2 }
+    }
+
+    /// `N(θ, v) = (dJ/ds) v = (θ·v) A v + k₂ v × (θ × v)`, with `φ' = θ·v/φ`.
+    fn n(&self, v: DVec3) -> DVec3 {
+        self.theta.dot(v) * (self.a * v) + self.k2 * v.cross(self.theta.cross(v))
+    }
+
+    /// `∂N(θ, v)/∂v`.
+    fn dn(&self, v: DVec3) -> DMat3 {
+        let (theta, a) = (self.theta, self.a);
+        let outer = DMat3::from_cols(a * v * theta.x, a * v * theta.y, a * v * theta.z);
+        // d/dv [v × (θ × v)] e = e × (θ × v) + v × (θ × e)
+        let cross = cross_matrix(theta.cross(v)) * -1.0 + cross_matrix(v) * self.cross;
+        outer + a * theta.dot(v) + cross * self.k2
+    }
 }
 
 /// Solves `lower_j x_{j−1} + diagonal_j x_j + upper_j x_{j+1} = rhs_j` (block Thomas).
@@ -182,6 +196,7 @@ impl RotvecCubic {
             .collect();
         let jac: Vec<DMat3> = delta.iter().map(|&d| jacobian(d)).collect();
         let inv: Vec<DMat3> = jac.iter().map(|j| j.inverse()).collect();
+        let turns: Vec<Turn> = delta.iter().map(|&d| Turn::new(d)).collect();
 
         // Rows `F_j = lower_j ω_{j−1} + diagonal_j ω_j + upper_j ω_{j+1} + N_j − rhs_j = 0`, with
         // `N_j = N(Δ_{j−1}, J(Δ_{j−1})⁻¹ ω_j)`, solved by Newton: `N_j`'s derivative joins the
@@ -209,8 +224,7 @@ impl RotvecCubic {
                 .map(|j| {
                     let mut f = weight(j) * rates[j] - rhs[j];
                     if j > 0 {
-                        f += lower[j] * rates[j - 1]
-                            + nonlinear(delta[j - 1], inv[j - 1] * rates[j]);
+                        f += lower[j] * rates[j - 1] + turns[j - 1].n(inv[j - 1] * rates[j]);
                     }
                     if j < n - 1 {
                         f += upper[j] * rates[j + 1];
@@ -231,7 +245,7 @@ impl RotvecCubic {
                     if j == 0 {
                         return d;
                     }
-                    d + nonlinear_derivative(delta[j - 1], inv[j - 1] * rates[j]) * inv[j - 1]
+                    d + turns[j - 1].dn(inv[j - 1] * rates[j]) * inv[j - 1]
                 })
                 .collect();
             let minus_f: Vec<DVec3> = f.iter().map(|v| -*v).collect();
@@ -330,13 +344,13 @@ mod tests {
             let d = 1e-5;
             let numeric =
                 (jacobian(theta + d * dtheta) - jacobian(theta - d * dtheta)) * dtheta / (2.0 * d);
-            let n = nonlinear(theta, dtheta);
+            let turn = Turn::new(theta);
+            let n = turn.n(dtheta);
             assert!((numeric - n).length() < 1e-8, "{theta}: {numeric} vs {n}");
             // ∂N/∂v, by central differences of N along each axis.
-            let derivative = nonlinear_derivative(theta, dtheta);
+            let derivative = turn.dn(dtheta);
             for (axis, e) in [DVec3::X, DVec3::Y, DVec3::Z].into_iter().enumerate() {
-                let numeric = (nonlinear(theta, dtheta + d * e) - nonlinear(theta, dtheta - d * e))
-                    / (2.0 * d);
+                let numeric = (turn.n(dtheta + d * e) - turn.n(dtheta - d * e)) / (2.0 * d);
                 let column = derivative.col(axis);
                 assert!(
                     (numeric - column).length() < 1e-8,

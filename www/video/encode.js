@@ -69,25 +69,63 @@ export async function encode({ format, width, height, fps, frames, draw, progres
   canvas.height = height;
   const ctx = canvas.getContext("2d", { willReadFrequently: format === "gif" });
   if (!ctx) throw new Error("this browser cannot draw on a canvas");
-  const m = await codecs();
+  const sink = format === "gif" ? gifSink(await codecs(), ctx) : await videoSink(await codecs(), canvas, format, fps);
   const stop = () => {
     if (signal?.aborted) throw new DOMException("the video was cancelled", "AbortError");
   };
-  const yieldToPage = () => new Promise((resolve) => setTimeout(resolve));
-  if (format === "gif") {
-    const gif = m.GIFEncoder();
+  try {
     for (let k = 0; k < frames; k++) {
       stop();
       draw(ctx, k);
+      await sink.add(k);
+      progress?.(k + 1);
+      await new Promise((resolve) => setTimeout(resolve)); // the page's turn
+    }
+    stop();
+    return await sink.finish();
+  } catch (error) {
+    await sink.cancel();
+    throw error;
+  }
+}
+
+/**
+ * Where the frames go: `add(k)` takes the canvas as frame k.
+ * @typedef {{ add(k: number): Promise<void> | void, finish(): Promise<Blob>, cancel(): Promise<void> }} Sink
+ */
+
+/**
+ * An animated GIF: each frame quantised to 256 colours of its own.
+ * @param {Awaited<ReturnType<typeof codecs>>} m
+ * @param {CanvasRenderingContext2D} ctx
+ * @returns {Sink}
+ */
+function gifSink(m, ctx) {
+  const gif = m.GIFEncoder();
+  const { width, height } = ctx.canvas;
+  return {
+    add() {
       const { data } = ctx.getImageData(0, 0, width, height);
       const palette = m.quantize(data, 256);
       gif.writeFrame(m.applyPalette(data, palette), width, height, { palette, delay: 1000 / GIF_RATE });
-      progress?.(k + 1);
-      await yieldToPage();
-    }
-    gif.finish();
-    return new Blob([gif.bytes()], { type: FORMATS.gif.type });
-  }
+    },
+    async finish() {
+      gif.finish();
+      return new Blob([gif.bytes()], { type: FORMATS.gif.type });
+    },
+    async cancel() {},
+  };
+}
+
+/**
+ * An MP4 or WebM track through WebCodecs, muxed by mediabunny.
+ * @param {Awaited<ReturnType<typeof codecs>>} m
+ * @param {HTMLCanvasElement} canvas
+ * @param {"mp4" | "webm"} format
+ * @param {number} fps
+ * @returns {Promise<Sink>}
+ */
+async function videoSink(m, canvas, format, fps) {
   const { codec, type } = FORMATS[format];
   const output = new m.Output({
     format: format === "mp4" ? new m.Mp4OutputFormat({ fastStart: "in-memory" }) : new m.WebMOutputFormat(),
@@ -96,20 +134,12 @@ export async function encode({ format, width, height, fps, frames, draw, progres
   const source = new m.CanvasSource(canvas, { codec: /** @type {"avc" | "vp9"} */ (codec), bitrate: m.QUALITY_HIGH });
   output.addVideoTrack(source, { frameRate: fps });
   await output.start();
-  try {
-    for (let k = 0; k < frames; k++) {
-      stop();
-      draw(ctx, k);
-      await source.add(k / fps, 1 / fps);
-      progress?.(k + 1);
-      await yieldToPage();
-    }
-    stop();
-    await output.finalize();
-  } catch (error) {
-    await output.cancel().catch(() => {});
-    throw error;
-  }
-  const buffer = /** @type {ArrayBuffer} */ (output.target.buffer);
-  return new Blob([buffer], { type });
+  return {
+    add: (k) => source.add(k / fps, 1 / fps),
+    async finish() {
+      await output.finalize();
+      return new Blob([/** @type {ArrayBuffer} */ (output.target.buffer)], { type });
+    },
+    cancel: () => output.cancel().catch(() => {}),
+  };
 }

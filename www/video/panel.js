@@ -29,7 +29,7 @@ import { FORMATS, GIF_RATE, SIZES, encode, supported } from "./encode.js";
  * @param {number} seconds
  * @param {number} fps
  */
-export function frameTimes(from, to, seconds, fps) {
+function frameTimes(from, to, seconds, fps) {
   const frames = Math.max(2, Math.round(seconds * fps));
   return Array.from({ length: frames }, (_, k) => from + ((to - from) * k) / (frames - 1));
 }
@@ -47,7 +47,8 @@ export function refusal(source, c) {
   if (!Object.hasOwn(SIZES, c.size)) return `size must be one of ${Object.keys(SIZES).join(", ")} (got ${String(c.size)})`;
   if (!(c.fps >= 1 && c.fps <= 120)) return `fps must be a number from 1 to 120 (got ${String(c.fps)})`;
   if (!(c.seconds >= 0.1 && c.seconds <= 600)) return `the length must be from 0.1 to 600 seconds (got ${String(c.seconds)})`;
-  if (!Array.isArray(c.views) || c.views.length === 0 || !c.views.every((v) => source.views.includes(v))) {
+  if (Array.isArray(c.views) && c.views.length === 0) return "choose at least one figure";
+  if (!Array.isArray(c.views) || !c.views.every((v) => source.views.includes(v))) {
     return `the figures must be some of ${source.views.join(", ")}`;
   }
   if (span && !(Number.isFinite(from) && Number.isFinite(to) && /** @type {number} */ (from) >= span[0] && /** @type {number} */ (to) <= span[1] && /** @type {number} */ (from) < /** @type {number} */ (to))) {
@@ -69,23 +70,23 @@ export async function record(source, choice) {
   const [width, height] = SIZES[choice.size];
   const fps = choice.format === "gif" ? GIF_RATE : choice.fps;
   const span = source.span();
-  const times = span
-    ? frameTimes(choice.from ?? span[0], choice.to ?? span[1], choice.seconds, fps)
-    : Array.from({ length: Math.max(2, Math.round(choice.seconds * fps)) }, () => NaN);
+  // A run with a span: each frame at its own time; one that keeps its own: a frame's steps each.
+  const times = span ? frameTimes(choice.from ?? span[0], choice.to ?? span[1], choice.seconds, fps) : null;
+  const frames = times?.length ?? Math.max(2, Math.round(choice.seconds * fps));
   const title = source.title();
   const blob = await encode({
-    format: choice.format, width, height, fps, frames: times.length, signal: choice.signal,
-    progress: (done) => choice.progress?.(done, times.length),
+    format: choice.format, width, height, fps, frames, signal: choice.signal,
+    progress: (done) => choice.progress?.(done, frames),
     draw: (ctx, k) => {
-      if (!span && k > 0) source.advance?.();
-      const t = span ? times[k] : source.now();
+      if (!times && k > 0) source.advance?.();
+      const t = times ? times[k] : source.now();
       composeFrame(source.figures, ctx, width, height, t, {
         views: choice.views, title, caption: `t = ${t.toFixed(2)}`, textScale: source.textScale(),
       });
     },
   });
   const name = `${source.file()}-${choice.size}${fps}.${FORMATS[choice.format].extension}`;
-  return { blob, name, frames: times.length };
+  return { blob, name, frames };
 }
 
 /**
@@ -154,7 +155,7 @@ export function videoPanel(container, source, download) {
       from: spanned ? Number(field("video-from").value) : undefined,
       to: spanned ? Number(field("video-to").value) : undefined,
     };
-    const problem = chosen.length === 0 ? "choose at least one figure" : refusal(source, choice);
+    const problem = refusal(source, choice);
     if (problem) {
       status.textContent = `Cannot save the video: ${problem}.`;
       return;
