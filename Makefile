@@ -15,8 +15,8 @@ WASM_FEATURES := --enable-bulk-memory --enable-nontrapping-float-to-int --enable
                  --enable-mutable-globals --enable-reference-types --enable-multivalue --enable-simd
 RELEASE := target/$(TARGET)/release
 
-.PHONY: help setup setup-rust setup-node setup-browser pkg www single demo serve test lint test-native \
-        test-wasm-node test-wasm-portable test-wasm-browser test-package test-page bench clean
+.PHONY: help setup setup-rust setup-node setup-browser pkg www single demo serve test lint publish-check \
+        test-native test-wasm-node test-wasm-portable test-wasm-browser test-package test-page bench clean
 
 help:
 	@echo "make demo   build and serve the demo page at http://127.0.0.1:$(PORT)/"
@@ -54,13 +54,13 @@ setup-browser:
 # built with its feature alone, in a target directory of its own so every build stays cached.
 ENTRIES := swarm spline
 # What each build reads: a build runs again only when one of these is newer than its stamp, so
-# `make demo` serves at once when nothing changed (tests/js/build.test.mjs checks it).
+# `make demo` serves at once when nothing changed (tests/e2e/contract.test.mjs checks it).
 CORE_SOURCES := Cargo.toml Cargo.lock $(shell find src -name '*.rs')
 PKG_SOURCES := $(CORE_SOURCES) crates/kli-wasm/Cargo.toml $(shell find crates/kli-wasm/src -name '*.rs') \
                $(wildcard crates/kli-wasm/js/*) \
                scripts/package-json.mjs scripts/glue.mjs
 WWW_SOURCES := $(PKG_SOURCES) crates/kli-demo/Cargo.toml $(shell find crates/kli-demo/src -name '*.rs') \
-               scripts/pages.mjs www/pages.js www/video/codecs.js node_modules/.installed
+               scripts/pages.mjs www/pages.js node_modules/.installed
 pkg: setup-rust setup-node pkg/.built
 	@cmp -s README.md pkg/README.md || cp README.md pkg/
 pkg/.built: $(PKG_SOURCES)
@@ -85,32 +85,20 @@ pkg/.built: $(PKG_SOURCES)
 	done
 	@touch $@
 
+# The site: the pages' modules, the video codecs, and what the examples import, each a step of
+# its own with its own stamp; then scripts/pages.mjs writes the pages' bundles, modulepreload
+# links and the service worker's file list and cache name (a content hash).
+PAGES := $(shell node scripts/pages.mjs names)
+www: setup-rust setup-node pkg www/pkg/.built www/vendor/codecs.js www/examples/vendor/.built
+	node scripts/pages.mjs write
+
 # The pages' modules, one a page (the pages are listed in www/pages.js): a build of
 # crates/kli-demo with the page's feature `<page>-page`, bound to www/pkg/<page>_demo.js. One
 # target directory serves all three (cargo keeps each feature set's artifacts); each build is
-# bound right after it, before the next overwrites the .wasm. Then scripts/pages.mjs writes the
-# pages' modulepreload links and the service worker's file list and cache name (a content hash).
-PAGES := $(shell node scripts/pages.mjs names)
-www: setup-rust setup-node pkg www/pkg/.built
-	node scripts/pages.mjs write
+# bound right after it, before the next overwrites the .wasm.
 www/pkg/.built: $(WWW_SOURCES) pkg/.built
 	@test -n "$(PAGES)" || { echo "no pages: node scripts/pages.mjs names printed nothing"; exit 1; }
-	rm -rf www/pkg www/examples/vendor www/vendor
-	@# Saving a video (www/video/): mediabunny and gifenc, tree-shaken into one module, loaded
-	@# only when a video is saved.
-	esbuild www/video/codecs.js --bundle --format=esm --minify --log-level=warning '--banner:js=// @ts-nocheck' \
-	  --outfile=www/vendor/codecs.js
-	@# The examples import the package and three.js by name (an import map): both served locally.
-	mkdir -p www/examples/vendor/kli www/examples/vendor/three
-	cp pkg/kli.js pkg/kli_bg.wasm pkg/spline.js pkg/spline_bg.wasm pkg/three.js pkg/resample.js www/examples/vendor/kli/
-	@# reveal.js for the example deck (examples/slides.html), from the dev dependencies.
-	mkdir -p www/examples/vendor/reveal/theme
-	cp node_modules/reveal.js/dist/reveal.mjs www/examples/vendor/reveal/reveal.module.js
-	cp node_modules/reveal.js/dist/reveal.css www/examples/vendor/reveal/
-	cp node_modules/reveal.js/dist/theme/white.css www/examples/vendor/reveal/theme/
-	@# three.js as one minified module with its source map, as an app's bundler would serve it.
-	esbuild node_modules/three/build/three.module.js --bundle --format=esm --minify --sourcemap \
-	  --log-level=warning --outfile=www/examples/vendor/three/three.module.js
+	rm -rf www/pkg
 	for page in $(PAGES); do \
 	  cargo build --release -p kli-demo --lib --target $(TARGET) --no-default-features --features $$page-page; \
 	  wasm-bindgen --target web --out-dir www/pkg --out-name $${page}_demo $(RELEASE)/kli_demo.wasm; \
@@ -118,6 +106,26 @@ www/pkg/.built: $(WWW_SOURCES) pkg/.built
 	  wasm-opt -O3 $(WASM_FEATURES) www/pkg/$${page}_demo_bg.wasm -o www/pkg/$${page}_demo_bg.wasm; \
 	  echo "www/pkg/$${page}_demo_bg.wasm: $$(stat -c %s www/pkg/$${page}_demo_bg.wasm) bytes, $$(gzip -9c www/pkg/$${page}_demo_bg.wasm | wc -c) gzipped"; \
 	done
+	@touch $@
+
+# Saving a video (www/video/): mediabunny and gifenc, tree-shaken into one module, loaded only
+# when a video is saved.
+www/vendor/codecs.js: www/video/codecs.js node_modules/.installed
+	esbuild www/video/codecs.js --bundle --format=esm --minify --log-level=warning '--banner:js=// @ts-nocheck' \
+	  --outfile=$@
+
+# What the examples import by name through their import map, served locally: the package's
+# kli, kli/spline and kli/three; three.js as one minified module with its source map, as an
+# app's bundler would serve it; reveal.js for the example deck (examples/slides.html).
+www/examples/vendor/.built: pkg/.built node_modules/.installed
+	rm -rf www/examples/vendor
+	mkdir -p www/examples/vendor/kli www/examples/vendor/three www/examples/vendor/reveal/theme
+	cp pkg/kli.js pkg/kli_bg.wasm pkg/spline.js pkg/spline_bg.wasm pkg/three.js pkg/resample.js www/examples/vendor/kli/
+	esbuild node_modules/three/build/three.module.js --bundle --format=esm --minify --sourcemap \
+	  --log-level=warning --outfile=www/examples/vendor/three/three.module.js
+	cp node_modules/reveal.js/dist/reveal.mjs www/examples/vendor/reveal/reveal.module.js
+	cp node_modules/reveal.js/dist/reveal.css www/examples/vendor/reveal/
+	cp node_modules/reveal.js/dist/theme/white.css www/examples/vendor/reveal/theme/
 	@touch $@
 
 # Each page as one self-contained HTML file (scripts, style sheet and .wasm inlined) that works
@@ -132,8 +140,8 @@ demo: www
 test: lint test-native test-wasm-node test-wasm-portable test-package test-wasm-browser test-page
 
 # Formatting, clippy (native and wasm32), rustdoc, and the page's JavaScript against the
-# generated types: all without warnings.
-lint: setup-rust www
+# generated types: all without warnings; and both packages as they would be published.
+lint: setup-rust www publish-check
 	cargo fmt --all --check
 	cargo clippy --workspace --all-targets --all-features -- -D warnings
 	cargo clippy --workspace --exclude kli-bench --all-targets --all-features --target $(TARGET) -- -D warnings
@@ -142,6 +150,12 @@ lint: setup-rust www
 	done
 	RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --all-features --exclude kli-bench
 	tsc -p www/jsconfig.json
+
+# The Rust crate and the npm package, packed and checked as `cargo publish` and `npm publish`
+# would, without publishing (--allow-dirty: a working tree with changes may be checked too).
+publish-check: pkg
+	cargo publish --dry-run --allow-dirty --quiet -p kli-rotations
+	cd pkg && npm publish --dry-run --loglevel=error
 
 test-native:
 	cargo test --workspace

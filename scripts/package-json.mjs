@@ -142,9 +142,12 @@ const json = {
   sideEffects: false,
   keywords: ["quaternion", "rotation", "slerp", "interpolation", "kuramoto", "hopf", "wasm"],
 };
-// The repository's address comes from Cargo.toml's [workspace.package] `repository` when it is
-// set there (crates.io reads the same field); this repository has no public address yet.
+// The repository's address and the home page come from Cargo.toml's [workspace.package]
+// `repository` and `homepage` when they are set there (crates.io reads the same fields); this
+// repository has no public address yet.
 const repository = workspace.match(/^repository\s*=\s*"([^"]*)"/m)?.[1];
 if (repository) json.repository = { type: "git", url: `git+${repository.replace(/\.git$/, "")}.git` };
+const homepage = workspace.match(/^homepage\s*=\s*"([^"]*)"/m)?.[1] ?? repository;
+if (homepage) json.homepage = homepage;
 writeFileSync(at("pkg/package.json"), JSON.stringify(json, null, 2) + "\n");
 console.log(`pkg/package.json: ${json.name}@${json.version}${repository ? "" : " (no repository: set it in Cargo.toml)"}`);

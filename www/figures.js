@@ -1,21 +1,23 @@
 // @ts-check
 // A page's figures, for every page and <kli-figure>: its canvases sized to the pixels they cover,
-// the camera of its sphere views, and one drawing path through the module's figure interface
-// (`draw(view, ctx, frame, layer)`, `toSvg(view, frame)`: crates/kli-demo/src/figure.rs), with
-// still layers for the views whose picture only partly follows the time, and saving a view as
-// PNG or SVG.
+// the camera of its sphere views, and one drawing path through the run contract
+// (`views`, `draw(view, ctx, frame, layer)`, `toSvg(view, frame)`: crates/kli-demo/src/figure.rs),
+// each view drawn as its kind says (whole each frame, a kept still layer with the moving part
+// over it, or only when it changes), and saving a view as PNG or SVG.
 import { Camera } from "./camera.js";
 import { Canvases } from "./canvases.js";
 import { png, saveAs } from "./exports.js";
 
 /**
- * What the module's page classes (Demo, KeyframesDemo, SwarmDemo) have in common.
+ * What the module's page classes (Demo, KeyframesDemo, SwarmDemo) have in common for drawing.
  * @typedef {object} Figure
+ * @property {readonly { name: string, title: string, kind: Kind }[]} views
  * @property {(view: string, ctx: CanvasRenderingContext2D, frame: Frame, layer?: "whole" | "still" | "moving") => void} draw
  * @property {(view: string, frame: Frame) => string} toSvg
  */
 /** @typedef {{ width: number, height: number, pixelRatio: number, t: number, azimuth: number, elevation: number, textScale?: number }} Frame */
 /** @typedef {(ctx: CanvasRenderingContext2D, frame: Frame) => void} Painter a view the page draws itself */
+/** @typedef {"moving" | "layered" | "still"} Kind how a view follows the time */
 
 /**
  * @template {string} Name
@@ -23,16 +25,13 @@ import { png, saveAs } from "./exports.js";
 export class Figures {
   /**
    * @param {Record<Name, HTMLCanvasElement>} canvases a canvas for each view, by the view's name
-   * @param {object} [options]
-   * @param {readonly Name[]} [options.layered] views drawn as a still layer (copied) and a moving part over it
-   * @param {readonly Name[]} [options.still] views that do not follow the time (drawn when the run, size or camera changes)
-   * @param {Partial<Record<Name, Painter>>} [options.painters] views the page draws itself
+   * @param {Partial<Record<Name, Painter>>} [painters] views the page draws itself (drawn as still views)
    */
-  constructor(canvases, { layered = [], still = [], painters = {} } = {}) {
+  constructor(canvases, painters = {}) {
     this.canvases = canvases;
-    this.layeredViews = layered;
-    this.stillViews = still;
     this.painters = painters;
+    /** @type {Partial<Record<string, Kind>>} each view's kind, as the run says */
+    this.kinds = {};
     /** @type {Figure | null} */
     this.figure = null;
     this.camera = new Camera([0, 0]);
@@ -53,7 +52,13 @@ export class Figures {
   /** Shows a new run (a new module object): every still part is drawn again. */
   show(/** @type {Figure} */ figure) {
     this.figure = figure;
+    this.kinds = Object.fromEntries(figure.views.map(({ name, kind }) => [name, kind]));
     this.invalidate();
+  }
+
+  /** A view's kind: the run's word for it; a view the page draws itself is still. */
+  kind(/** @type {Name} */ name) {
+    return this.painters[name] ? "still" : this.kinds[name] ?? "moving";
   }
 
   /** After a change that the time does not explain (a new run, camera or size). */
@@ -131,11 +136,12 @@ export class Figures {
       if (!frame) continue;
       drawn = true;
       const ctx = context(this.canvases[name]);
-      if (this.stillViews.includes(name)) {
+      const kind = this.kind(name);
+      if (kind === "still") {
         if (this.stale.has(name)) this.paintLater(name, t);
         continue;
       }
-      if (this.layeredViews.includes(name)) this.layered(name, ctx, frame);
+      if (kind === "layered") this.layered(name, ctx, frame);
       else this.paint(name, ctx, frame);
       this.stale.delete(name);
     }

@@ -4,7 +4,7 @@
 // the module's KeyframesDemo (crates/kli-demo/src/keyframes_demo.rs); the timings use the
 // package's kliSpline, squadSpline and slerpSpline.
 import * as keyframes from "./pkg/keyframes_demo.js";
-import init, { defaultCamera, kliSpline, slerpSpline, squadSpline } from "./pkg/keyframes_demo.js";
+import { kliSpline, slerpSpline, squadSpline } from "./pkg/keyframes_demo.js";
 import { $ } from "./dom.js";
 import { timeTag } from "./exports.js";
 import { formatNumber, parseNumber } from "./numbers.js";
@@ -34,8 +34,7 @@ const KEY_FIELDS = ["key-ax", "key-ay", "key-az", "key-angle"];
 /** @type {Page<KeyframesState, keyframes.KeyframesDemo>} */
 const page = new Page({
   name: "keyframes",
-  init,
-  camera: defaultCamera,
+  module: keyframes,
   canvases: { objects: "#keyframes-objects", hopf: "#keyframes-hopf", plots: "#keyframes-plots" },
   form: "#keyframes-inputs",
   schema: KEYFRAMES.schema,
@@ -50,96 +49,97 @@ const page = new Page({
     const names = argument === "angle" ? ["key-angle"] : ["key-ax", "key-ay", "key-az"];
     return { output: "key", fields: names.map((name) => page.schema.field(name)) };
   },
-  span: (run) => [run.startTime, run.endTime],
-  readout: ({ run }, t) => (run ? `t = ${t.toFixed(2)} / ${run.endTime.toFixed(2)}` : ""),
-  data: { kind: "curves", file: (run) => `kli-keyframes-curves-${run.keys.length / 4}-keys` },
-  file: (run, view, t) => `kli-keyframes-${FILE_NAMES[view]}-${run.keys.length / 4}-keys-${timeTag(t)}`,
+  readout: (run, t) => `t = ${t.toFixed(2)} / ${run.span[1].toFixed(2)}`,
+  data: { kind: "curves", file: (run) => `kli-keyframes-curves-${keyCount(run)}-keys` },
+  file: (run, view, t) => `kli-keyframes-${FILE_NAMES[view]}-${keyCount(run)}-keys-${timeTag(t)}`,
   video: {
     views: ["objects", "hopf"],
-    title: (run) => `Through ${run.keys.length / 4} keys: the Kuramoto–Lohe chain, Squad and piecewise SLERP`,
-    file: (run) => `kli-keyframes-${run.keys.length / 4}-keys`,
+    title: (run) => `Through ${keyCount(run)} keys: the Kuramoto–Lohe chain, Squad and piecewise SLERP`,
+    file: (run) => `kli-keyframes-${keyCount(run)}-keys`,
   },
-  shown: (_, run, state) => {
+  shown: (host, run, state) => {
     $("#smoothness-value", HTMLOutputElement).textContent = String(state.smoothness);
     fillFigures(run, state);
-    fillKeyEditor(run);
+    fillKeyEditor(host, run);
   },
-  input: (page, name) => {
-    $("#smoothness-value", HTMLOutputElement).textContent = page.schema.field("smoothness").value;
-    if (name === "key" && page.run) fillKeyEditor(page.run);
-    else if (KEY_FIELDS.includes(name)) editKey(page);
+  input: (host, name) => {
+    $("#smoothness-value", HTMLOutputElement).textContent = host.field("smoothness").value;
+    if (name === "key" && host.run) fillKeyEditor(host, host.run);
+    else if (KEY_FIELDS.includes(name)) editKey(host);
     else return false;
     return true;
   },
-  wire: (page) => {
+  wire: (host) => {
     $("#random", HTMLButtonElement).addEventListener("click", () => {
-      const state = { keys: Array.from({ length: 6 }, randomQuaternion), times: [], smoothness: page.state.smoothness };
-      page.schema.fill(state);
-      page.rebuild(state);
+      host.apply({ keys: Array.from({ length: 6 }, randomQuaternion), times: [], smoothness: host.state.smoothness });
     });
     $("#add-key", HTMLButtonElement).addEventListener("click", () => {
-      const keys = page.state.keys;
+      const keys = host.state.keys;
       if (keys.length >= 10) return;
       // A new key a quarter turn about z from the last: [w, x, y, z] · (cos 45°, 0, 0, sin 45°).
       const [w, x, y, z] = keys[keys.length - 1];
       const c = Math.SQRT1_2;
-      withKeys([...keys, [c * (w - z), c * (x + y), c * (y - x), c * (z + w)].map((v) => Number(v.toFixed(4)))]);
+      withKeys(host, [...keys, [c * (w - z), c * (x + y), c * (y - x), c * (z + w)].map((v) => Number(v.toFixed(4)))]);
     });
     $("#remove-key", HTMLButtonElement).addEventListener("click", () => {
-      if (page.state.keys.length > 3) withKeys(page.state.keys.slice(0, -1));
+      if (host.state.keys.length > 3) withKeys(host, host.state.keys.slice(0, -1));
     });
   },
   grab: grabKey,
 });
+
+/** @typedef {import("./runtime.js").Host<KeyframesState, keyframes.KeyframesDemo>} Host */
+
+/** How many keys a run has. */
+const keyCount = (/** @type {keyframes.KeyframesDemo} */ run) => run.keys.length / 4;
 
 /** Keys as rows of 4 from the module's flat Float64Array. */
 const rows = (/** @type {Float64Array} */ flat) =>
   Array.from({ length: flat.length / 4 }, (_, i) => Array.from(flat.subarray(4 * i, 4 * i + 4), (c) => Number(c.toPrecision(6))));
 
 /** Rebuilds with new keys (the times kept only while their count still matches). */
-function withKeys(/** @type {number[][]} */ keys) {
-  const times = page.state.times.length === keys.length ? page.state.times : [];
-  const state = { keys, times, smoothness: page.state.smoothness };
-  page.schema.fill(state);
-  page.rebuild(state);
+function withKeys(/** @type {Host} */ host, /** @type {number[][]} */ keys) {
+  const times = host.state.times.length === keys.length ? host.state.times : [];
+  host.apply({ keys, times, smoothness: host.state.smoothness });
 }
 
 /** The key selector and the selected key's axis and angle. */
-function fillKeyEditor(/** @type {keyframes.KeyframesDemo} */ run) {
-  const select = /** @type {HTMLSelectElement} */ (page.schema.field("key"));
-  const count = run.keys.length / 4;
+function fillKeyEditor(/** @type {Host} */ host, /** @type {keyframes.KeyframesDemo} */ run) {
+  const select = /** @type {HTMLSelectElement} */ (host.field("key"));
+  const count = keyCount(run);
   const selected = Math.min(Number(select.value) || 0, count - 1);
   select.replaceChildren(...Array.from({ length: count }, (_, i) => new Option(`k${i}`, String(i))));
   select.value = String(selected);
   const [x, y, z, angle] = run.keyAxisAngle(selected);
-  [x, y, z, (angle * 180) / Math.PI].forEach((value, i) => (page.schema.field(KEY_FIELDS[i]).value = formatNumber(value)));
+  [x, y, z, (angle * 180) / Math.PI].forEach((value, i) => (host.field(KEY_FIELDS[i]).value = formatNumber(value)));
   $("#add-key", HTMLButtonElement).disabled = count >= 10;
   $("#remove-key", HTMLButtonElement).disabled = count <= 3;
 }
 
 /** The selected key replaced by the rotation its axis and angle fields give. */
-function editKey(/** @type {Page<KeyframesState, keyframes.KeyframesDemo>} */ page) {
-  const run = page.run;
+function editKey(/** @type {Host} */ host) {
+  const run = host.run;
   if (!run) return;
-  const index = Number(page.schema.field("key").value);
-  const [x, y, z, degrees] = KEY_FIELDS.map((name) => parseNumber(page.schema.field(name).value));
+  const index = Number(host.field("key").value);
+  const [x, y, z, degrees] = KEY_FIELDS.map((name) => parseNumber(host.field(name).value));
   try {
-    withKeys(rows(run.keysWithAxisAngle(index, new Float64Array([x, y, z]), (degrees * Math.PI) / 180)));
+    withKeys(host, rows(run.keysWithAxisAngle(index, new Float64Array([x, y, z]), (degrees * Math.PI) / 180)));
   } catch (error) {
     clearErrors(page.form);
-    page.showError(error);
+    host.showError(error);
   }
 }
 
 /**
  * A key's disc under the pointer (the nearest in front within 12 px) is grabbed: moving the
  * pointer then turns that key so that its Hopf point follows (once a frame).
+ * @param {Host} host
  * @param {number} x
  * @param {number} y
  */
-function grabKey(x, y) {
-  const run = page.run;
-  const frame = page.figures.frame("hopf", page.t);
+function grabKey(host, x, y) {
+  const run = host.run;
+  const frame = host.frame("hopf");
   if (!run || !frame) return null;
   const points = run.keyPoints(frame);
   let key = -1;
@@ -157,13 +157,13 @@ function grabKey(x, y) {
     pending = true;
     requestAnimationFrame(() => {
       pending = false;
-      const run = page.run;
-      const frame = page.figures.frame("hopf", page.t);
+      const run = host.run;
+      const frame = host.frame("hopf");
       if (!run || !frame) return;
       const moved = run.keysWithKeyAt(key, frame, to.x, to.y);
       if (moved.length) {
-        page.schema.field("key").value = String(key);
-        withKeys(rows(moved));
+        host.field("key").value = String(key);
+        withKeys(host, rows(moved));
       }
     });
   };
@@ -171,23 +171,25 @@ function grabKey(x, y) {
 
 let timing = 0;
 
-/** The table: the module's figures at once, and a moment after the last change (not on every
+/** The table: the run's measures at once, and a moment after the last change (not on every
  *  move of a dragged key) the solve and evaluation times, measured here. */
 function fillFigures(/** @type {keyframes.KeyframesDemo} */ run, /** @type {KeyframesState} */ state) {
-  const figures = run.figures;
+  const { curves, iterations, residual } = run.summary;
   const body = $("#figures tbody", HTMLTableSectionElement);
   body.replaceChildren();
-  ["Kuramoto–Lohe chain", "Squad", "piecewise SLERP"].forEach((name, i) => {
+  for (const curve of curves) {
     const row = body.insertRow();
-    const cells = [name, figures[4 * i].toExponential(1), figures[4 * i + 1].toFixed(3), figures[4 * i + 2].toFixed(3),
-      figures[4 * i + 3].toFixed(3), "…", "…"];
+    const cells = [curve.name, curve.keyError.toExponential(1), curve.largestJump.toFixed(3), curve.bending.toFixed(3),
+      curve.totalAngle.toFixed(3), "…", "…"];
     for (const text of cells) row.insertCell().textContent = text;
-  });
-  $("#solve", HTMLElement).textContent = `The chain: ${run.iterations} Newton steps to a residual of ${run.residual.toExponential(1)}; ` +
-    (figures[6] > 0 ? `its ∫|ω̇|² is ${(figures[2] / figures[6]).toFixed(3)} of Squad's.` :
-      `its ∫|ω̇|² is ${figures[2].toPrecision(3)}; Squad's is 0 (no turn between the keys), so there is no ratio.`);
+  }
+  const [chain, squad] = curves;
+  $("#solve", HTMLElement).textContent = `The chain: ${iterations} Newton steps to a residual of ${residual.toExponential(1)}; ` +
+    (squad.bending > 0 ? `its ∫|ω̇|² is ${(chain.bending / squad.bending).toFixed(3)} of Squad's.` :
+      `its ∫|ω̇|² is ${chain.bending.toPrecision(3)}; Squad's is 0 (no turn between the keys), so there is no ratio.`);
   clearTimeout(timing);
-  timing = setTimeout(() => fillTimes(run.startTime, run.endTime, state), 300);
+  const [start, end] = run.span;
+  timing = setTimeout(() => fillTimes(start, end, state), 300);
 }
 
 /** The last two columns: each curve built from the package's API and sampled at 10⁴ times. */

@@ -2,7 +2,7 @@
 // The KLI page: a descriptor for the page runtime (runtime.js), p and r as axis and angle, and
 // the tables. Computing, checking and drawing are the module's Demo (crates/kli-demo/src/demo.rs).
 import * as kli from "./pkg/kli_demo.js";
-import init, { axisAngle, defaultCamera, fromAxisAngle } from "./pkg/kli_demo.js";
+import { axisAngle, fromAxisAngle } from "./pkg/kli_demo.js";
 import { $ } from "./dom.js";
 import { timeTag } from "./exports.js";
 import { errorPlace, fillAxisAngle, readAxisAngle } from "./form.js";
@@ -22,8 +22,7 @@ let typingAxisAngle = false;
 /** @type {Page<State, kli.Demo>} */
 const page = new Page({
   name: "kli",
-  init,
-  camera: defaultCamera,
+  module: kli,
   canvases: { object: "#object-canvas", hopf: "#hopf-canvas", filmstrip: "#filmstrip-canvas", plots: "#plots-canvas" },
   form: "#inputs",
   schema: KLI.schema,
@@ -33,30 +32,25 @@ const page = new Page({
   create: (state) => KLI.create(kli, state),
   keyOf: KLI.keyOf,
   route: (error) => errorPlace(page.form, error),
-  span: (run) => [0, pathOf(run).finalTime],
-  readout: ({ run }, t) => (run ? `t = ${t.toFixed(2)} / T = ${pathOf(run).finalTime.toFixed(2)}` : ""),
+  readout: (run, t) => `t = ${t.toFixed(2)} / T = ${run.summary.finalTime.toFixed(2)}`,
+  labels: (run, t) => ({ object: describeFrame(run, t) }),
+  note: (run, state) => describeRun(run, state),
   stride: (state) => state.step,
   timeInUrl: true,
-  data: { kind: "path", file: (run) => `kli-path-T${pathOf(run).finalTime.toFixed(2)}` },
+  data: { kind: "path", file: (run) => `kli-path-T${run.summary.finalTime.toFixed(2)}` },
   file: (_, view, t) => `kli-${view}${view === "filmstrip" ? "" : `-${timeTag(t)}`}`,
   // The paper's video: the object turning beside its Hopf curve.
   video: {
     views: ["object", "hopf"],
-    title: (run) => (run.isPaperExample ? "The paper's example: KLI from p to r, and its Hopf curve on S²" : "KLI from p to r, and its Hopf curve on S²"),
-    file: (run) => (run.isPaperExample ? "kli-paper-example" : `kli-path-T${pathOf(run).finalTime.toFixed(2)}`),
+    title: (run) => (run.summary.paperExample ? "The paper's example: KLI from p to r, and its Hopf curve on S²" : "KLI from p to r, and its Hopf curve on S²"),
+    file: (run) => (run.summary.paperExample ? "kli-paper-example" : `kli-path-T${run.summary.finalTime.toFixed(2)}`),
   },
-  shown: (page, run, state) => {
-    if (page.ui.time) page.ui.time.step = String(state.step);
-    const path = pathOf(run);
-    fillTable(run, path, $("#moments tbody", HTMLTableSectionElement), $("#final-time", HTMLElement), $("#printed-notes", HTMLUListElement));
-    fillTypo(run, path, state.tolerance, $("#typo tbody", HTMLTableSectionElement), $("#typo-summary", HTMLElement));
-    if (page.ui.note) page.ui.note.textContent = describeRun(run, path, state);
+  shown: (_, run, state) => {
+    fillTable(run, $("#moments tbody", HTMLTableSectionElement), $("#final-time", HTMLElement), $("#printed-notes", HTMLUListElement));
+    fillTypo(run, state.tolerance, $("#typo tbody", HTMLTableSectionElement), $("#typo-summary", HTMLElement));
     if (!typingAxisAngle) fillAxisAngles(state);
   },
-  rested: (page) => {
-    if (page.run) page.figures.canvases.object.setAttribute("aria-label", describeFrame(page.run, page.t));
-  },
-  input: (page, name) => {
+  input: (host, name) => {
     const axisAngleField = AXIS_ANGLE_FIELD.exec(name);
     if (!axisAngleField) return false;
     const which = /** @type {"p" | "r"} */ (axisAngleField[1]);
@@ -72,21 +66,11 @@ const page = new Page({
     }
     page.schema.fields(which).forEach((field, i) => (field.value = formatNumber(q[i])));
     typingAxisAngle = true;
-    page.rebuild(page.schema.read());
+    host.rebuild(host.read());
     typingAxisAngle = false;
     return true;
   },
 });
-
-/** The run on show's path (the package's KliPath), asked of the module once a run. */
-let current = { run: /** @type {kli.Demo | null} */ (null), path: /** @type {kli.KliPath | null} */ (null) };
-function pathOf(/** @type {kli.Demo} */ run) {
-  if (current.run === run && current.path) return current.path;
-  current.path?.free();
-  const path = run.path;
-  current = { run, path };
-  return path;
-}
 
 /** p's and r's axis and angle fields from the state (a value that is no quaternion is left:
  *  its own message is shown already). */

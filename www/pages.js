@@ -11,8 +11,7 @@
  * @property {string} script the page's module script (bundled by `make www` into pkg/<name>-page.js)
  * @property {string} title the link text in the pages' navigation
  * @property {Readonly<Record<string, string>>} views each <kli-figure> view its module draws: the module's name for it
- * @property {readonly string[]} layered the module's views drawn as a still layer with a moving part over it
- * @property {readonly string[]} still the module's views that do not follow the time
+ *   (how each view follows the time is the module's to say: its runs' `views`)
  */
 
 /** @type {readonly Page[]} */
@@ -20,15 +19,14 @@ export const PAGES = [
   {
     name: "kli", html: "index.html", script: "main.js", title: "KLI: two rotations",
     views: { object: "object", hopf: "hopf", plots: "plots", filmstrip: "filmstrip" },
-    layered: ["hopf", "plots"], still: ["filmstrip"],
   },
   {
     name: "keyframes", html: "keyframes.html", script: "keyframes.js", title: "Many rotations",
-    views: { keyframes: "hopf" }, layered: ["hopf", "plots"], still: [],
+    views: { keyframes: "hopf" },
   },
   {
     name: "swarm", html: "swarm.html", script: "swarm.js", title: "The swarm",
-    views: { swarm: "hopf" }, layered: [], still: ["sweep"],
+    views: { swarm: "hopf" },
   },
 ];
 

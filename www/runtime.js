@@ -2,8 +2,9 @@
 // The page runtime: what every page does, written once. A page is a descriptor (its module, its
 // figures, its state's schema, its presets, what its run is and how it reads out); this file
 // loads the module, keeps form, state and URL in step, builds runs (every refused value shown
-// beside its field at once, from the form and from the URL, the last valid run kept), runs the
-// clock, draws the figures, and wires keys, dragging, presets and saving.
+// beside its field at once, from the form and from the URL, the last valid run kept), plays the
+// run (player.js), draws the figures, and wires keys, dragging, presets and saving. A page's
+// hooks get a Host: the few things of the page they may use.
 //
 // The page's elements, by id: #load-status, #play, #readout, #share, #save and #save-status;
 // where present: #time (slider), #restart, #speed, #status (announced once the time rests),
@@ -11,13 +12,12 @@
 // #save); `?text=1.5` scales the figures' text, `?print=1.8` the time the figures print at
 // (else the time on show), as SVG.
 import { Camera } from "./camera.js";
-import { Clock } from "./clock.js";
 import { $ } from "./dom.js";
-import { download, saveAs, timeTag, wireSaving } from "./exports.js";
+import { download, saveAs, wireSaving } from "./exports.js";
 import { Figures } from "./figures.js";
 import { wireDragging, wireKeyboard } from "./input.js";
-import { page as pageNamed } from "./pages.js";
 import { parseNumber } from "./numbers.js";
+import { Player } from "./player.js";
 import { presetName } from "./presets.js";
 import { buildAll, clearErrors, messageOf, showFieldError } from "./runs.js";
 import { Schema } from "./schema.js";
@@ -26,17 +26,41 @@ import { wirePrinting } from "./print.js";
 import { videoPanel } from "./video/panel.js";
 
 /**
- * What the module's page classes have: the figure interface, and `free`.
- * @typedef {import("./figures.js").Figure & { free(): void, export(kind: string, format: string): string }} Run
+ * What the module's page classes have: the run contract (figures.js, player.js), `export`, `free`.
+ * @typedef {import("./figures.js").Figure & import("./player.js").Timed & { free(): void, export(kind: string, format: string): string }} Run
  */
 
 /**
+ * The page's module: its init and its sphere views' default camera.
+ * @typedef {{ default: () => Promise<unknown>, defaultCamera: () => ArrayLike<number> }} Module
+ */
+
+/**
+ * What a descriptor's hooks may use of their page.
+ * @template {Record<string, any>} State
+ * @template {Run} R
+ * @typedef {object} Host
+ * @property {R | null} run the run on show
+ * @property {State} state its state
+ * @property {number} t the time on show
+ * @property {(name: string) => HTMLInputElement | HTMLSelectElement} field a form field by name
+ * @property {() => State} read the state the form holds
+ * @property {(state: State) => boolean} rebuild builds and shows `state` (false, with the refusals shown, when refused)
+ * @property {(state: State) => boolean} apply fills the form with `state`, then rebuilds
+ * @property {(error: unknown) => void} showError shows an Error of the module beside its fields
+ * @property {(t: number) => void} seek pauses and moves to `t`
+ * @property {(views?: string[]) => void} redraw draws again (the named views' still parts too)
+ * @property {(view: string) => import("./figures.js").Frame | null} frame a view's frame at the time on show
+ */
+
+/**
+ * A page: its own parts. Time, play, frames, saving, printing, video, text size, URL and
+ * keyboard are the runtime's, the same on every page.
  * @template {Record<string, any>} State
  * @template {Run} R
  * @typedef {object} Descriptor
  * @property {string} name the page's name in pages.js
- * @property {() => Promise<unknown>} init the module's init
- * @property {() => ArrayLike<number>} camera the module's default camera
+ * @property {Module} module
  * @property {Record<string, string>} canvases each view's canvas (a selector), by the view's name
  * @property {Record<string, { draw: import("./figures.js").Painter, svg: (frame: import("./figures.js").Frame) => string }>} [own]
  *   views the page draws itself (with the module's static drawing functions), and their SVG
@@ -50,20 +74,18 @@ import { videoPanel } from "./video/panel.js";
  * @property {(error: unknown) => (keyof State & string) | undefined} keyOf the state key an Error is about
  * @property {(error: unknown) => { output: string, fields: Element[] } | undefined} [route] where an Error
  *   shows, when not beside its key's fields
- * @property {(run: R) => [number, number]} [span] the clock's span; without it the run keeps its own time
- * @property {(run: R) => void} [advance] one frame of a run that keeps its own time
- * @property {(run: R) => number} [time] a run's own time
- * @property {(page: Page<State, R>, t: number) => string} readout
+ * @property {(run: R, t: number) => string} readout the line under the figures
+ * @property {(run: R, t: number) => Record<string, string>} [labels] canvases' text alternatives once the time rests, by view
+ * @property {(run: R, state: State) => string} [note] the line in #note about a run
  * @property {{ kind: string, file: (run: R, t: number) => string }} data what the page saves as CSV and JSON
  * @property {(run: R, view: string, t: number) => string} file a saved view's file name
- * @property {(state: State) => number} [stride] the smallest step of ← and → (else 1/200 of the span)
+ * @property {(state: State) => number} [stride] the smallest step of ← and → and the slider (else 1/200 of the span)
  * @property {boolean} [timeInUrl] whether a paused page writes its time into the URL
- * @property {(page: Page<State, R>, run: R, state: State) => void} [shown] what the page adds when a run is shown
- * @property {(page: Page<State, R>, name: string) => boolean} [input] a form field the page handles itself
- * @property {(page: Page<State, R>) => void} [wire] the page's own buttons
- * @property {(page: Page<State, R>) => void} [drawn] after each frame
- * @property {(page: Page<State, R>) => void} [rested] when the time comes to rest (paused, or moved while paused)
- * @property {(x: number, y: number) => ((x: number, y: number) => void) | null} [grab] dragging on the sphere that moves something
+ * @property {(host: Host<State, R>, run: R, state: State) => void} [shown] what the page adds when a run is shown
+ * @property {(host: Host<State, R>, name: string) => boolean} [input] a form field the page handles itself
+ * @property {(host: Host<State, R>) => void} [wire] the page's own buttons
+ * @property {(host: Host<State, R>, x: number, y: number) => ((x: number, y: number) => void) | null} [grab]
+ *   dragging on the sphere that moves something
  * @property {{ views: readonly string[], title: (run: R) => string, file: (run: R) => string }} video the figures of the
  *   page's clip by default (the paper's video: object and Hopf sphere), its title line and its file name's stem
  */
@@ -98,8 +120,8 @@ export class Page {
     this.schema = new Schema(d.schema, this.form);
     const canvases = Object.fromEntries(Object.entries(d.canvases).map(([view, selector]) => [view, $(selector, HTMLCanvasElement)]));
     const painters = Object.fromEntries(Object.entries(d.own ?? {}).map(([view, { draw }]) => [view, draw]));
-    this.figures = new Figures(canvases, { ...pageNamed(d.name), painters });
-    this.clock = new Clock();
+    this.figures = new Figures(canvases, painters);
+    this.player = new Player({ draw: () => this.draw(), changed: () => this.playChanged() });
     /** @type {R | null} */
     this.run = null;
     /** @type {State} */
@@ -123,19 +145,46 @@ export class Page {
     this.lastReadout = "";
     /** @type {{ fill(): void, check(): Promise<void> } | undefined} */
     this.video = undefined;
+    /** @type {Host<State, R>} */
+    this.host = this.makeHost();
   }
 
-  static reducedMotion() {
-    return matchMedia("(prefers-reduced-motion: reduce)").matches;
+  /** What the descriptor's hooks get. */
+  makeHost() {
+    const page = this;
+    /** @type {Host<State, R>} */
+    const host = {
+      get run() { return page.run; },
+      get state() { return page.state; },
+      get t() { return page.t; },
+      field: (name) => this.schema.field(name),
+      read: () => this.schema.read(),
+      rebuild: (state) => this.rebuild(state),
+      apply: (state) => {
+        this.schema.fill(state);
+        return this.rebuild(state);
+      },
+      showError: (error) => this.showError(error),
+      seek: (t) => {
+        this.player.pause();
+        this.seek(t);
+      },
+      redraw: (views) => {
+        if (views) this.figures.invalidate(views);
+        this.requestDraw();
+      },
+      frame: (view) => this.figures.frame(view, this.t),
+    };
+    return host;
   }
 
-  /** The time on show: the clock's, or the run's own. */
+  /** The time on show: the run's own. */
   get t() {
-    return this.d.time && this.run ? this.d.time(this.run) : this.clock.t;
+    return this.player.t;
   }
 
   get playing() {
-    return this.clock.playing;
+    return this.player.playing;
   }
 
   // ---- Runs ----------------------------------------------------------------------------------
@@ -164,23 +213,22 @@ export class Page {
 
   /** Shows a run: its figures, the page's own parts, the preset it is, the URL. */
   show(/** @type {R} */ run, /** @type {State} */ state) {
-    this.run?.free();
+    const old = this.run;
+    this.player.show(run);
+    old?.free();
     this.run = run;
     this.state = state;
     this.figures.show(run);
-    if (this.d.span) {
-      const [start, end] = this.d.span(run);
-      this.clock.setSpan(start, end);
-      if (this.ui.time) {
-        this.ui.time.min = String(start);
-        this.ui.time.max = String(end);
-      }
-    } else {
-      this.clock.setSpan(0, Infinity);
+    const [start, end] = this.player.span;
+    if (this.ui.time && this.player.spanned) {
+      this.ui.time.min = String(start);
+      this.ui.time.max = String(end);
+      if (this.d.stride) this.ui.time.step = String(this.d.stride(state));
     }
     const preset = this.form.elements.namedItem("preset");
     if (preset instanceof HTMLSelectElement) preset.value = presetName(this.d.presets, state);
-    this.d.shown?.(this, run, state);
+    if (this.ui.note && this.d.note) this.ui.note.textContent = this.d.note(run, state);
+    this.d.shown?.(this.host, run, state);
     this.video?.fill();
     this.showTime();
     this.requestDraw();
@@ -191,81 +239,75 @@ export class Page {
     const preset = name === "random" && this.d.random ? this.d.random() : this.d.presets[name];
     if (!preset) return;
     this.schema.fill(preset);
-    this.clock.seek(this.clock.start);
-    if (this.rebuild(preset) && this.d.span && !Page.reducedMotion()) this.play();
+    if (!this.rebuild(preset)) return;
+    this.run?.seek(this.player.span[0]);
+    if (this.player.spanned && !Player.reducedMotion()) this.play();
+    else this.showTime();
   }
 
   // ---- Time ----------------------------------------------------------------------------------
 
-  /** After the time or the run changed: the slider, the readout and, while paused, the URL and
-   *  (a moment later, once the time rests) an announcement. */
+  /** After the time or the run changed: the slider, the readout and, while paused, the URL,
+   *  the figures' text alternatives and (a moment later, once the time rests) an announcement. */
   showTime() {
-    if (!this.run) return;
+    const run = this.run;
+    if (!run) return;
     if (this.ui.time) this.ui.time.value = String(this.t);
-    this.ui.readout.textContent = this.lastReadout = this.d.readout(this, this.t);
-    const paused = this.d.timeInUrl && !this.playing ? this.clock.t.toFixed(2) : undefined;
+    this.ui.readout.textContent = this.lastReadout = this.d.readout(run, this.t);
+    const paused = this.d.timeInUrl && !this.playing ? this.t.toFixed(2) : undefined;
     this.writeUrl(this.schema.toUrl(this.state, { t: paused, embed: this.embed ? "1" : undefined }));
     if (this.playing) return;
-    this.d.rested?.(this);
+    for (const [view, label] of Object.entries(this.d.labels?.(run, this.t) ?? {})) {
+      this.figures.canvases[view]?.setAttribute("aria-label", label);
+    }
     const status = this.ui.status;
     if (!status) return;
     clearTimeout(this.announcement);
     this.announcement = setTimeout(() => (status.textContent = this.ui.readout.textContent ?? ""), 300);
   }
 
-  play() {
-    if (!this.run) return;
-    this.clock.play();
-    this.ui.play.textContent = "Pause";
+  /** The play button and the time's readouts follow the player. */
+  playChanged() {
+    this.ui.play.textContent = this.playing ? "Pause" : "Play";
     this.showTime();
-    this.requestDraw();
+  }
+
+  play() {
+    this.player.play();
   }
 
   pause() {
-    this.clock.pause();
-    this.ui.play.textContent = "Play";
-    this.showTime();
-  }
-
-  togglePlay() {
-    if (this.playing) this.pause();
-    else this.play();
+    this.player.pause();
   }
 
   seek(/** @type {number} */ t) {
-    this.clock.seek(t);
+    this.player.seek(t);
     this.showTime();
-    this.requestDraw();
   }
 
   // ---- Frames --------------------------------------------------------------------------------
 
+  /** Draws once in the next frame (while playing, the player draws every frame). */
   requestDraw() {
-    if (this.drawPending) return;
+    if (this.drawPending || this.playing) return;
     this.drawPending = true;
-    requestAnimationFrame((now) => this.frame(now));
-  }
-
-  frame(/** @type {number} */ now) {
-    this.drawPending = false;
-    const ended = this.clock.tick(now);
-    if (this.playing && this.run && this.d.advance) this.d.advance(this.run);
-    this.draw();
-    if (ended) this.pause();
-    if (this.playing) this.requestDraw();
+    requestAnimationFrame(() => {
+      this.drawPending = false;
+      this.draw();
+    });
   }
 
   /** Draws the figures at the time on show; while playing, the slider and readout follow. */
   draw() {
-    if (!this.run || !this.figures.render(this.t)) return;
+    const run = this.run;
+    if (!run || !this.figures.render(this.t)) return;
     if (this.playing) {
-      const readout = this.d.readout(this, this.t);
+      const readout = this.d.readout(run, this.t);
       if (readout !== this.lastReadout) {
         if (this.ui.time) this.ui.time.value = String(this.t);
         this.ui.readout.textContent = this.lastReadout = readout;
       }
     }
-    this.d.drawn?.(this);
     // For the DevTools timeline and `make bench`: when the first complete frame was drawn.
     if (performance.getEntriesByName("kli:first-frame").length === 0) performance.mark("kli:first-frame");
   }
@@ -297,52 +339,55 @@ export class Page {
     this.form.addEventListener("submit", (event) => event.preventDefault());
     this.form.addEventListener("input", (event) => {
       const name = /** @type {HTMLInputElement} */ (event.target).name ?? "";
-      if (this.d.input?.(this, name)) return;
+      if (this.d.input?.(this.host, name)) return;
       if (name === "preset") return this.applyPreset(/** @type {HTMLSelectElement} */ (event.target).value);
       this.rebuild(this.schema.read());
     });
-    this.ui.play.addEventListener("click", () => this.togglePlay());
+    this.ui.play.addEventListener("click", () => this.player.toggle());
     document.querySelector("#restart")?.addEventListener("click", () => {
-      this.seek(this.clock.start);
-      if (!Page.reducedMotion()) this.play();
+      this.seek(this.player.span[0]);
+      if (!Player.reducedMotion()) this.play();
     });
     const time = this.ui.time;
     time?.addEventListener("input", () => {
-      if (this.playing) this.pause();
-      this.seek(Number(time.value));
+      const t = Number(time.value);
+      this.pause();
+      this.seek(t);
     });
     const speed = this.ui.speed;
-    speed?.addEventListener("input", () => (this.clock.speed = Number(speed.value)));
+    speed?.addEventListener("input", () => (this.player.speed = Number(speed.value)));
     wireSaving($("#save", HTMLElement), (what, format) => this.save(what, format), $("#save-status", HTMLElement));
     const hopf = this.figures.canvases.hopf;
+    const spanned = () => this.player.spanned;
     /** @type {import("./input.js").Actions} */
     const actions = {
-      togglePlay: () => this.togglePlay(),
+      togglePlay: () => this.player.toggle(),
       step: (by) => {
-        if (!this.d.span) return;
+        if (!spanned()) return;
         this.pause();
-        const span = this.clock.end - this.clock.start;
-        this.seek(this.clock.t + by * Math.max(this.d.stride?.(this.state) ?? 0, span / 200));
+        const [start, end] = this.player.span;
+        this.seek(this.t + by * Math.max(this.d.stride?.(this.state) ?? 0, (end - start) / 200));
       },
-      toStart: () => (this.d.span ? this.seek(this.clock.start) : this.rebuild(this.state)),
+      toStart: () => (spanned() ? this.seek(this.player.span[0]) : this.rebuild(this.state)),
       toEnd: () => {
-        if (!this.d.span) return;
+        if (!spanned()) return;
         this.pause();
-        this.seek(this.clock.end);
+        this.seek(this.player.span[1]);
       },
       speed: (by) => {
         if (!speed) return;
         speed.selectedIndex = Math.min(Math.max(speed.selectedIndex + by, 0), speed.options.length - 1);
-        this.clock.speed = Number(speed.value);
+        this.player.speed = Number(speed.value);
       },
       turn: (azimuth, elevation) => this.turn(azimuth, elevation),
     };
     if (hopf) {
       wireKeyboard(hopf, actions);
-      wireDragging(hopf, actions.turn, this.d.grab);
+      const grab = this.d.grab;
+      wireDragging(hopf, actions.turn, grab && ((x, y) => grab(this.host, x, y)));
     }
     this.wireFigureChoices();
-    this.d.wire?.(this);
+    this.d.wire?.(this.host);
   }
 
   /** The video panel, the text size, and printing as SVG: for every page, here once. */
@@ -351,16 +396,11 @@ export class Page {
     const svgs = Object.fromEntries(Object.entries(this.d.own ?? {}).map(([view, { svg }]) => [view, svg]));
     this.video = videoPanel(save, {
       figures: this.figures,
+      player: this.player,
       views: Object.keys(this.figures.canvases),
       chosen: this.d.video.views,
-      spanned: Boolean(this.d.span),
-      span: () => (this.d.span && this.run ? this.d.span(this.run) : null),
-      advance: () => this.run && this.d.advance?.(this.run),
-      now: () => this.t,
       title: () => (this.run ? this.d.video.title(this.run) : ""),
       file: () => (this.run ? this.d.video.file(this.run) : "kli"),
-      textScale: () => this.figures.textScale,
-      svgs,
     }, (name, blob) => download(name, blob.type, blob));
     const sizes = [["1", "normal"], ["1.5", "large (1.5×)"], ["2", "projector (2×)"], ["3", "hall (3×)"]];
     const label = Object.assign(document.createElement("label"), { className: "text-size" });
@@ -390,16 +430,13 @@ export class Page {
   /** Loads the module, then shows the URL's state: the values the module refuses are shown
    *  beside their fields (their text kept there, to mend) and the defaults stand in for them. */
   async start() {
-    if (!(await loadModule(this.d.init, this.ui.load))) return;
+    if (!(await loadModule(this.d.module.default, this.ui.load))) return;
     performance.mark("kli:wasm-ready");
     if (this.embed) document.body.classList.add("embed");
-    this.figures.camera = new Camera(this.d.camera());
-    this.wire();
+    this.figures.camera = new Camera(this.d.module.defaultCamera());
     const { state: candidate, texts } = this.schema.fromUrl(location.search, this.d.defaults, this.d.aliases);
     const t = this.query.get("t");
-    const paused = (this.d.timeInUrl && t !== null) || Page.reducedMotion();
-    // The clock runs before the first URL is written, so that a playing page's URL has no time.
-    if (!paused && this.d.span) this.clock.play();
+    const paused = (this.d.timeInUrl && t !== null) || Player.reducedMotion();
     // A number beyond its slider is refused here, as the slider would refuse it.
     const beyond = this.schema.outOfRange(candidate).map(({ key, min, max, value }) => {
       /** @type {Record<string, any>} */ (candidate)[key] = this.d.defaults[key];
@@ -411,10 +448,13 @@ export class Page {
     // The form first: what the page shows beside it (a slider's value) reads the form.
     this.schema.fill(state ?? this.d.defaults);
     this.show(run ?? this.d.create(this.d.defaults), state ?? this.d.defaults);
+    // Wired once the first run is shown: the video panel asks it whether runs have a span.
+    this.wire();
     this.schema.keepTexts(texts, errors.map((error) => this.d.keyOf(error)));
     errors.forEach((error) => this.showError(error));
+    // In the same task as the first show: the first URL written is the playing page's, with no time.
     if (!paused) this.play();
-    else this.seek(t === null ? this.clock.start : parseNumber(t));
+    else if (t !== null) this.seek(parseNumber(t));
     this.ui.load.textContent = "";
     this.ui.load.hidden = true;
     this.figures.observe(() => this.draw());

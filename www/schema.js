@@ -23,6 +23,8 @@ import { formatNumber, parseNumber } from "./numbers.js";
  * @property {Kind} kind
  * @property {{ flag: string, shown: number }} [optional] a checkbox (`flag`) that, checked,
  *   leaves the key out of the state; `shown` fills the field meanwhile
+ * @property {readonly [number, number]} [range] a number's bounds on its page (its slider's, set
+ *   from here) and in <kli-figure>: each keeps its work within a frame
  */
 
 const COMPONENTS = ["w", "x", "y", "z"];
@@ -62,6 +64,10 @@ export class Schema {
   constructor(entries, form) {
     this.entries = entries;
     this.form = form;
+    for (const { key, range } of entries) {
+      const [field] = range ? this.fields(key) : [];
+      if (range && field instanceof HTMLInputElement && field.type === "range") [field.min, field.max] = range.map(String);
+    }
   }
 
   /** The form's element named `name`. */
@@ -155,13 +161,7 @@ export class Schema {
    * @returns {{ key: string, min: number, max: number, value: number }[]}
    */
   outOfRange(state) {
-    return this.entries.flatMap(({ key, kind }) => {
-      const [field] = this.fields(key);
-      const value = state[key];
-      if (kind !== "number" || !(field instanceof HTMLInputElement) || field.type !== "range" || !Number.isFinite(value)) return [];
-      const [min, max] = [Number(field.min), Number(field.max)];
-      return value < min || value > max ? [{ key, min, max, value }] : [];
-    });
+    return outOfRange(this.entries, state);
   }
 
   /**
@@ -179,4 +179,19 @@ export class Schema {
     for (const [key, text] of Object.entries(extra)) if (text !== undefined) query.set(key, text);
     return "?" + query.toString();
   }
+}
+
+/**
+ * The numbers of `state` beyond their entry's range.
+ * @param {readonly Entry[]} entries
+ * @param {Record<string, any>} state
+ * @returns {{ key: string, min: number, max: number, value: number }[]}
+ */
+export function outOfRange(entries, state) {
+  return entries.flatMap(({ key, range }) => {
+    const value = state[key];
+    if (!range || typeof value !== "number" || !Number.isFinite(value)) return [];
+    const [min, max] = range;
+    return value < min || value > max ? [{ key, min, max, value }] : [];
+  });
 }

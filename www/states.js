@@ -34,7 +34,7 @@ export const KEYFRAMES = {
   schema: /** @type {const} */ ([
     { key: "keys", url: "keys", kind: "quaternions" },
     { key: "times", url: "times", kind: "numbers" },
-    { key: "smoothness", url: "s", kind: "number" },
+    { key: "smoothness", url: "s", kind: "number", range: [0, 1] },
   ]),
   /** @param {any} module @param {{ keys: number[][], times: number[], smoothness: number }} state */
   create: (module, state) => new module.KeyframesDemo(new Float64Array(state.keys.flat()), new Float64Array(state.times), state.smoothness),
@@ -48,13 +48,13 @@ export const KEYFRAMES = {
  *  `?K=1&n=500&graph=all&leaders=1&w=0&seed=1&spread=0.5` (`spread` absent: a uniform start). */
 export const SWARM = {
   schema: /** @type {const} */ ([
-    { key: "coupling", url: "K", kind: "number" },
-    { key: "count", url: "n", kind: "number" },
+    { key: "coupling", url: "K", kind: "number", range: [-3, 6] },
+    { key: "count", url: "n", kind: "number", range: [2, 2000] },
     { key: "graph", url: "graph", kind: "word" },
     { key: "leaders", url: "leaders", kind: "number" },
-    { key: "frequencySpread", url: "w", kind: "number" },
+    { key: "frequencySpread", url: "w", kind: "number", range: [0, 2] },
     { key: "seed", url: "seed", kind: "number" },
-    { key: "startSpread", url: "spread", kind: "number", optional: { flag: "uniform", shown: 0.5 } },
+    { key: "startSpread", url: "spread", kind: "number", range: [0, 3], optional: { flag: "uniform", shown: 0.5 } },
   ]),
   /** @param {any} module @param {object} state */
   create: (module, state) => new module.SwarmDemo(state),

@@ -4,24 +4,22 @@
 import { formatQuaternion } from "./numbers.js";
 
 /** @typedef {import("./pkg/kli_demo.js").Demo} Demo */
-/** @typedef {import("./pkg/kli_demo.js").KliPath} KliPath */
 
 /**
  * Table 1 at the paper's moments (integrated, closed form, and as the paper prints it), the line
  * about T, and in `notes` what the printed table gets wrong.
  * @param {Demo} demo
- * @param {KliPath} path its path
  * @param {HTMLTableSectionElement} body
  * @param {HTMLElement} finalLine
  * @param {HTMLUListElement} notes
  */
-export function fillTable(demo, path, body, finalLine, notes) {
+export function fillTable(demo, body, finalLine, notes) {
   body.replaceChildren();
   notes.replaceChildren();
-  const finalTime = path.finalTime;
+  const { finalTime, steps, predictedTime } = demo.summary;
   for (const moment of demo.moments) {
     const row = body.insertRow();
-    const exact = path.exactAt(moment);
+    const exact = demo.exactAt(moment);
     const printed = demo.printedRow(moment);
     row.insertCell().textContent = moment === finalTime ? `T = ${moment.toFixed(2)}` : String(moment);
     row.insertCell().textContent = formatQuaternion(demo.integratedAt(moment));
@@ -32,7 +30,7 @@ export function fillTable(demo, path, body, finalLine, notes) {
     for (const note of printedNotes(t, printed, exact)) notes.append(Object.assign(document.createElement("li"), { textContent: note }));
   }
   finalLine.textContent =
-    `T = ${finalTime.toFixed(2)} after ${path.steps} steps; the closed form predicts T* = ${demo.predictedTime.toFixed(4)}.`;
+    `T = ${finalTime.toFixed(2)} after ${steps} steps; the closed form predicts T* = ${predictedTime.toFixed(4)}.`;
 }
 
 const UNITS = ["", "i", "j", "k"];
@@ -90,12 +88,12 @@ const TYPO_TIMES = [0, 0.5, 1, 2, 5, 10, 20, 40];
 /**
  * Eq. 4 as printed, integrated from this run's p: |q| and the distance to the target over time.
  * @param {Demo} demo
- * @param {KliPath} path its path
  * @param {number} tolerance the run's ε
  * @param {HTMLTableSectionElement} body
  * @param {HTMLElement} summary
  */
-export function fillTypo(demo, path, tolerance, body, summary) {
+export function fillTypo(demo, tolerance, body, summary) {
+  const { finalTime } = demo.summary;
   body.replaceChildren();
   const values = demo.integrateAsPrinted(new Float64Array(TYPO_TIMES));
   TYPO_TIMES.forEach((t, i) => {
@@ -106,27 +104,27 @@ export function fillTypo(demo, path, tolerance, body, summary) {
   });
   const last = TYPO_TIMES.length - 1;
   const golden = (Math.sqrt(5) - 1) / 2;
-  summary.textContent = path.finalTime === 0
+  summary.textContent = finalTime === 0
     ? "p is already at the target, where the printed field does not vanish either."
     : `By t = ${TYPO_TIMES[last]} the printed flow has settled at |q| = ${values[2 * last].toFixed(6)} ` +
       `((√5 − 1)/2 = ${golden.toFixed(6)}), ${values[2 * last + 1].toFixed(6)} from the target: ` +
-      `never within ε = ${tolerance} of it, where the correct flow arrives at T = ${path.finalTime.toFixed(2)}.`;
+      `never within ε = ${tolerance} of it, where the correct flow arrives at T = ${finalTime.toFixed(2)}.`;
 }
 
 /**
  * Notes on the run: where it goes, and why it may look odd.
  * @param {Demo} demo
- * @param {KliPath} path its path
  * @param {import("./form.js").State} state
  */
-export function describeRun(demo, path, state) {
+export function describeRun(demo, state) {
   const notes = [];
-  if (path.finalTime === 0) {
-    notes.push(`p is already within ε of the target: nothing to interpolate${demo.flipped ? " (r ≈ −p is the same rotation as p)" : ""}.`);
-  } else if (demo.flipped) {
+  const { finalTime, flipped } = demo.summary;
+  if (finalTime === 0) {
+    notes.push(`p is already within ε of the target: nothing to interpolate${flipped ? " (r ≈ −p is the same rotation as p)" : ""}.`);
+  } else if (flipped) {
     notes.push("p·r < 0, so the flow goes to −r: the same rotation, by the shorter arc.");
   }
-  if (!state.shortestPath && path.finalTime > 0) notes.push("Shortest path is off: the flow goes to r itself, possibly the long way round.");
+  if (!state.shortestPath && finalTime > 0) notes.push("Shortest path is off: the flow goes to r itself, possibly the long way round.");
   if (state.integrator === "euler") notes.push("Euler leaves S³: see the |q| drift plot.");
   return notes.join(" ");
 }

@@ -2,7 +2,7 @@
 // The swarm page: a descriptor for the page runtime (runtime.js), and the K sweep. The model, its
 // checks and all drawing are the module's (crates/kli-demo/src/swarm_demo.rs).
 import * as swarm from "./pkg/swarm_demo.js";
-import init, { SwarmDemo, defaultCamera } from "./pkg/swarm_demo.js";
+import { SwarmDemo } from "./pkg/swarm_demo.js";
 import { $ } from "./dom.js";
 import { timeTag } from "./exports.js";
 import { Page } from "./runtime.js";
@@ -18,8 +18,8 @@ const PRESETS = {
   frequencies: { coupling: 2, count: 500, graph: "all", leaders: 1, frequencySpread: 1, seed: 1 },
   kli: { coupling: 2, count: 2, graph: "leader", leaders: 1, frequencySpread: 0, startSpread: 1.5, seed: 3 },
 };
-const DT = 0.02;
-const STEPS_PER_FRAME = 2;
+/** How far the Step button moves the swarm on (model time). */
+const STEP = 0.2;
 const SWEEP = Array.from({ length: 19 }, (_, i) => -1 + i / 2);
 const sweep = { couplings: /** @type {number[]} */ ([]), orders: /** @type {number[]} */ ([]), timer: 0 };
 /** The sweep's points so far, for the module's drawing. */
@@ -30,8 +30,7 @@ const FILE_NAMES = /** @type {Record<string, string>} */ ({ hopf: "hopf", object
 /** @type {Page<SwarmState, SwarmDemo>} */
 const page = new Page({
   name: "swarm",
-  init,
-  camera: defaultCamera,
+  module: swarm,
   canvases: { hopf: "#swarm-hopf", objects: "#swarm-objects", plots: "#swarm-plots", sweep: "#swarm-sweep" },
   own: {
     sweep: {
@@ -45,69 +44,59 @@ const page = new Page({
   defaults: PRESETS.synchronise,
   create: (state) => SWARM.create(swarm, state),
   keyOf: SWARM.keyOf,
-  advance: (run) => run.step(DT, STEPS_PER_FRAME),
-  time: (run) => run.time,
-  readout: ({ run }) => {
-    if (!run) return "";
-    return `t = ${run.time.toFixed(2)}   R = ${run.orderParameter.toFixed(3)}   λmax = ${run.rotationOrder.toFixed(3)}` +
-      (run.isKli ? `   τ = Kt/2 = ${run.kliTime.toFixed(2)}` : "");
+  readout: (run, t) => {
+    const s = run.summary;
+    return `t = ${t.toFixed(2)}   R = ${s.orderParameter.toFixed(3)}   λmax = ${s.rotationOrder.toFixed(3)}` +
+      (s.kli ? `   τ = Kt/2 = ${s.kliTime.toFixed(2)}` : "");
   },
-  data: { kind: "swarm", file: (run, t) => `kli-swarm-${run.count}-oscillators-${timeTag(t)}` },
+  note: (run) => (run.summary.kli
+    ? "One pinned leader and one follower: the follower obeys q′ = (K/2)(r − (q·r) q), the KLI flow at the clock τ = Kt/2."
+    : ""),
+  data: { kind: "swarm", file: (run, t) => `kli-swarm-${run.summary.count}-oscillators-${timeTag(t)}` },
   file: (_, view, t) => `kli-swarm-${FILE_NAMES[view]}${view === "sweep" ? "" : `-${timeTag(t)}`}`,
   video: {
     views: ["hopf", "objects"],
-    title: (run) => `A Lohe swarm of ${run.count} oscillators on S³, through the Hopf map`,
-    file: (run) => `kli-swarm-${run.count}-oscillators`,
+    title: (run) => `A Lohe swarm of ${run.summary.count} oscillators on S³, through the Hopf map`,
+    file: (run) => `kli-swarm-${run.summary.count}-oscillators`,
   },
-  shown: (page, run) => {
-    if (page.ui.note) {
-      page.ui.note.textContent = run.isKli
-        ? "One pinned leader and one follower: the follower obeys q′ = (K/2)(r − (q·r) q), the KLI flow at the clock τ = Kt/2."
-        : "";
-    }
-    showValues();
-    page.figures.invalidate(["sweep"]); // its marker follows K; otherwise it changes only while a sweep runs
+  shown: (host) => {
+    showValues(host);
+    host.redraw(["sweep"]); // its marker follows K; otherwise it changes only while a sweep runs
   },
-  drawn: (page) => {
-    if (!page.playing && page.ui.status) page.ui.status.textContent = page.ui.readout.textContent ?? "";
-  },
-  input: (page, name) => {
-    showValues();
-    if (name === "uniform") page.rebuild(page.schema.read());
+  input: (host, name) => {
+    showValues(host);
+    if (name === "uniform") host.rebuild(host.read());
     return name === "uniform";
   },
-  wire: (page) => {
-    $("#step", HTMLButtonElement).addEventListener("click", () => {
-      page.pause();
-      page.run?.step(DT, 10);
-      page.showTime();
-      page.requestDraw();
-    });
+  wire: (host) => {
+    $("#step", HTMLButtonElement).addEventListener("click", () => host.seek(host.t + STEP));
     $("#reseed", HTMLButtonElement).addEventListener("click", () => {
-      page.schema.field("seed").value = String((page.state.seed + 1) % 1e9);
-      page.rebuild(page.schema.read());
+      host.field("seed").value = String((host.state.seed + 1) % 1e9);
+      host.rebuild(host.read());
     });
-    $("#sweep", HTMLButtonElement).addEventListener("click", runSweep);
+    $("#sweep", HTMLButtonElement).addEventListener("click", () => runSweep(host));
   },
 });
 
+/** @typedef {import("./runtime.js").Host<SwarmState, SwarmDemo>} Host */
+
 /** The sliders' values beside them. */
-function showValues() {
+function showValues(/** @type {Host} */ host) {
   for (const name of ["coupling", "count", "frequencySpread", "startSpread"]) {
-    $(`#${name}-value`, HTMLOutputElement).textContent = page.schema.field(name).value;
+    $(`#${name}-value`, HTMLOutputElement).textContent = host.field(name).value;
   }
-  page.schema.field("startSpread").disabled = /** @type {HTMLInputElement} */ (page.schema.field("uniform")).checked;
+  host.field("startSpread").disabled = /** @type {HTMLInputElement} */ (host.field("uniform")).checked;
 }
 
 /** One sweep point per task, so the page stays responsive. */
-function runSweep() {
+function runSweep(/** @type {Host} */ host) {
   clearTimeout(sweep.timer);
   sweep.couplings = [];
   sweep.orders = [];
   const table = $("#sweep-table tbody", HTMLTableSectionElement);
   const status = $("#sweep-status", HTMLOutputElement);
   table.replaceChildren();
-  const options = { ...page.state, count: Math.min(page.state.count, 200) };
+  const options = { ...host.state, count: Math.min(host.state.count, 200) };
   const next = (/** @type {number} */ i) => {
     if (i === SWEEP.length) {
       status.textContent = `Done: R at t = 30 for ${SWEEP.length} couplings.`;
@@ -119,8 +108,7 @@ function runSweep() {
     row.insertCell().textContent = String(Number(SWEEP[i].toFixed(4)));
     row.insertCell().textContent = sweep.orders[i].toFixed(3);
     status.textContent = `Sweeping: ${i + 1} of ${SWEEP.length}`;
-    page.figures.invalidate(["sweep"]);
-    page.requestDraw();
+    host.redraw(["sweep"]);
     sweep.timer = setTimeout(() => next(i + 1));
   };
   next(0);

@@ -29,7 +29,7 @@ test("<kli-figure autoplay> reads the latest visibility entry: hidden then shown
   };
   const { page, context, problems } = await open("examples/figures.html", { init });
   try {
-    await page.waitForFunction(() => document.querySelector("#hopf").demo);
+    await page.waitForFunction(() => document.querySelector("#hopf").run);
     const t0 = (await figureCanvas(page, "#hopf")).t;
     await page.waitForTimeout(400);
     const t1 = (await figureCanvas(page, "#hopf")).t;
@@ -47,7 +47,7 @@ test("<kli-figure> scaled by its host (as reveal.js scales a slide) renders at t
       <div id="slide" style="width: 400px; transform: scale(1.48); transform-origin: 0 0">
         <kli-figure id="scaled" view="hopf" style="width: 400px; height: 300px"></kli-figure>
       </div>`));
-    await page.waitForFunction(() => document.querySelector("#scaled").demo && document.querySelector("#scaled").shadowRoot.querySelector("canvas").width > 1000);
+    await page.waitForFunction(() => document.querySelector("#scaled").run && document.querySelector("#scaled").shadowRoot.querySelector("canvas").width > 1000);
     const scaled = await figureCanvas(page, "#scaled");
     // 398 CSS px (the figure's border inside its 400) × 1.48 (the host) × 2 (the screen).
     const [width, height] = await page.evaluate(() => {
@@ -110,7 +110,7 @@ test("embedded figures reserve their box before their module loads: no layout sh
   });
   const { page, context, problems } = await open("examples/figures.html", { init, prepare, reducedMotion: "reduce" });
   try {
-    await page.waitForFunction(() => Array.from(document.querySelectorAll("kli-figure"), (f) => f.demo).every(Boolean));
+    await page.waitForFunction(() => Array.from(document.querySelectorAll("kli-figure"), (f) => f.run).every(Boolean));
     await page.waitForTimeout(300);
     const shift = await page.evaluate(() => window.__shifts);
     assert.ok(shift <= 0.1, `cumulative layout shift ${shift}`);
@@ -122,7 +122,7 @@ test("embedded figures reserve their box before their module loads: no layout sh
 
 test("make: nothing to build when nothing changed, so make demo serves at once", () => {
   // `make -q` exits 0 only when every target named is up to date (the test run built them).
-  execFileSync("make", ["-q", "pkg/.built", "www/pkg/.built"], { cwd: root, stdio: "pipe" });
+  execFileSync("make", ["-q", "pkg/.built", "www/pkg/.built", "www/vendor/codecs.js", "www/examples/vendor/.built"], { cwd: root, stdio: "pipe" });
   // The page list and the pages' modulepreload links agree (scripts/pages.mjs writes them).
   execFileSync("node", ["scripts/pages.mjs", "check"], { cwd: root, stdio: "pipe" });
 });
@@ -245,13 +245,31 @@ test("the figure interface under hostile input: every call draws with defaults o
           if (round === 0 && !figure.export(kind, "json").startsWith("{")) unnamed.push(`export ${kind}`);
         }
       }
+      // The run contract: the views are the ones drawn; any time asked for leaves the run's
+      // time a number within its span, and the summary's numbers finite.
+      const contract = [];
+      const times = [NaN, Infinity, -Infinity, -1, 0, 1e-300, 0.5, 3, 1e308, "x", null, undefined, {}];
+      for (const [figure, views] of figures) {
+        if (figure.views.map((v) => v.name).join() !== views.join()) contract.push(`views ${figure.views.map((v) => v.name)}`);
+        if (!figure.views.every((v) => ["moving", "layered", "still"].includes(v.kind) && v.title)) contract.push("a view's kind or title");
+        for (const t of times) {
+          for (const call of [() => figure.seek(t), () => figure.advance(t)]) {
+            const [start, end] = figure.span;
+            if (typeof call() !== "boolean") contract.push(`not a boolean for ${t}`);
+            if (!(figure.time >= start && figure.time <= end && Number.isFinite(figure.time))) contract.push(`time ${figure.time} for ${t}`);
+          }
+        }
+        const numbers = JSON.stringify(figure.summary).match(/-?[\d.e+-]+|null/g) ?? [];
+        if (numbers.includes("null")) contract.push(`summary ${JSON.stringify(figure.summary)}`);
+      }
       // Still working: a real frame draws, and the SVG holds numbers, never NaN.
       const svgs = figures.map(([figure, views]) => figure.toSvg(views[1], { width: 300, height: 200, t: 1 }));
       for (const [figure] of figures) figure.free();
-      return { refusals, unnamed, nan: svgs.filter((svg) => /NaN|Infinity/.test(svg)).length };
+      return { refusals, unnamed, contract, nan: svgs.filter((svg) => /NaN|Infinity/.test(svg)).length };
     });
     assert.equal(result.refusals, 100 * 3 * 5);
     assert.deepEqual(result.unnamed, []);
+    assert.deepEqual(result.contract, []);
     assert.equal(result.nan, 0);
     assert.deepEqual(problems, []);
   } finally {

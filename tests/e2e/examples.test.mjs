@@ -68,7 +68,7 @@ const figures = (page) => page.evaluate(() => Array.from(document.querySelectorA
 test("<kli-figure>: three figures in running text, one module shared, sized by CSS, attributes live", async () => {
   const { page, context, problems } = await open("examples/figures.html", { reducedMotion: "reduce" });
   try {
-    await page.waitForFunction(() => Array.from(document.querySelectorAll("kli-figure"), (f) => f.demo).every(Boolean));
+    await page.waitForFunction(() => Array.from(document.querySelectorAll("kli-figure"), (f) => f.run).every(Boolean));
     await page.waitForTimeout(100);
     const before = await figures(page);
     assert.deepEqual(before.map((f) => f.id), ["hopf", "object", "keyframes"]);
@@ -90,13 +90,13 @@ test("<kli-figure>: three figures in running text, one module shared, sized by C
       for (let i = 0; i < data.length; i += 4) h = (h * 31 + data[i] + 7 * data[i + 1] + 13 * data[i + 2]) % 1000000007;
       return h !== hash;
     }, hopf.hash);
-    assert.equal(await page.evaluate(() => document.querySelector("#hopf").demo.flipped), false);
+    assert.equal(await page.evaluate(() => document.querySelector("#hopf").run.summary.flipped), false);
     assert.ok(Math.abs(await page.evaluate(() => document.querySelector("#hopf").end) - 11.66) > 0.5, "the long way takes longer");
     await page.evaluate(() => {
       document.querySelector("#object").removeAttribute("label");
       document.querySelector("#object").setAttribute("view", "plots");
     });
-    await page.waitForFunction(() => document.querySelector("#object").shadowRoot.querySelector("canvas").getAttribute("aria-label").startsWith("Distance to r"));
+    await page.waitForFunction(() => document.querySelector("#object").shadowRoot.querySelector("canvas").getAttribute("aria-label").startsWith("Distance to the target"));
     // A refused attribute is named in the figure, and a corrected one clears it.
     await page.evaluate(() => document.querySelector("#object").setAttribute("p", "1,2"));
     await page.waitForFunction(() => document.querySelector("#object").shadowRoot.querySelector("p").textContent !== "");
@@ -113,7 +113,7 @@ test("<kli-figure>: three figures in running text, one module shared, sized by C
 test("<kli-figure> at 390 px: the page fits, the floated figure goes full width; autoplay animates", async () => {
   const { page, context, problems } = await open("examples/figures.html", { viewport: { width: 390, height: 844 } });
   try {
-    await page.waitForFunction(() => Array.from(document.querySelectorAll("kli-figure"), (f) => f.demo).every(Boolean));
+    await page.waitForFunction(() => Array.from(document.querySelectorAll("kli-figure"), (f) => f.run).every(Boolean));
     assert.ok(await page.evaluate(() => document.documentElement.scrollWidth <= 390));
     const [hopf, object] = await figures(page);
     assert.ok(Math.abs(object.width - hopf.width) < 1, `${object.width} vs ${hopf.width}`);

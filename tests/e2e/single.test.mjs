@@ -75,7 +75,7 @@ test("dist/single/kli-figure.js: one classic script, the element with every modu
   page.on("console", (m) => m.type() === "error" && problems.push(`console: ${m.text()}`));
   try {
     await page.goto(allowed[0]);
-    await page.waitForFunction(() => Array.from(document.querySelectorAll("kli-figure"), (f) => f.demo).every(Boolean), null, { timeout: 10000 });
+    await page.waitForFunction(() => Array.from(document.querySelectorAll("kli-figure"), (f) => f.run).every(Boolean), null, { timeout: 10000 });
     const drawn = await page.evaluate(() => Array.from(document.querySelectorAll("kli-figure"), (f) => {
       const canvas = f.shadowRoot.querySelector("canvas");
       const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;

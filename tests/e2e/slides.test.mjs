@@ -20,7 +20,7 @@ const canvasHash = (page, id) => page.evaluate((id) => {
 
 const figureReady = (page, id) => page.waitForFunction((id) => {
   const figure = document.getElementById(id);
-  return figure?.shadowRoot && figure.demo && figure.shadowRoot.querySelector("canvas").width > 10;
+  return figure?.shadowRoot && figure.run && figure.shadowRoot.querySelector("canvas").width > 10;
 }, id);
 
 test("a figure animates on its slide, stops off it, and is drawn at the pixels it covers when the deck scales", async () => {
@@ -43,7 +43,7 @@ test("a figure animates on its slide, stops off it, and is drawn at the pixels i
     const away = await canvasHash(page, "hopf");
     await page.waitForTimeout(400);
     assert.equal(await canvasHash(page, "hopf"), away, "no frames off its slide");
-    assert.equal(await page.evaluate(() => document.getElementById("hopf").frame), 0);
+    assert.equal(await page.evaluate(() => document.getElementById("hopf").player.frame), 0);
     assert.deepEqual(problems, []);
   } finally {
     await context.close();

@@ -9,17 +9,20 @@ import { FORMATS, GIF_RATE, SIZES, encode, supported } from "./encode.js";
  * What a page gives its video panel.
  * @typedef {object} Source
  * @property {import("../figures.js").Figures<string>} figures
+ * @property {import("../player.js").Player} player the run on show, through the run contract
  * @property {readonly string[]} views the page's views, in order
  * @property {readonly string[]} chosen the views of the default clip (the paper's video: object and Hopf)
- * @property {boolean} spanned whether the page's runs have a time span (else they keep their own time)
- * @property {() => [number, number] | null} span the run's time span (null before the first run, or for a run that keeps its own time)
- * @property {(() => void) | undefined} advance one frame of a run that keeps its own time
- * @property {() => number} now the time on show
  * @property {() => string} title the clip's title line
  * @property {() => string} file the file name's stem ("kli-paper-example")
- * @property {() => number} textScale
- * @property {Partial<Record<string, (frame: import("../figures.js").Frame) => string>>} [svgs] views the page draws itself
  */
+
+/**
+ * The run's span, or null before the first run and for a run with no end (a clip of it is
+ * recorded forward from now, each frame a frame's advance of the run).
+ * @param {Source} source
+ * @returns {[number, number] | null}
+ */
+const spanOf = (source) => (source.player.run && source.player.spanned ? source.player.span : null);
 
 /**
  * The frames of a clip over [from, to] lasting `seconds` at `fps`: their count and times, the
@@ -41,7 +44,7 @@ function frameTimes(from, to, seconds, fps) {
  * @param {{ format: string, size: string, fps: number, views: readonly string[], from?: number, to?: number, seconds: number }} c
  */
 export function refusal(source, c) {
-  const span = source.span();
+  const span = spanOf(source);
   const from = c.from ?? span?.[0], to = c.to ?? span?.[1];
   if (!Object.hasOwn(FORMATS, c.format)) return `format must be one of ${Object.keys(FORMATS).join(", ")} (got ${String(c.format)})`;
   if (!Object.hasOwn(SIZES, c.size)) return `size must be one of ${Object.keys(SIZES).join(", ")} (got ${String(c.size)})`;
@@ -69,8 +72,8 @@ export async function record(source, choice) {
   if (problem) throw new Error(`kli video: ${problem}`);
   const [width, height] = SIZES[choice.size];
   const fps = choice.format === "gif" ? GIF_RATE : choice.fps;
-  const span = source.span();
-  // A run with a span: each frame at its own time; one that keeps its own: a frame's steps each.
+  const span = spanOf(source);
+  // A run with a span: each frame at its own time; one with none: a frame's advance each.
   const times = span ? frameTimes(choice.from ?? span[0], choice.to ?? span[1], choice.seconds, fps) : null;
   const frames = times?.length ?? Math.max(2, Math.round(choice.seconds * fps));
   const title = source.title();
@@ -78,10 +81,10 @@ export async function record(source, choice) {
     format: choice.format, width, height, fps, frames, signal: choice.signal,
     progress: (done) => choice.progress?.(done, frames),
     draw: (ctx, k) => {
-      if (!times && k > 0) source.advance?.();
-      const t = times ? times[k] : source.now();
+      if (!times && k > 0) source.player.run?.advance(1 / fps);
+      const t = times ? times[k] : source.player.t;
       composeFrame(source.figures, ctx, width, height, t, {
-        views: choice.views, title, caption: `t = ${t.toFixed(2)}`, textScale: source.textScale(),
+        views: choice.views, title, caption: `t = ${t.toFixed(2)}`, textScale: source.figures.textScale,
       });
     },
   });
@@ -98,7 +101,7 @@ export async function record(source, choice) {
 export function videoPanel(container, source, download) {
   const section = document.createElement("fieldset");
   section.className = "video";
-  const spanned = source.spanned;
+  const spanned = source.player.spanned;
   const views = source.views.map((view) => `<label><input type="checkbox" name="video-view" value="${view}"${source.chosen.includes(view) ? " checked" : ""}> ${view}</label>`).join(" ");
   section.innerHTML = `<legend>Save a video</legend>
     <p class="hint">Each frame drawn for its own time (not filmed from the screen): smooth on any machine. MP4 and WebM
@@ -123,8 +126,8 @@ export function videoPanel(container, source, download) {
   const status = /** @type {HTMLElement} */ (section.querySelector(".video-status"));
   /** The run's span in the fields, and the length it plays in at 1× (the page's clock). */
   const fill = () => {
-    const span = source.span();
-    if (span && spanned) {
+    const span = spanOf(source);
+    if (span) {
       field("video-from").value = String(span[0]);
       field("video-to").value = String(span[1]);
     }

@@ -3,15 +3,15 @@
 
 use js_sys::{Array, Float64Array, Object, Reflect};
 use kli::quaternion::to_wxyz;
-use kli_wasm::error::{JsResult, throw};
-use kli_wasm::options::{KliOptionsObject, read_options};
-use kli_wasm::path::JsKliPath;
-use kli_wasm::read::{Order, QuaternionLike, quaternion};
+use kli_wasm::error::JsResult;
+use kli_wasm::options::{KliOptionsObject, pair_and_options};
+use kli_wasm::read::{Order, QuaternionLike};
 use wasm_bindgen::prelude::*;
 
 use crate::aircraft::{Face, aircraft};
 use crate::camera::Viewport;
-use crate::figure::{Figure, Frame, Layer, finite};
+use crate::clock::{Clock, Clocked};
+use crate::figure::{Figure, Frame, Layer, Motion, Record, View, finite, names};
 use crate::format::{Json, csv_table, fixed, number};
 use crate::object_view::{draw_object, object_camera};
 use crate::palette::{INK, KLI, MUTED, SLERP};
@@ -30,6 +30,8 @@ pub struct Demo {
     flipped: bool,
     /// How quaternions go in and out, as in the package's calls.
     order: Order,
+    /// The time on show, in `[0, T]`.
+    clock: Clock,
 }
 
 #[wasm_bindgen]
@@ -41,32 +43,22 @@ impl Demo {
         r: &QuaternionLike,
         options: Option<KliOptionsObject>,
     ) -> JsResult<Demo> {
-        let (options, order) = read_options(options).map_err(throw)?;
-        let p = quaternion("p", p, order).map_err(throw)?;
-        let r = quaternion("r", r, order).map_err(throw)?;
-        let path = kli::kli(p, r, &options).map_err(throw)?;
+        let (p, r, options, order) = pair_and_options(p, r, options)?;
+        let path = kli::kli(p, r, &options)?;
         // The target is r or -r bit for bit, so this is the core's own choice, not a re-derivation.
         let flipped = path.target() != r;
-        Ok(Demo { scene: Scene::new(path), mesh: aircraft(), flipped, order })
+        let clock = Clock::new(0.0, path.final_time());
+        let scene = Scene::new(path);
+        Ok(Demo { scene, mesh: aircraft(), flipped, order, clock })
     }
 
-    /// Whether the flow goes to −r (shortestPath and p·r < 0): the same rotation as r.
-    #[wasm_bindgen(getter)]
-    pub fn flipped(&self) -> bool {
-        self.flipped
-    }
-
-    /// The run's path, the package's own `KliPath` (its `finalTime`, `steps`, `target`,
-    /// `exactAt`, …): a new object each time it is asked for, for the page to keep and free.
-    #[wasm_bindgen(getter)]
-    pub fn path(&self) -> JsKliPath {
-        JsKliPath::new(self.scene.path().clone(), self.order)
-    }
-
-    /// T*, the closed form's reach time for the same tolerance.
-    #[wasm_bindgen(getter, js_name = predictedTime)]
-    pub fn predicted_time(&self) -> f64 {
-        self.scene.predicted_time()
+    /// The exact q(t) of this run's flow (closed form), as the package's `KliPath.exactAt`; a
+    /// time that is not finite is t = 0. The run hands out no path object of its own: the
+    /// package's `kli(p, r, options)` is the path, to keep and free.
+    #[wasm_bindgen(js_name = exactAt)]
+    pub fn exact_at(&self, t: f64) -> JsResult<Vec<f64>> {
+        let q = self.scene.path().exact_at(finite(t))?;
+        Ok(self.order.write(q).to_vec())
     }
 
     /// Table 1's moments that lie before T, then T.
@@ -86,15 +78,19 @@ impl Demo {
     pub fn slerp_at(&self, t: f64) -> Vec<f64> {
         self.order.write(self.scene.slerp_at(finite(t).max(0.0))).to_vec()
     }
+}
 
+impl Demo {
     /// Whether this run is the paper's example (`p = k`, `r = ½(1 + i + j + k)`), whose Table 1
     /// the paper prints.
-    #[wasm_bindgen(getter, js_name = isPaperExample)]
-    pub fn is_paper_example(&self) -> bool {
+    fn is_paper_example(&self) -> bool {
         let path = self.scene.path();
         to_wxyz(path.quaternions()[0]) == PAPER_P && to_wxyz(path.target()) == PAPER_R
     }
+}
 
+#[wasm_bindgen]
+impl Demo {
     /// The paper's printed Table 1 row at `t` beside this run, or `undefined` when the run is not
     /// the paper's example or Table 1 has no row at `t`: `{ printed: [w, x, y, z], verdicts:
     /// ["agrees" | "truncated" | "differs", …], repeats?: t }`, the verdicts against the closed
@@ -138,19 +134,60 @@ impl Demo {
     }
 }
 
-crate::figure_class!(Demo);
+impl Clocked for Demo {
+    fn clock(&self) -> &Clock {
+        &self.clock
+    }
+
+    fn clock_mut(&mut self) -> &mut Clock {
+        &mut self.clock
+    }
+}
+
+crate::figure_class!(Demo, "KliSummary");
 
 /// The KLI page's views: Fig. 2 live (the object), Fig. 1 (the Hopf curves), the filmstrip of
-/// Fig. 2, and the plots; its data, the path.
+/// Fig. 2, and the plots; its time, the flow's from 0 to T; its data, the path.
 impl Figure for Demo {
-    const VIEWS: &'static [&'static str] = &["object", "hopf", "filmstrip", "plots"];
-    const TITLES: &'static [&'static str] = &[
-        "The object under KLI and under SLERP",
-        "The Hopf curves of KLI and SLERP on S²",
-        "The object at the moments of the paper's Table 1",
-        "Distance to the target, KLI's SLERP parameter s(t) beside SLERP's u = t/T, the drift of |q|",
+    const VIEWS: &'static [View] = &[
+        View {
+            name: "object",
+            title: "The object under KLI and under SLERP",
+            motion: Motion::Moving,
+        },
+        View {
+            name: "hopf",
+            title: "The Hopf curves of KLI and SLERP on S²",
+            motion: Motion::Layered,
+        },
+        View {
+            name: "filmstrip",
+            title: "The object at the moments of the paper's Table 1",
+            motion: Motion::Still,
+        },
+        View {
+            name: "plots",
+            title: "Distance to the target, KLI's SLERP parameter s(t) beside SLERP's u = t/T, the drift of |q|",
+            motion: Motion::Layered,
+        },
     ];
+    const NAMES: &'static [&'static str] = &names::<4>(Self::VIEWS);
     const EXPORT: &'static str = "path";
+
+    /// `{ finalTime, steps, predictedTime, flipped, paperExample }`: T, the steps taken, the
+    /// closed form's T* for the same tolerance, whether the flow goes to −r (shortestPath and
+    /// p·r < 0, the same rotation as r), and whether this is the paper's example
+    /// (`p = k`, `r = ½(1 + i + j + k)`), whose Table 1 the paper prints.
+    fn summary(&self) -> JsValue {
+        let path = self.scene.path();
+        Record::new()
+            .set("finalTime", path.final_time())
+            .set("steps", path.steps() as f64)
+            .set("predictedTime", self.scene.predicted_time())
+            .set("flipped", self.flipped)
+            .set("paperExample", self.is_paper_example())
+            .end()
+    }
 
     fn paint(&self, view: usize, layer: Layer, pen: &Pen, frame: &Frame) {
         let (width, height, t) = (frame.width, frame.height, frame.t.max(0.0));

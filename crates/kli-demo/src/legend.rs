@@ -121,6 +121,67 @@ pub fn outward((x, y): (f64, f64), (cx, cy): (f64, f64), distance: f64) -> (f64,
     (x + distance * dx / length, y + distance * dy / length)
 }
 
+/// `text` broken at spaces into lines no wider than `width` at `size` (a word wider than that
+/// stands on a line of its own).
+pub fn wrapped(pen: &Pen, text: &str, size: f64, width: f64) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    for word in text.split(' ') {
+        match lines.last_mut() {
+            Some(line) if pen.text_width(&format!("{line} {word}"), size) <= width => {
+                line.push(' ');
+                line.push_str(word);
+            }
+            _ => lines.push(word.to_owned()),
+        }
+    }
+    lines
+}
+
+/// A text's box, `[left, top, right, bottom]` in CSS pixels.
+pub type TextBox = [f64; 4];
+
+/// The box of `text` centred at `(x, y)` at `size` (the pen's text scale applied).
+pub fn text_box(pen: &Pen, text: &str, (x, y): (f64, f64), size: f64) -> TextBox {
+    let (half_width, half_height) =
+        (0.5 * pen.text_width(text, size), 0.5 * size * pen.text_scale());
+    [x - half_width, y - half_height, x + half_width, y + half_height]
+}
+
+/// Whether two boxes share any area.
+pub fn overlap(a: &TextBox, b: &TextBox) -> bool {
+    a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]
+}
+
+/// Where to centre the label `text` of `point`, `distance` from it: away from `centre` (off the
+/// curves, which run inside the sphere's disc) when that is clear of every box in `taken`, else
+/// the first clear place turning from there by ±45°, ±90°, ±135°, 180°; away from `centre` when
+/// none is. The label's box is added to `taken`.
+pub fn clear_place(
+    pen: &Pen,
+    text: &str,
+    (point, centre): ((f64, f64), (f64, f64)),
+    distance: f64,
+    size: f64,
+    taken: &mut Vec<TextBox>,
+) -> (f64, f64) {
+    let away = outward(point, centre, distance);
+    let (dx, dy) = (away.0 - point.0, away.1 - point.1);
+    let turned = |degrees: f64| {
+        let (sin, cos) = degrees.to_radians().sin_cos();
+        (point.0 + dx * cos - dy * sin, point.1 + dx * sin + dy * cos)
+    };
+    let place = [0.0, 45.0, -45.0, 90.0, -90.0, 135.0, -135.0, 180.0]
+        .into_iter()
+        .map(turned)
+        .find(|&at| {
+            let candidate = text_box(pen, text, at, size);
+            !taken.iter().any(|b| overlap(b, &candidate))
+        })
+        .unwrap_or(away);
+    taken.push(text_box(pen, text, place, size));
+    place
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

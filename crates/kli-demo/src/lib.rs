@@ -8,17 +8,19 @@
 //! Plain-Rust geometry and data ([`camera`], [`aircraft`], [`scene`], [`ticks`], [`palette`]) are
 //! apart from the files that draw ([`pen`], [`object_view`], [`sphere_view`], [`plots`]) and the
 //! classes themselves ([`demo`] for the KLI page, [`swarm_demo`] for the swarm page, with
-//! [`swarm_view`] and [`swarm_plots`], [`keyframes_demo`] for the keyframes page); every export
+//! [`swarm_view`] and [`swarm_plots`], [`keyframes`] for the keyframes page); every export
 //! says where it came from ([`provenance`]).
 
 pub mod aircraft;
 pub mod camera;
+#[cfg(any(feature = "kli-page", feature = "keyframes-page"))]
+mod clock;
 #[cfg(feature = "kli-page")]
 pub mod demo;
 mod figure;
 pub mod format;
 #[cfg(feature = "keyframes-page")]
-pub mod keyframes_demo;
+pub mod keyframes;
 pub mod legend;
 pub mod object_view;
 pub mod palette;
@@ -38,7 +40,7 @@ pub mod ticks;
 #[cfg(feature = "kli-page")]
 pub use demo::Demo;
 #[cfg(feature = "keyframes-page")]
-pub use keyframes_demo::KeyframesDemo;
+pub use keyframes::KeyframesDemo;
 #[cfg(feature = "swarm-page")]
 pub use swarm_demo::SwarmDemo;
 

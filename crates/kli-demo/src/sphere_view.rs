@@ -6,7 +6,7 @@ use glam::DVec3;
 
 use crate::camera::{Camera, Viewport};
 use crate::format::fixed;
-use crate::legend::{Entry, Mark, draw_legend, outward};
+use crate::legend::{Entry, Mark, TextBox, clear_place, draw_legend, text_box};
 use crate::palette::{AXIS_X, AXIS_Y, AXIS_Z, GRID, INK, KLI, MUTED, SLERP};
 use crate::pen::Pen;
 use crate::scene::Scene;
@@ -88,9 +88,9 @@ pub fn draw_sphere(pen: &Pen, viewport: &Viewport, camera: &Camera, scene: &Scen
     let grid = grid();
     draw_back(&view, &grid, scene);
     draw_globe(&view);
-    draw_front(&view, &grid, scene);
+    let mut labels = draw_front(&view, &grid, scene);
     draw_moments(&view, scene);
-    draw_ends(&view, scene);
+    draw_ends(&view, scene, &mut labels);
     draw_key(&view, !scene.moments().is_empty());
 }
 
@@ -120,19 +120,24 @@ pub(crate) fn draw_grid_back(view: &View, grid: &[Vec<DVec3>]) {
     }
 }
 
-/// The half of the grid in front and the axes x, y, z, labelled.
-pub(crate) fn draw_grid_front(view: &View, grid: &[Vec<DVec3>]) {
+/// The half of the grid in front and the axes x, y, z, labelled; returns the labels' boxes, for
+/// the labels placed after them to keep clear of.
+pub(crate) fn draw_grid_front(view: &View, grid: &[Vec<DVec3>]) -> Vec<TextBox> {
     for line in grid {
         view.polyline_on(line, Side::Front, ("#c3ccd5", 1.0, &[]));
     }
+    let mut boxes = Vec::with_capacity(3);
     for (axis, color, label) in
         [(DVec3::X, AXIS_X, "x"), (DVec3::Y, AXIS_Y, "y"), (DVec3::Z, AXIS_Z, "z")]
     {
         view.pen.alpha(if view.in_front(axis) { 1.0 } else { 0.35 });
         view.pen.line(view.at(axis * 0.94), view.at(axis * 1.1), color, 2.0, &[]);
-        view.pen.text(label, view.at(axis * 1.2), color, 13.0, "center");
+        let at = view.at(axis * 1.2);
+        view.pen.text(label, at, color, 13.0, "center");
+        boxes.push(text_box(view.pen, label, at, 13.0));
     }
     view.pen.alpha(1.0);
+    boxes
 }
 
 fn draw_back(view: &View, grid: &[Vec<DVec3>], scene: &Scene) {
@@ -151,10 +156,12 @@ pub(crate) fn draw_globe(view: &View) {
     view.pen.disc(centre, view.viewport.scale, None, Some(("#adb5bd", 1.0)));
 }
 
-fn draw_front(view: &View, grid: &[Vec<DVec3>], scene: &Scene) {
-    draw_grid_front(view, grid);
+/// The front half; returns the axis labels' boxes.
+fn draw_front(view: &View, grid: &[Vec<DVec3>], scene: &Scene) -> Vec<TextBox> {
+    let labels = draw_grid_front(view, grid);
     view.polyline_on(scene.kli_curve(), Side::Front, (KLI, 3.5, &[]));
     view.polyline_on(scene.slerp_curve(), Side::Front, SLERP_STROKE);
+    labels
 }
 
 /// Table 1's moments on both curves, fainter behind the sphere.
@@ -169,16 +176,18 @@ fn draw_moments(view: &View, scene: &Scene) {
     view.pen.alpha(1.0);
 }
 
-fn draw_ends(view: &View, scene: &Scene) {
+/// The ends, labelled away from the sphere's centre (off the curves and the markers that move
+/// along them) where that is clear of the labels already drawn (`labels`).
+fn draw_ends(view: &View, scene: &Scene, labels: &mut Vec<TextBox>) {
     let (start, end) =
         (view.at(hopf(scene.path().arc().start())), view.at(hopf(scene.path().target())));
-    // Labelled away from the sphere's centre: off the curves, which run inside the disc, and
-    // clear of the markers that move along them.
     let centre = view.at(DVec3::ZERO);
     view.pen.disc(start, 6.0, Some("#ffffff"), Some((INK, 2.0)));
-    view.pen.text("h(p)", outward(start, centre, 18.0), INK, 12.0, "center");
     view.pen.disc(end, 6.0, Some(INK), Some(("#ffffff", 1.5)));
-    view.pen.text("h(r)", outward(end, centre, 18.0), INK, 12.0, "center");
+    for (text, point) in [("h(p)", start), ("h(r)", end)] {
+        let at = clear_place(view.pen, text, (point, centre), 18.0, 12.0, labels);
+        view.pen.text(text, at, INK, 12.0, "center");
+    }
 }
 
 /// The KLI and SLERP points at time `t`, over [`draw_sphere`]'s drawing.

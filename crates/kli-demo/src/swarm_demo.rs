@@ -3,13 +3,13 @@
 
 use kli::quaternion::to_wxyz;
 use kli::swarm::{Graph, Swarm, SwarmOptions};
-use kli_wasm::error::{JsResult, throw};
+use kli_wasm::error::JsResult;
 use kli_wasm::swarm::{SwarmOptionsObject, read_swarm_options, whole_steps};
 use wasm_bindgen::prelude::*;
 use web_sys::CanvasRenderingContext2d;
 
 use crate::aircraft::{Face, aircraft};
-use crate::figure::{Figure, Frame, Layer};
+use crate::figure::{Figure, Frame, Layer, Motion, Record, Timed, View, names};
 use crate::format::{Json, csv_table, fixed};
 use crate::palette::BACKGROUND;
 use crate::pen::{Pen, svg_document};
@@ -20,6 +20,20 @@ use crate::swarm_view::{draw_swarm_objects, draw_swarm_sphere};
 /// How many oscillators the page draws as whole objects.
 const OBJECTS: usize = 3;
 
+/// The swarm's step: geodesic RK4 steps of this much model time.
+const DT: f64 = 0.02;
+
+/// Model time a second of the page's clock at speed 1: two steps a 60 Hz frame.
+const PACE: f64 = 2.4;
+
+/// The most oscillator steps (`count × steps`) one `advance` takes: about 9 ms in Chromium, all
+/// to all, so a frame keeps its budget whatever the count and the speed.
+const FRAME_WORK: f64 = 1e5;
+
+/// The most oscillator steps one `seek` takes (about 45 ms): a run to a far time is a task of
+/// this size at a time, the page responsive between them.
+const TASK_WORK: f64 = 5e5;
+
 /// The swarm behind the swarm page, and its views.
 #[wasm_bindgen]
 pub struct SwarmDemo {
@@ -27,8 +41,8 @@ pub struct SwarmDemo {
     options: SwarmOptions,
     history: History,
     mesh: Vec<Face>,
-    /// The step of the last `step` call (the page's), for the exports.
-    dt: Option<f64>,
+    /// Steps owed to the clock: a frame's share of a step carries over to the next.
+    owed: f64,
 }
 
 #[wasm_bindgen]
@@ -36,63 +50,12 @@ impl SwarmDemo {
     /// A swarm from the options of `new LoheSwarm(options)`, with the same checks and errors.
     #[wasm_bindgen(constructor)]
     pub fn new(options: Option<SwarmOptionsObject>) -> JsResult<SwarmDemo> {
-        let (options, _) = read_swarm_options(&JsValue::from(options)).map_err(throw)?;
-        let swarm = Swarm::new(&options).map_err(throw)?;
+        let (options, _) = read_swarm_options(&JsValue::from(options))?;
+        let swarm = Swarm::new(&options)?;
         let mut demo =
-            SwarmDemo { swarm, options, history: History::default(), mesh: aircraft(), dt: None };
+            SwarmDemo { swarm, options, history: History::default(), mesh: aircraft(), owed: 0.0 };
         demo.record();
         Ok(demo)
-    }
-
-    fn record(&mut self) {
-        let s = &self.swarm;
-        self.history.push(s.time(), s.order_parameter(), s.rotation_order(), s.potential());
-    }
-
-    /// `steps` geodesic RK4 steps of `dt`, then one sample of the history.
-    pub fn step(&mut self, dt: f64, steps: f64) -> JsResult<()> {
-        let steps = whole_steps(&steps.into()).map_err(throw)?;
-        self.swarm.step(dt, steps).map_err(throw)?;
-        self.dt = Some(dt);
-        self.record();
-        Ok(())
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn time(&self) -> f64 {
-        self.swarm.time()
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn count(&self) -> usize {
-        self.swarm.len()
-    }
-
-    #[wasm_bindgen(getter, js_name = orderParameter)]
-    pub fn order_parameter(&self) -> f64 {
-        self.swarm.order_parameter()
-    }
-
-    #[wasm_bindgen(getter, js_name = rotationOrder)]
-    pub fn rotation_order(&self) -> f64 {
-        self.swarm.rotation_order()
-    }
-
-    #[wasm_bindgen(getter)]
-    pub fn potential(&self) -> f64 {
-        self.swarm.potential()
-    }
-
-    /// Whether this is KLI: one pinned leader and one follower (MATH.md, "The swarm").
-    #[wasm_bindgen(getter, js_name = isKli)]
-    pub fn is_kli(&self) -> bool {
-        self.options.graph == Graph::Leader && self.swarm.len() == 2 && self.options.leaders == 1
-    }
-
-    /// The follower's KLI clock `τ = K t / 2` (meaningful when `isKli`).
-    #[wasm_bindgen(getter, js_name = kliTime)]
-    pub fn kli_time(&self) -> f64 {
-        0.5 * self.options.coupling * self.swarm.time()
     }
 
     /// The sweep (the final `R` at each coupling, the current coupling marked) as an SVG
@@ -120,15 +83,15 @@ impl SwarmDemo {
         coupling: f64,
         time: f64,
     ) -> JsResult<f64> {
-        let read = read_swarm_options(&JsValue::from(options)).map_err(throw)?.0;
+        let read = read_swarm_options(&JsValue::from(options))?.0;
         let options = SwarmOptions { coupling, ..read };
-        let mut swarm = Swarm::new(&options).map_err(throw)?;
-        let steps = whole_steps(&(time / 0.05).round().into()).map_err(throw)?;
+        let mut swarm = Swarm::new(&options)?;
+        let steps = whole_steps(&(time / 0.05).round().into())?;
         let settle = steps - steps / 5;
-        swarm.step(0.05, settle).map_err(throw)?;
+        swarm.step(0.05, settle)?;
         let mut sum = 0.0;
         for _ in settle..steps {
-            swarm.step(0.05, 1).map_err(throw)?;
+            swarm.step(0.05, 1)?;
             sum += swarm.order_parameter();
         }
         Ok(if steps > settle { sum / (steps - settle) as f64 } else { swarm.order_parameter() })
@@ -151,18 +114,72 @@ impl SwarmDemo {
     }
 }
 
-crate::figure_class!(SwarmDemo);
+crate::figure_class!(SwarmDemo, "SwarmSummary");
+
+/// The swarm's time: the model's, with no end.
+impl Timed for SwarmDemo {
+    fn span(&self) -> (f64, f64) {
+        (0.0, f64::INFINITY)
+    }
+
+    fn time(&self) -> f64 {
+        self.swarm.time()
+    }
+
+    /// Runs on towards `t` (the swarm cannot go back), at most [`TASK_WORK`] a call.
+    fn seek(&mut self, t: f64) -> bool {
+        let left = if t.is_finite() { ((t - self.swarm.time()) / DT).round() } else { 0.0 };
+        if left < 1.0 {
+            return true;
+        }
+        let steps = left.min(self.work(TASK_WORK));
+        self.steps(steps) && steps >= left
+    }
+
+    /// [`PACE`] model time a second, at most [`FRAME_WORK`] a call (what the bound cuts off is
+    /// not owed: the swarm slows down rather than falls behind). Never at an end.
+    fn advance(&mut self, seconds: f64) -> bool {
+        if seconds.is_finite() && seconds > 0.0 {
+            self.owed = (self.owed + seconds * PACE / DT).min(self.work(FRAME_WORK));
+            let steps = self.owed.floor();
+            if steps >= 1.0 && self.steps(steps) {
+                self.owed -= steps;
+            }
+        }
+        false
+    }
+}
 
 /// The swarm page's views: the oscillators' Hopf points, the first oscillators as objects, and
-/// the history of R, λmax and the potential; its data, the swarm now.
+/// the history of R, λmax and the potential; its time, the model's, with no end; its data, the
+/// swarm now.
 impl Figure for SwarmDemo {
-    const VIEWS: &'static [&'static str] = &["hopf", "objects", "plots"];
-    const TITLES: &'static [&'static str] = &[
-        "The swarm's Hopf points on S²",
-        "The first oscillators as objects",
-        "R, λmax and the potential over time",
+    const VIEWS: &'static [View] = &[
+        View { name: "hopf", title: "The swarm's Hopf points on S²", motion: Motion::Moving },
+        View { name: "objects", title: "The first oscillators as objects", motion: Motion::Moving },
+        View {
+            name: "plots",
+            title: "R, λmax and the potential over time",
+            motion: Motion::Moving,
+        },
     ];
+    const NAMES: &'static [&'static str] = &names::<3>(Self::VIEWS);
     const EXPORT: &'static str = "swarm";
+
+    /// `{ count, orderParameter, rotationOrder, potential, kli, kliTime }`: the order
+    /// parameter R, λmax, the potential, whether this is KLI (one pinned leader and one
+    /// follower: MATH.md, "The swarm"), and then the follower's KLI clock `τ = K t / 2`.
+    fn summary(&self) -> JsValue {
+        let s = &self.swarm;
+        Record::new()
+            .set("count", s.len() as f64)
+            .set("orderParameter", s.order_parameter())
+            .set("rotationOrder", s.rotation_order())
+            .set("potential", s.potential())
+            .set("kli", self.is_kli())
+            .set("kliTime", self.kli_time())
+            .end()
+    }
 
     fn paint(&self, view: usize, layer: Layer, pen: &Pen, frame: &Frame) {
         if !layer.still() {
@@ -206,6 +223,32 @@ impl Figure for SwarmDemo {
 }
 
 impl SwarmDemo {
+    fn record(&mut self) {
+        let s = &self.swarm;
+        self.history.push(s.time(), s.order_parameter(), s.rotation_order(), s.potential());
+    }
+
+    /// Steps a bound of `work` oscillator steps allows (at least one).
+    fn work(&self, work: f64) -> f64 {
+        (work / self.swarm.len() as f64).floor().max(1.0)
+    }
+
+    /// `steps` (a whole number from 1 to a bound of work) steps of [`DT`], then one sample of
+    /// the history; false if the swarm refused (it does not: [`DT`] is a valid step).
+    fn steps(&mut self, steps: f64) -> bool {
+        let done = self.swarm.step(DT, steps as usize).is_ok();
+        self.record();
+        done
+    }
+
+    fn is_kli(&self) -> bool {
+        self.options.graph == Graph::Leader && self.swarm.len() == 2 && self.options.leaders == 1
+    }
+
+    fn kli_time(&self) -> f64 {
+        0.5 * self.options.coupling * self.swarm.time()
+    }
+
     /// The swarm's options and seed, and the columns' units.
     fn provenance(&self) -> Provenance {
         let o = &self.options;
@@ -223,7 +266,7 @@ impl SwarmDemo {
                 ("frequencySpread", Value::Number(o.frequency_spread)),
                 ("startSpread", start),
                 ("seed", Value::Number(o.seed as f64)),
-                ("dt", self.dt.map_or(Value::Text("no step taken yet".into()), Value::Number)),
+                ("dt", Value::Number(DT)),
                 ("integrator", Value::Text("geodesic RK4".into())),
             ],
             units: &[
@@ -270,3 +313,18 @@ impl SwarmDemo {
         draw_swarm_objects(pen, width, height, &self.mesh, &objects);
     }
 }
+
+#[wasm_bindgen(typescript_custom_section)]
+const TYPES: &'static str = r#"
+/** What a swarm sums up to now: its count, the order parameter R (0 to 1), λmax (1/4 to 1), the
+ *  potential, whether it is KLI (one pinned leader, one follower) and the follower's clock
+ *  τ = Kt/2. */
+export interface SwarmSummary {
+  count: number;
+  orderParameter: number;
+  rotationOrder: number;
+  potential: number;
+  kli: boolean;
+  kliTime: number;
+}
+"#;

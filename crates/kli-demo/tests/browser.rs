@@ -229,3 +229,120 @@ fn the_svg_backend_draws_the_same_curve_as_the_canvas() {
     }
     assert!(checked > 20, "{checked} points checked");
 }
+
+/// The text elements of an SVG document: their boxes (by the canvas's measure of the pen's
+/// font, anchored as the SVG anchors them, the baseline central) and their text.
+fn text_boxes(svg: &str, ctx: &CanvasRenderingContext2d) -> Vec<([f64; 4], String)> {
+    let attribute = |element: &str, name: &str| -> String {
+        let start = element.find(&format!(" {name}=\"")).map(|i| i + name.len() + 3);
+        start.and_then(|s| element[s..].find('"').map(|e| element[s..s + e].to_owned())).unwrap()
+    };
+    let unescape = |t: &str| {
+        t.replace("&lt;", "<").replace("&gt;", ">").replace("&quot;", "\"").replace("&amp;", "&")
+    };
+    svg.split("<text ")
+        .skip(1)
+        .map(|rest| {
+            let (element, after) = rest.split_once('>').unwrap();
+            let element = &format!(" {element}");
+            let text = unescape(after.split_once("</text>").unwrap().0);
+            let number = |name: &str| attribute(element, name).parse::<f64>().unwrap();
+            let (x, y, size) = (number("x"), number("y"), number("font-size"));
+            ctx.set_font(&format!("{size}px system-ui, -apple-system, 'Segoe UI', sans-serif"));
+            let width = ctx.measure_text(&text).unwrap().width();
+            let left = match attribute(element, "text-anchor").as_str() {
+                "middle" => x - width / 2.0,
+                "end" => x - width,
+                _ => x,
+            };
+            ([left, y - size / 2.0, left + width, y + size / 2.0], text)
+        })
+        .collect()
+}
+
+/// Every view of every page class, at the pages' sizes on a wide screen and at 390 px wide:
+/// no two labels of a figure overlap (by more than half a pixel each way).
+#[wasm_bindgen_test]
+fn no_two_labels_of_a_figure_overlap() {
+    use js_sys::{Float64Array, Object, Reflect};
+    use kli_demo::{Demo, KeyframesDemo, SwarmDemo};
+    use wasm_bindgen::JsValue;
+
+    let frame = |width: f64, height: f64, t: f64| {
+        let frame = Object::new();
+        for (key, value) in [("width", width), ("height", height), ("t", t)] {
+            Reflect::set(&frame, &key.into(), &value.into()).unwrap();
+        }
+        JsValue::from(frame)
+    };
+    let quaternion = |q: [f64; 4]| JsValue::from(Float64Array::from(&q[..]));
+    let paper = Demo::new(
+        quaternion([0.0, 0.0, 0.0, 1.0]).unchecked_ref(),
+        quaternion([0.5; 4]).unchecked_ref(),
+        None,
+    )
+    .unwrap();
+    let tumble = [
+        1.0, 0.0, 0.0, 0.0, 0.8, 0.6, 0.0, 0.0, 0.5, 0.5, 0.5, 0.5, 0.0, 0.6, 0.8, 0.0, -0.3, 0.1,
+        0.7, 0.64, 0.2, -0.6, 0.3, 0.72,
+    ];
+    let keyframes = KeyframesDemo::new(&tumble, &[], 1.0).unwrap();
+    let options = Object::new();
+    Reflect::set(&options, &"count".into(), &500.0.into()).unwrap();
+    let swarm = SwarmDemo::new(Some(JsValue::from(options).unchecked_into())).unwrap();
+    // (view, wide screen size, phone size) of each class, as the pages lay them out.
+    let sphere = [(560.0, 420.0), (358.0, 268.0)];
+    let svgs: Vec<(String, String)> = [
+        ("object", [(560.0, 420.0), (358.0, 420.0)]),
+        ("hopf", sphere),
+        ("filmstrip", [(1100.0, 220.0), (358.0, 120.0)]),
+        ("plots", [(1100.0, 360.0), (358.0, 420.0)]),
+    ]
+    .iter()
+    .flat_map(|(view, sizes)| {
+        sizes.map(|(w, h)| (format!("kli {view} {w}×{h}"), paper.to_svg(view, &frame(w, h, 3.0))))
+    })
+    .chain(
+        [
+            ("objects", [(1100.0, 300.0), (358.0, 600.0)]),
+            ("hopf", sphere),
+            ("plots", [(1100.0, 360.0), (358.0, 420.0)]),
+        ]
+        .iter()
+        .flat_map(|(view, sizes)| {
+            sizes.map(|(w, h)| {
+                (format!("keyframes {view} {w}×{h}"), keyframes.to_svg(view, &frame(w, h, 1.5)))
+            })
+        }),
+    )
+    .chain(
+        [
+            ("hopf", sphere),
+            ("objects", [(560.0, 300.0), (358.0, 300.0)]),
+            ("plots", [(560.0, 300.0), (358.0, 300.0)]),
+        ]
+        .iter()
+        .flat_map(|(view, sizes)| {
+            sizes.map(|(w, h)| {
+                (format!("swarm {view} {w}×{h}"), swarm.to_svg(view, &frame(w, h, 0.0)))
+            })
+        }),
+    )
+    .map(|(name, svg)| (name, svg.unwrap()))
+    .collect();
+    let ctx = canvas(1, 1);
+    let mut overlaps = Vec::new();
+    for (name, svg) in &svgs {
+        let boxes = text_boxes(svg, &ctx);
+        assert!(!boxes.is_empty(), "{name}: no labels");
+        for (i, (a, text_a)) in boxes.iter().enumerate() {
+            for (b, text_b) in &boxes[i + 1..] {
+                let shared = |lo: usize, hi: usize| a[hi].min(b[hi]) - a[lo].max(b[lo]);
+                if shared(0, 2) > 0.5 && shared(1, 3) > 0.5 {
+                    overlaps.push(format!("{name}: \"{text_a}\" and \"{text_b}\""));
+                }
+            }
+        }
+    }
+    assert!(overlaps.is_empty(), "labels overlap:\n{}", overlaps.join("\n"));
+}

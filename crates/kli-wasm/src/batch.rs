@@ -10,9 +10,9 @@ use kli::batch::{BatchKind, check_lengths, kli_sample_into, run_batch};
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
-use crate::error::{JsResult, throw};
-use crate::options::{KliOptionsObject, read_options};
-use crate::read::{Order, QuaternionLike, quaternion};
+use crate::error::JsResult;
+use crate::options::{KliOptionsObject, pair_and_options, read_options};
+use crate::read::{Order, QuaternionLike};
 use crate::typed::{F64Array, numbers};
 
 /// Pairs per chunk: 4096 × 13 numbers × 8 bytes = 416 KB of scratch.
@@ -93,10 +93,10 @@ fn run(
     out: &JsValue,
     options: Option<KliOptionsObject>,
 ) -> JsResult<Float64Array> {
-    let (options, order) = read_options(options).map_err(throw)?;
+    let (options, order) = read_options(options)?;
     let shortest_path = kind == BatchKind::Nlerp || options.shortest_path;
     let out = run_arrays(kind, starts, ends, parameters, out, shortest_path)
-        .map_err(|e| throw(order.batch_error(e)))?;
+        .map_err(|e| order.batch_error(e))?;
     Ok(out.into_array())
 }
 
@@ -150,12 +150,10 @@ pub fn kli_sample(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | ArrayLike<number>")] times: &JsValue,
     options: Option<KliOptionsObject>,
 ) -> JsResult<Float64Array> {
-    let (options, order) = read_options(options).map_err(throw)?;
-    let p = quaternion("p", p, order).map_err(throw)?;
-    let r = quaternion("r", r, order).map_err(throw)?;
-    let times = numbers("times", times, MAX_TIMES).map_err(throw)?;
+    let (p, r, options, order) = pair_and_options(p, r, options)?;
+    let times = numbers("times", times, MAX_TIMES)?;
     let mut out = vec![0.0; 4 * times.len()];
-    kli_sample_into(p, r, &times, &mut out, options.shortest_path).map_err(throw)?;
+    kli_sample_into(p, r, &times, &mut out, options.shortest_path)?;
     if order == Order::Xyzw {
         out.chunks_exact_mut(4).for_each(|q| q.rotate_left(1));
     }

@@ -5,7 +5,7 @@ use js_sys::Float64Array;
 use kli::KliError;
 use wasm_bindgen::prelude::*;
 
-use crate::error::{JsResult, number, throw};
+use crate::error::{JsResult, Thrown, number};
 use crate::read::number_argument;
 
 /// An f64 array in the module's own memory: pass its `view` to the batch calls and they read and
@@ -26,7 +26,7 @@ impl Float64Buffer {
     pub fn new(
         #[wasm_bindgen(unchecked_param_type = "number")] length: &JsValue,
     ) -> JsResult<Float64Buffer> {
-        let length = number_argument("length", length).map_err(throw)?;
+        let length = number_argument("length", length)?;
         if !(length.is_finite()
             && length >= 0.0
             && length.fract() == 0.0
@@ -34,12 +34,12 @@ impl Float64Buffer {
         {
             let problem =
                 format!("must be a whole number from 0 to {MAX_BUFFER} (got {})", number(length));
-            return Err(throw(KliError::invalid("length", problem)));
+            return Err(KliError::invalid("length", problem).into());
         }
         let mut data = Vec::new();
         data.try_reserve_exact(length as usize).map_err(|_| {
             let problem = format!("{} numbers do not fit in the module's memory", number(length));
-            throw(KliError::invalid("length", problem))
+            Thrown::from(KliError::invalid("length", problem))
         })?;
         data.resize(length as usize, 0.0);
         Ok(Float64Buffer { data })

@@ -6,8 +6,25 @@ use js_sys::{Error, Reflect};
 use kli::KliError;
 use wasm_bindgen::JsValue;
 
-/// What every fallible call returns; the error is the JavaScript `Error` to throw.
-pub type JsResult<T> = Result<T, JsValue>;
+/// What every fallible call returns; its error is the JavaScript `Error` to throw.
+pub type JsResult<T> = Result<T, Thrown>;
+
+/// A JavaScript `Error` on its way out to the caller. The one conversion from a [`KliError`]
+/// (`?` makes it), and wasm-bindgen throws it.
+#[derive(Debug)]
+pub struct Thrown(JsValue);
+
+impl From<KliError> for Thrown {
+    fn from(e: KliError) -> Thrown {
+        Thrown(throw(e))
+    }
+}
+
+impl From<Thrown> for JsValue {
+    fn from(thrown: Thrown) -> JsValue {
+        thrown.0
+    }
+}
 
 /// The JavaScript name of a Rust argument name: camelCase (`max_time` → `maxTime`); an element
 /// such as `starts[3]` keeps its index.
@@ -31,8 +48,9 @@ pub fn number(x: f64) -> String {
     js_sys::Number::from(x).to_string_with_radix(10).map(String::from).unwrap_or_default()
 }
 
-/// The `Error` to throw for `e`.
-pub fn throw(e: KliError) -> JsValue {
+/// The `Error` to throw for `e`: its message in JavaScript's names and numbers, and its
+/// `argument`, `kind` and `component` as properties.
+fn throw(e: KliError) -> JsValue {
     let error = Error::new(&e.message(&js_name, &number));
     let set = |key: &str, value: JsValue| Reflect::set(&error, &key.into(), &value).is_ok();
     set("argument", js_name(e.argument()).into());

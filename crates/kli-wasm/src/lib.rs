@@ -11,8 +11,10 @@
 //! objects. Results are `Float64Array`s in the call's order.
 //! Names are the Rust names in camelCase (`max_time` is `maxTime`), everywhere.
 //!
-//! Files: [`error`] (errors and number formatting), [`read`] (JavaScript values in), [`options`]
-//! (options objects); with the `api` feature (the `kli` entry) `calls` (the single calls), `path`
+//! Files: [`error`] (errors and number formatting, the one conversion of a `KliError` to a
+//! JavaScript `Error`), [`value`] (JavaScript values touched without a throw crossing Rust's
+//! stack), [`typed`] (typed arrays and array-likes), [`read`] (numbers, quaternions and vectors
+//! in), [`options`] (options objects, and a pair of rotations with its options); with the `api` feature (the `kli` entry) `calls` (the single calls), `path`
 //! (the `KliPath` class), `batch` (many pairs a call), `buffer` (`Float64Buffer`); with `swarm`
 //! (the `kli/swarm` entry) `swarm` (`LoheSwarm`). Crates that add to the module (the demo page's
 //! `kli-demo`) use [`error`], [`read`] and [`options`] too.
@@ -33,6 +35,7 @@ pub mod spline;
 #[cfg(feature = "swarm")]
 pub mod swarm;
 pub mod typed;
+pub mod value;
 
 #[cfg(feature = "api")]
 pub use batch::{kli_exact_batch, kli_sample, nlerp_batch, slerp_batch};

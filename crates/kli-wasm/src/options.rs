@@ -2,13 +2,14 @@
 //! give the defaults, unknown keys are refused, and each key is checked for its type here and
 //! for its value by the core ([`kli::KliOptions::validate`]).
 
+use glam::DQuat;
 use js_sys::Array;
 use kli::{Integrator, KliError, KliOptions};
 use wasm_bindgen::prelude::*;
 
 use crate::error::{js_name, number};
-use crate::read::{Order, describe, is_array};
-use crate::typed::{get, thrown};
+use crate::read::{Order, QuaternionLike, quaternion};
+use crate::value::{describe, get, is_array, unreadable};
 
 #[wasm_bindgen]
 extern "C" {
@@ -51,6 +52,17 @@ pub fn read_options(value: Option<KliOptionsObject>) -> Result<(KliOptions, Orde
     Ok((options, order))
 }
 
+/// The options, then `p` and `r` in the options' `order`, read and checked in that order: what
+/// every call on a pair of rotations reads first (the single calls, `kliSample`, the KLI page).
+pub fn pair_and_options(
+    p: &QuaternionLike,
+    r: &QuaternionLike,
+    options: Option<KliOptionsObject>,
+) -> Result<(DQuat, DQuat, KliOptions, Order), KliError> {
+    let (options, order) = read_options(options)?;
+    Ok((quaternion("p", p, order)?, quaternion("r", r, order)?, options, order))
+}
+
 /// An options object being read: a plain object whose keys are all among `keys` (Rust names;
 /// JavaScript's are their camelCase), each read by its type here and checked by the core.
 pub struct Fields {
@@ -72,9 +84,7 @@ impl Fields {
             let problem = format!("must be an object like {example} (got {})", describe(&object));
             return Err(KliError::invalid("options", problem));
         }
-        let own = object_keys(&object).map_err(|e| {
-            KliError::invalid("options", format!("could not be read ({})", thrown(&e)))
-        })?;
+        let own = object_keys(&object).map_err(|e| unreadable("options", &e))?;
         for key in own.iter() {
             let key = key.as_string().unwrap_or_default();
             if !keys.iter().any(|k| js_name(k) == key) {

@@ -3,7 +3,7 @@
 use js_sys::Float64Array;
 use wasm_bindgen::prelude::*;
 
-use crate::error::{JsResult, throw};
+use crate::error::JsResult;
 use crate::read::{Order, number_argument};
 
 /// The path of Algorithm 1: samples at `0, δ, …, T` and the exact solution beside them.
@@ -72,7 +72,7 @@ impl JsKliPath {
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] t: &JsValue,
     ) -> JsResult<Float64Array> {
-        let t = number_argument("t", t).map_err(throw)?;
-        self.path.exact_at(t).map(|q| self.order.array(q)).map_err(throw)
+        let t = number_argument("t", t)?;
+        self.path.exact_at(t).map(|q| self.order.array(q)).map_err(Into::into)
     }
 }

@@ -1,6 +1,6 @@
-//! JavaScript values in: numbers, quaternions and vectors from Arrays or typed arrays, and short
-//! descriptions of values for messages. Argument names are the Rust names ([`crate::error`]
-//! turns them into JavaScript's).
+//! JavaScript values in: numbers, quaternions and vectors from Arrays or typed arrays, in the
+//! caller's [`Order`]. Argument names are the Rust names ([`crate::error`] turns them into
+//! JavaScript's).
 
 use glam::{DQuat, DVec3};
 use js_sys::{Float64Array, Reflect};
@@ -8,8 +8,8 @@ use kli::quaternion::{from_wxyz, to_wxyz, unit};
 use kli::{ErrorKind, KliError, Shape};
 use wasm_bindgen::prelude::*;
 
-use crate::error::number;
-use crate::typed::get;
+use crate::typed::{Refused, read_numbers};
+use crate::value::{describe, get};
 
 #[wasm_bindgen]
 extern "C" {
@@ -20,47 +20,6 @@ extern "C" {
     /// `[x, y, z]`: an Array or typed array of 3 numbers.
     #[wasm_bindgen(typescript_type = "Vector3Like")]
     pub type Vector3Like;
-}
-
-#[wasm_bindgen]
-extern "C" {
-    /// `Array.isArray`, which throws for a revoked Proxy.
-    #[wasm_bindgen(catch, js_namespace = Array, js_name = isArray)]
-    pub fn is_array(value: &JsValue) -> Result<bool, JsValue>;
-}
-
-/// A short description of a JavaScript value for error messages. Nothing here can throw: an
-/// array's `length` (a Proxy's trap) is read through a caught `Reflect.get`.
-#[inline(never)]
-pub fn describe(value: &JsValue) -> String {
-    if let Some(n) = value.as_f64() {
-        number(n)
-    } else if let Some(s) = value.as_string() {
-        format!("\"{s}\", a string")
-    } else if let Some(b) = value.as_bool() {
-        format!("{b}")
-    } else if value.is_null() {
-        "null".into()
-    } else if value.is_undefined() {
-        "undefined".into()
-    } else if crate::typed::is_view(value) {
-        let length = crate::typed::typed_length(value).unwrap_or(f64::NAN);
-        // Its constructor's name, read with care (only for the message).
-        let kind = Reflect::get(value, &"constructor".into())
-            .and_then(|c| Reflect::get(&c, &"name".into()))
-            .ok()
-            .and_then(|n| n.as_string())
-            .unwrap_or_else(|| "typed array".into());
-        let article = if matches!(kind.as_bytes().first(), Some(b'I' | b'U')) { "an" } else { "a" };
-        format!("{article} {kind} of length {}", number(length))
-    } else if is_array(value).unwrap_or(false) {
-        match Reflect::get(value, &"length".into()).ok().and_then(|l| l.as_f64()) {
-            Some(length) => format!("an array of length {}", number(length)),
-            None => "an array".into(),
-        }
-    } else {
-        format!("a value of type {}", value.js_typeof().as_string().unwrap_or_default())
-    }
 }
 
 /// A number argument: a JavaScript number (not a string, a BigInt or an object), finite or not
@@ -88,24 +47,19 @@ pub fn numbers<const N: usize>(
 #[inline(never)]
 fn exactly(name: &str, value: &JsValue, shape: &str, out: &mut [f64]) -> Result<(), KliError> {
     let n = out.len();
-    let problem = match crate::typed::numbers(name, value, n) {
+    let problem = match read_numbers(name, value, n) {
         Ok(numbers) if numbers.len() == n => {
             out.copy_from_slice(&numbers);
             return Ok(());
         }
-        Err(e) => match e.kind() {
-            // An element that is not a number: "p must hold 4 numbers [w, x, y, z]: element 0
-            // is …"; a getter that threw: as it is.
-            ErrorKind::Invalid(problem) if problem.starts_with(crate::typed::ELEMENT) => {
-                let element = problem.strip_prefix(crate::typed::ELEMENT).unwrap_or_default();
-                format!("must hold {n} numbers {shape}: element {element}")
-            }
-            ErrorKind::Invalid(problem) if problem.starts_with(crate::typed::UNREADABLE) => {
-                return Err(e);
-            }
-            _ => format!("must be an array of {n} numbers {shape} (got {})", describe(value)),
-        },
-        Ok(_) => format!("must be an array of {n} numbers {shape} (got {})", describe(value)),
+        // "p must hold 4 numbers [w, x, y, z]: element 0 is …"
+        Err(Refused::Element { index, got }) => {
+            format!("must hold {n} numbers {shape}: element {index} is {got}")
+        }
+        Err(Refused::Unreadable(e)) => return Err(e),
+        Err(Refused::Shape(_)) | Ok(_) => {
+            format!("must be an array of {n} numbers {shape} (got {})", describe(value))
+        }
     };
     Err(KliError::invalid(name, problem))
 }

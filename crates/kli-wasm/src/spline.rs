@@ -10,10 +10,11 @@ use kli::{KliError, Requirement, require};
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
-use crate::error::{JsResult, throw};
+use crate::error::JsResult;
 use crate::options::Fields;
-use crate::read::{Order, describe, is_array, number_argument, quaternion};
-use crate::typed::{F64Array, float64_length, get, is_view, numbers};
+use crate::read::{Order, number_argument, quaternion};
+use crate::typed::{F64Array, float64_length, numbers};
+use crate::value::{describe, get, is_array, is_view};
 
 #[wasm_bindgen(typescript_custom_section)]
 const TYPES: &'static str = r#"
@@ -120,9 +121,9 @@ impl RotationSpline {
         #[wasm_bindgen(unchecked_param_type = "number")] t: &JsValue,
         #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | null")] out: &JsValue,
     ) -> JsResult<Float64Array> {
-        let t = finite_time("t", t).map_err(throw)?;
+        let t = finite_time("t", t)?;
         let q = self.order.write(self.curve().at(t));
-        fill(out, &q).map_err(throw)
+        fill(out, &q).map_err(Into::into)
     }
 
     /// `q` at each of `times` (Float64Array or array), into `out` (Float64Array(4n)) when given,
@@ -162,7 +163,7 @@ impl RotationSpline {
                 None => Float64Array::from(&values[..]),
             })
         };
-        sample().map_err(throw)
+        sample().map_err(Into::into)
     }
 
     /// The world-frame angular velocity ω at `t` (`q' = ½ ω q`), as [x, y, z]: into `out` (a
@@ -173,8 +174,8 @@ impl RotationSpline {
         #[wasm_bindgen(unchecked_param_type = "number")] t: &JsValue,
         #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | null")] out: &JsValue,
     ) -> JsResult<Float64Array> {
-        let t = finite_time("t", t).map_err(throw)?;
-        fill(out, &self.curve().angular_velocity(t).to_array()).map_err(throw)
+        let t = finite_time("t", t)?;
+        fill(out, &self.curve().angular_velocity(t).to_array()).map_err(Into::into)
     }
 
     /// The keys as used (normalised, signs made consistent), 4m numbers in the spline's `order`.
@@ -280,7 +281,7 @@ pub fn kli_spline(
         let keys = read_keys(keys, times, order)?;
         Ok(RotationSpline { kind: Kind::Chain(Box::new(KliSpline::new(keys, &chain)?)), order })
     };
-    keys_and_options().map_err(throw)
+    keys_and_options().map_err(Into::into)
 }
 
 /// The keys and the `{ times, order }` options of squadSpline and slerpSpline.
@@ -300,7 +301,7 @@ pub fn squad_spline(
     keys: &KeysLike,
     options: Option<SplineOptionsObject>,
 ) -> JsResult<RotationSpline> {
-    let (keys, order) = keys_and_times(keys, options).map_err(throw)?;
+    let (keys, order) = keys_and_times(keys, options)?;
     Ok(RotationSpline { kind: Kind::Squad(Squad::new(keys)), order })
 }
 
@@ -310,6 +311,6 @@ pub fn slerp_spline(
     keys: &KeysLike,
     options: Option<SplineOptionsObject>,
 ) -> JsResult<RotationSpline> {
-    let (keys, order) = keys_and_times(keys, options).map_err(throw)?;
+    let (keys, order) = keys_and_times(keys, options)?;
     Ok(RotationSpline { kind: Kind::Slerp(PiecewiseSlerp::new(keys)), order })
 }

@@ -6,7 +6,7 @@ use kli::KliError;
 use kli::swarm::{Graph, MAX_COUNT, Swarm, SwarmOptions};
 use wasm_bindgen::prelude::*;
 
-use crate::error::{JsResult, throw};
+use crate::error::JsResult;
 use crate::options::{Fields, whole};
 use crate::read::{Order, number_argument};
 use crate::typed::numbers;
@@ -108,8 +108,8 @@ impl JsLoheSwarm {
     pub fn new(
         #[wasm_bindgen(unchecked_optional_param_type = "SwarmOptions | null")] options: &JsValue,
     ) -> JsResult<JsLoheSwarm> {
-        let (options, order) = read_swarm_options(options).map_err(throw)?;
-        Ok(Self { swarm: Swarm::new(&options).map_err(throw)?, order })
+        let (options, order) = read_swarm_options(options)?;
+        Ok(Self { swarm: Swarm::new(&options)?, order })
     }
 
     /// `steps` (default 1, a whole number up to 1e6) geodesic RK4 steps of `dt` (> 0, at most
@@ -119,9 +119,9 @@ impl JsLoheSwarm {
         #[wasm_bindgen(unchecked_param_type = "number")] dt: &JsValue,
         #[wasm_bindgen(unchecked_optional_param_type = "number")] steps: &JsValue,
     ) -> JsResult<()> {
-        let dt = number_argument("dt", dt).map_err(throw)?;
-        let steps = whole_steps(steps).map_err(throw)?;
-        self.swarm.step(dt, steps).map_err(throw)
+        let dt = number_argument("dt", dt)?;
+        let steps = whole_steps(steps)?;
+        self.swarm.step(dt, steps).map_err(Into::into)
     }
 
     /// The time run so far.
@@ -149,18 +149,18 @@ impl JsLoheSwarm {
         &mut self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | ArrayLike<number>")] values: &JsValue,
     ) -> JsResult<()> {
-        let values = numbers("quaternions", values, 4 * self.swarm.len()).map_err(throw)?;
+        let values = numbers("quaternions", values, 4 * self.swarm.len())?;
         if values.len() != 4 * self.swarm.len() {
             let problem = format!(
                 "must hold 4 numbers per oscillator: {} (got {})",
                 4 * self.swarm.len(),
                 values.len()
             );
-            return Err(throw(KliError::invalid("quaternions", problem)));
+            return Err(KliError::invalid("quaternions", problem).into());
         }
         let quaternions: Vec<DQuat> =
             values.chunks_exact(4).map(|q| self.order.read([q[0], q[1], q[2], q[3]])).collect();
-        self.swarm.set_quaternions(&quaternions).map_err(|e| throw(self.order.error(e)))
+        self.swarm.set_quaternions(&quaternions).map_err(|e| self.order.error(e).into())
     }
 
     /// `R = |m|`, the length of the mean quaternion, in [0, 1].

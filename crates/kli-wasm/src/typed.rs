@@ -1,26 +1,19 @@
-//! Typed arrays and array-likes read so that no JavaScript exception can cross Rust's stack.
-//!
-//! A JavaScript exception thrown while Rust is on the stack skips Rust's destructors: borrow
-//! flags stay set (the object is bricked) and externref slots leak until the module traps. So
-//! every JavaScript operation here that can throw is an import marked `catch`. Numbers are read
+//! Typed arrays and array-likes read so that no JavaScript exception can cross Rust's stack
+//! (every operation that can throw is a caught import: [`crate::value`]). Numbers are read
 //! from a typed array by copying it (`new Float64Array(source)`, which reads its internal slots:
 //! an own `length` property or a changed prototype cannot make it lie), and the caller's
 //! Float64Arrays are written through fresh views of their buffer, which fail (an Error, not a
 //! trap) if their claimed facts are not their own.
 
-use js_sys::{Float64Array, Reflect};
+use js_sys::Float64Array;
 use kli::KliError;
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
-use crate::read::describe;
+use crate::value::{Caller, describe, get, is_view, typed_length, unreadable};
 
 #[wasm_bindgen]
 extern "C" {
-    /// True for typed arrays and DataViews (their internal slot; never throws).
-    #[wasm_bindgen(js_namespace = ArrayBuffer, js_name = isView)]
-    pub fn is_view(value: &JsValue) -> bool;
-
     /// A Float64Array made here, so none of its properties can be the caller's.
     #[wasm_bindgen(js_name = Float64Array)]
     type Fresh;
@@ -32,16 +25,6 @@ extern "C" {
     /// `new Float64Array(buffer, byteOffset, length)`: a fresh view, so no species lookup.
     #[wasm_bindgen(catch, constructor, js_class = "Float64Array")]
     fn view_of(buffer: &JsValue, byte_offset: f64, length: f64) -> Result<Fresh, JsValue>;
-
-    /// The caller's Float64Array, its properties read with every exception caught.
-    #[wasm_bindgen(js_name = Float64Array)]
-    type Caller;
-    #[wasm_bindgen(catch, method, getter)]
-    fn length(this: &Caller) -> Result<f64, JsValue>;
-    #[wasm_bindgen(catch, method, getter, js_name = byteOffset)]
-    fn byte_offset(this: &Caller) -> Result<f64, JsValue>;
-    #[wasm_bindgen(catch, method, getter)]
-    fn buffer(this: &Caller) -> Result<JsValue, JsValue>;
 }
 
 /// A copy of the typed array `value` (any element type but BigInt), or `None` if it is not one.
@@ -56,16 +39,33 @@ pub fn copy(value: &JsValue) -> Option<Float64Array> {
     (copy.length() > 0 || typed_length(value) == Some(0.0)).then_some(copy)
 }
 
-/// A typed array's length, for messages (its own `length` property, read with care).
-#[inline(never)]
-pub fn typed_length(value: &JsValue) -> Option<f64> {
-    value.unchecked_ref::<Caller>().length().ok()
-}
-
 /// "must be …" with what was received.
 #[inline(never)]
 fn refused(name: &str, wanted: &str, value: &JsValue) -> KliError {
     KliError::invalid(name, format!("must be {wanted} (got {})", describe(value)))
+}
+
+/// Why [`read_numbers`] refused a value, said where it arose so that a caller can word it for
+/// its own argument (a quaternion's "must hold 4 numbers [w, x, y, z]: element 2 is …").
+pub enum Refused {
+    /// Element `index` is not a number; `got` describes it.
+    Element { index: u32, got: String },
+    /// Reading the value threw (a getter, a Proxy's trap): the Error to pass on as it is.
+    Unreadable(KliError),
+    /// Not a typed array or array-like of numbers, or longer than allowed.
+    Shape(KliError),
+}
+
+impl Refused {
+    /// The Error, worded for any list of numbers.
+    pub fn error(self, name: &str) -> KliError {
+        match self {
+            Refused::Element { index, got } => {
+                KliError::invalid(name, format!("must hold numbers: element {index} is {got}"))
+            }
+            Refused::Unreadable(e) | Refused::Shape(e) => e,
+        }
+    }
 }
 
 /// Up to `max` numbers from any typed array of numbers (Float64Array, Float32Array, Int32Array…,
@@ -73,63 +73,49 @@ fn refused(name: &str, wanted: &str, value: &JsValue) -> KliError {
 /// they are finite is the caller's to check.
 #[inline(never)]
 pub fn numbers(name: &str, value: &JsValue, max: usize) -> Result<Vec<f64>, KliError> {
+    read_numbers(name, value, max).map_err(|refused| refused.error(name))
+}
+
+/// [`numbers`], with why it refused as a [`Refused`].
+#[inline(never)]
+pub fn read_numbers(name: &str, value: &JsValue, max: usize) -> Result<Vec<f64>, Refused> {
     let wanted = "a typed array or an array of numbers";
+    let shape = |e: KliError| Refused::Shape(e);
     if is_view(value) {
         // Its own length first, so a huge array is refused before it is copied.
         if let Some(length) = typed_length(value).filter(|&n| n > max as f64) {
-            return Err(too_long(name, length, max));
+            return Err(shape(too_long(name, length, max)));
         }
-        let Some(copy) = copy(value) else { return Err(refused(name, wanted, value)) };
+        let Some(copy) = copy(value) else { return Err(shape(refused(name, wanted, value))) };
         if copy.length() as usize > max {
-            return Err(too_long(name, copy.length() as f64, max));
+            return Err(shape(too_long(name, copy.length() as f64, max)));
         }
         return Ok(copy.to_vec());
     }
     if !value.is_object() {
-        return Err(refused(name, wanted, value));
+        return Err(shape(refused(name, wanted, value)));
     }
-    let length = get(name, value, &"length".into())?;
+    let length = get(name, value, &"length".into()).map_err(Refused::Unreadable)?;
     let n = length.as_f64().filter(|n| n.fract() == 0.0 && *n >= 0.0);
-    let Some(n) = n else { return Err(refused(name, wanted, value)) };
+    let Some(n) = n else { return Err(shape(refused(name, wanted, value))) };
     if n > max as f64 {
-        return Err(too_long(name, n, max));
+        return Err(shape(too_long(name, n, max)));
     }
     let mut out = Vec::with_capacity(n as usize);
-    for i in 0..n as u32 {
-        let element = get(name, value, &i.into())?;
+    for index in 0..n as u32 {
+        let element = get(name, value, &index.into()).map_err(Refused::Unreadable)?;
         let Some(x) = element.as_f64() else {
-            let problem = format!("{ELEMENT}{i} is {}", describe(&element));
-            return Err(KliError::invalid(name, problem));
+            return Err(Refused::Element { index, got: describe(&element) });
         };
         out.push(x);
     }
     Ok(out)
 }
 
-/// How a value whose getter or Proxy trap threw is described: "options could not be read (…)".
-pub const UNREADABLE: &str = "could not be read ";
-
-/// How an element that is not a number is named: "times must hold numbers: element 2 is …".
-pub const ELEMENT: &str = "must hold numbers: element ";
-
 #[inline(never)]
 fn too_long(name: &str, length: f64, max: usize) -> KliError {
     let problem = format!("may hold at most {max} numbers (got {})", crate::error::number(length));
     KliError::invalid(name, problem)
-}
-
-/// `value[key]`, or an Error naming `name` when reading it throws (a getter, a Proxy's trap).
-#[inline(never)]
-pub fn get(name: &str, value: &JsValue, key: &JsValue) -> Result<JsValue, KliError> {
-    Reflect::get(value, key)
-        .map_err(|e| KliError::invalid(name, format!("{UNREADABLE}({})", thrown(&e))))
-}
-
-/// What a caught exception says, for ours.
-#[inline(never)]
-pub fn thrown(e: &JsValue) -> String {
-    let message = Reflect::get(e, &"message".into()).ok().and_then(|m| m.as_string());
-    format!("it threw: {}", message.unwrap_or_else(|| describe(e)))
 }
 
 /// The length of `value` if it is a Float64Array, else an Error naming what it is: the cheap
@@ -198,7 +184,7 @@ impl F64Array {
         // facts were forged (own `buffer`, `byteOffset` or `length` properties): an Error.
         match Fresh::view_of(&self.buffer, offset, length as f64) {
             Ok(view) => Ok(view.unchecked_into()),
-            Err(e) => Err(KliError::invalid(name, format!("{UNREADABLE}({})", thrown(&e)))),
+            Err(e) => Err(unreadable(name, &e)),
         }
     }
 

@@ -35,8 +35,9 @@ fn options(entries: &[(&str, JsValue)]) -> Option<KliSplineOptionsObject> {
     Some(object.unchecked_into())
 }
 
-fn argument(result: Result<RotationSpline, JsValue>) -> String {
+fn argument(result: Result<RotationSpline, impl Into<JsValue>>) -> String {
     let Err(error) = result else { panic!("expected an Error") };
+    let error: JsValue = error.into();
     Reflect::get(&error, &"argument".into()).unwrap().as_string().unwrap()
 }
 
@@ -121,7 +122,7 @@ fn bad_input_names_the_argument_and_element() {
     assert_eq!(argument(kli_spline(&flat(), options(&[("tension", 1.into())]))), "options");
     let spline = slerp_spline(&flat(), None).unwrap();
     let Err(error) = spline.at(&n(f64::NAN), &JsValue::UNDEFINED) else { panic!() };
-    assert_eq!(Reflect::get(&error, &"argument".into()).unwrap(), "t");
+    assert_eq!(Reflect::get(&error.into(), &"argument".into()).unwrap(), "t");
 }
 
 /// `[w, x, y, z]` → `[x, y, z, w]`, by hand.
@@ -167,7 +168,7 @@ fn scalar_last_keys_give_scalar_last_curves_and_objects_are_read_as_named() {
     bad[4 + 3] = f64::NAN;
     let bad: Array = bad.chunks_exact(4).map(|q| JsValue::from(Float64Array::from(q))).collect();
     let Err(error) = kli_spline(bad.unchecked_ref(), scalar_last()) else { panic!() };
-    let message: String = error.unchecked_into::<js_sys::Error>().message().into();
+    let message: String = JsValue::from(error).unchecked_into::<js_sys::Error>().message().into();
     assert!(message.starts_with("keys[1] must be a quaternion of 4 finite numbers [x, y, z, w]"));
     assert!(message.ends_with("its w component is NaN"), "{message}");
 }

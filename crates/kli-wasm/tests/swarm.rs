@@ -22,8 +22,9 @@ fn n(x: f64) -> JsValue {
 }
 
 /// The `argument` and the message of a thrown Error.
-fn refused(result: Result<impl Sized, JsValue>) -> (String, String) {
+fn refused(result: Result<impl Sized, impl Into<JsValue>>) -> (String, String) {
     let Err(error) = result else { panic!("expected an Error") };
+    let error: JsValue = error.into();
     assert!(error.is_instance_of::<js_sys::Error>());
     let argument = Reflect::get(&error, &"argument".into()).unwrap().as_string().unwrap();
     (argument, error.unchecked_into::<js_sys::Error>().message().into())

@@ -212,11 +212,11 @@ fn shortest_path_both_ways() {
     ));
 }
 
-fn expect_error(result: Result<impl Sized, JsValue>, starts_with: &str) {
+fn expect_error(result: Result<impl Sized, impl Into<JsValue>>, starts_with: &str) {
     match result {
         Ok(_) => panic!("expected an Error starting with {starts_with:?}"),
         Err(e) => {
-            let text = message(e);
+            let text = message(e.into());
             assert!(text.starts_with(starts_with), "{text:?} does not start with {starts_with:?}");
         }
     }
@@ -534,8 +534,9 @@ fn batch_errors_name_the_argument_and_element() {
 // ---- Errors carry their argument; the fuzzing finds of issue 7 ------------------------------
 
 /// The `argument`, `kind` and `component` properties of a thrown Error.
-fn properties(result: Result<impl Sized, JsValue>) -> (String, String, Option<f64>) {
+fn properties(result: Result<impl Sized, impl Into<JsValue>>) -> (String, String, Option<f64>) {
     let Err(error) = result else { panic!("expected an Error") };
+    let error: JsValue = error.into();
     let get = |key: &str| Reflect::get(&error, &key.into()).unwrap();
     (
         get("argument").as_string().unwrap(),

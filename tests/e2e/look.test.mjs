@@ -1,0 +1,73 @@
+// The pages at rest look as they did: a screenshot of each page (reduced motion, so at its first
+// time), against the committed one in tests/e2e/look/, within a small pixel tolerance. A
+// refactor of the runtime, the player or the run contract must not change what a reader sees.
+// `KLI_LOOK=write node --test tests/e2e/look.test.mjs` records new screenshots (after a change
+// meant to be seen: look at them before committing).
+import { test } from "node:test";
+import assert from "node:assert/strict";
+import { readFile, writeFile, mkdir } from "node:fs/promises";
+import { join } from "node:path";
+import { artifacts, open, root, setup } from "./browser.mjs";
+
+setup();
+
+const LOOK = join(root, "tests/e2e/look");
+/** What changes from load to load on a page at rest: the keyframes table's measured times. */
+const MOVING = { "keyframes.html": ["#figures td:nth-child(6)", "#figures td:nth-child(7)"] };
+
+/**
+ * The mean difference of two PNGs (0 to 255 a channel) and the share of pixels that differ by
+ * more than 48 in a channel, decoded by the browser; null when their sizes differ.
+ */
+function compare(page, a, b) {
+  return page.evaluate(async ([a, b]) => {
+    const decode = async (base64) => {
+      const bitmap = await createImageBitmap(await (await fetch(`data:image/png;base64,${base64}`)).blob());
+      const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
+      const ctx = canvas.getContext("2d");
+      ctx.drawImage(bitmap, 0, 0);
+      return ctx.getImageData(0, 0, bitmap.width, bitmap.height);
+    };
+    const [x, y] = await Promise.all([decode(a), decode(b)]);
+    if (x.width !== y.width || x.height !== y.height) return { size: [x.width, x.height, y.width, y.height] };
+    let sum = 0, far = 0;
+    for (let i = 0; i < x.data.length; i += 4) {
+      let worst = 0;
+      for (let c = 0; c < 3; c++) {
+        const d = Math.abs(x.data[i + c] - y.data[i + c]);
+        sum += d;
+        worst = Math.max(worst, d);
+      }
+      if (worst > 48) far++;
+    }
+    const pixels = x.data.length / 4;
+    return { mean: sum / (3 * pixels), far: far / pixels };
+  }, [a.toString("base64"), b.toString("base64")]);
+}
+
+for (const html of ["index.html", "keyframes.html", "swarm.html"]) {
+  test(`${html} at rest looks as it did (screenshot within tolerance)`, async () => {
+    const { page, context, problems } = await open(html, { reducedMotion: "reduce" });
+    try {
+      // Everything drawn: the still views are painted in a task after the first frame.
+      await page.waitForTimeout(600);
+      const mask = (MOVING[html] ?? []).map((selector) => page.locator(selector));
+      const shot = await page.screenshot({ fullPage: true, mask, animations: "disabled" });
+      const file = join(LOOK, html.replace(".html", ".png"));
+      if (process.env.KLI_LOOK === "write") {
+        await mkdir(LOOK, { recursive: true });
+        await writeFile(file, shot);
+        return;
+      }
+      await writeFile(join(artifacts, `look-${html.replace(".html", ".png")}`), shot);
+      const difference = await compare(page, shot, await readFile(file));
+      assert.equal(difference.size, undefined, `the page's size changed: ${difference.size}`);
+      assert.ok(difference.mean < 1.5 && difference.far < 0.01,
+        `${html}: mean difference ${difference.mean.toFixed(3)}, ${(100 * difference.far).toFixed(2)}% of pixels far off ` +
+        `(see test-artifacts/look-${html.replace(".html", ".png")})`);
+      assert.deepEqual(problems, []);
+    } finally {
+      await context.close();
+    }
+  });
+}
