@@ -43,11 +43,11 @@ const page = new Page({
   create: (state) => KEYFRAMES.create(keyframes, state),
   keyOf: KEYFRAMES.keyOf,
   // The key editor's axis and angle: their own message.
-  route: (error) => {
+  route: (host, error) => {
     const argument = argumentOf(error);
     if (argument !== "axis" && argument !== "angle") return undefined;
     const names = argument === "angle" ? ["key-angle"] : ["key-ax", "key-ay", "key-az"];
-    return { output: "key", fields: names.map((name) => page.schema.field(name)) };
+    return { output: "key", fields: names.map((name) => host.field(name)) };
   },
   readout: (run, t) => `t = ${t.toFixed(2)} / ${run.span[1].toFixed(2)}`,
   data: { kind: "curves", file: (run) => `kli-keyframes-curves-${keyCount(run)}-keys` },
@@ -125,7 +125,7 @@ function editKey(/** @type {Host} */ host) {
   try {
     withKeys(host, rows(run.keysWithAxisAngle(index, new Float64Array([x, y, z]), (degrees * Math.PI) / 180)));
   } catch (error) {
-    clearErrors(page.form);
+    clearErrors(host.form);
     host.showError(error);
   }
 }

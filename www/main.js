@@ -31,7 +31,7 @@ const page = new Page({
   random: () => ({ ...DEFAULTS, p: randomQuaternion(), r: randomQuaternion() }),
   create: (state) => KLI.create(kli, state),
   keyOf: KLI.keyOf,
-  route: (error) => errorPlace(page.form, error),
+  route: (host, error) => errorPlace(host.form, error),
   readout: (run, t) => `t = ${t.toFixed(2)} / T = ${run.summary.finalTime.toFixed(2)}`,
   labels: (run, t) => ({ object: describeFrame(run, t) }),
   note: (run, state) => describeRun(run, state),
@@ -45,26 +45,26 @@ const page = new Page({
     title: (run) => (run.summary.paperExample ? "The paper's example: KLI from p to r, and its Hopf curve on S²" : "KLI from p to r, and its Hopf curve on S²"),
     file: (run) => (run.summary.paperExample ? "kli-paper-example" : `kli-path-T${run.summary.finalTime.toFixed(2)}`),
   },
-  shown: (_, run, state) => {
+  shown: (host, run, state) => {
     fillTable(run, $("#moments tbody", HTMLTableSectionElement), $("#final-time", HTMLElement), $("#printed-notes", HTMLUListElement));
     fillTypo(run, state.tolerance, $("#typo tbody", HTMLTableSectionElement), $("#typo-summary", HTMLElement));
-    if (!typingAxisAngle) fillAxisAngles(state);
+    if (!typingAxisAngle) fillAxisAngles(host.form, state);
   },
   input: (host, name) => {
     const axisAngleField = AXIS_ANGLE_FIELD.exec(name);
     if (!axisAngleField) return false;
     const which = /** @type {"p" | "r"} */ (axisAngleField[1]);
-    const { axis, angle } = readAxisAngle(page.form, which);
+    const { axis, angle } = readAxisAngle(host.form, which);
     let q;
     try {
       q = fromAxisAngle(axis, angle);
     } catch (error) {
-      clearErrors(page.form);
-      const { output, fields } = errorPlace(page.form, error, which);
-      showFieldError(page.form, output, fields, `${which}: ${messageOf(error)}`);
+      clearErrors(host.form);
+      const { output, fields } = errorPlace(host.form, error, which);
+      showFieldError(host.form, output, fields, `${which}: ${messageOf(error)}`);
       return true;
     }
-    page.schema.fields(which).forEach((field, i) => (field.value = formatNumber(q[i])));
+    host.fields(which).forEach((field, i) => (field.value = formatNumber(q[i])));
     typingAxisAngle = true;
     host.rebuild(host.read());
     typingAxisAngle = false;
@@ -74,10 +74,10 @@ const page = new Page({
 
 /** p's and r's axis and angle fields from the state (a value that is no quaternion is left:
  *  its own message is shown already). */
-function fillAxisAngles(/** @type {State} */ state) {
+function fillAxisAngles(/** @type {HTMLFormElement} */ form, /** @type {State} */ state) {
   for (const which of /** @type {const} */ (["p", "r"])) {
     try {
-      fillAxisAngle(page.form, which, axisAngle(state[which]));
+      fillAxisAngle(form, which, axisAngle(state[which]));
     } catch {
       // Not a quaternion.
     }

@@ -43,7 +43,9 @@ import { videoPanel } from "./video/panel.js";
  * @property {R | null} run the run on show
  * @property {State} state its state
  * @property {number} t the time on show
+ * @property {HTMLFormElement} form the page's form
  * @property {(name: string) => HTMLInputElement | HTMLSelectElement} field a form field by name
+ * @property {(key: string) => (HTMLInputElement | HTMLSelectElement)[]} fields a state key's fields (a quaternion's four)
  * @property {() => State} read the state the form holds
  * @property {(state: State) => boolean} rebuild builds and shows `state` (false, with the refusals shown, when refused)
  * @property {(state: State) => boolean} apply fills the form with `state`, then rebuilds
@@ -72,8 +74,8 @@ import { videoPanel } from "./video/panel.js";
  * @property {() => State} [random] the "random" preset
  * @property {(state: State) => R} create the module's run for a state (its constructor checks it)
  * @property {(error: unknown) => (keyof State & string) | undefined} keyOf the state key an Error is about
- * @property {(error: unknown) => { output: string, fields: Element[] } | undefined} [route] where an Error
- *   shows, when not beside its key's fields
+ * @property {(host: Host<State, R>, error: unknown) => { output: string, fields: Element[] } | undefined} [route]
+ *   where an Error shows, when not beside its key's fields
  * @property {(run: R, t: number) => string} readout the line under the figures
  * @property {(run: R, t: number) => Record<string, string>} [labels] canvases' text alternatives once the time rests, by view
  * @property {(run: R, state: State) => string} [note] the line in #note about a run
@@ -157,7 +159,9 @@ export class Page {
       get run() { return page.run; },
       get state() { return page.state; },
       get t() { return page.t; },
+      form: this.form,
       field: (name) => this.schema.field(name),
+      fields: (key) => this.schema.fields(key),
       read: () => this.schema.read(),
       rebuild: (state) => this.rebuild(state),
       apply: (state) => {
@@ -205,7 +209,7 @@ export class Page {
 
   /** Shows an Error of the module beside the fields it is about (routed by `error.argument`). */
   showError(/** @type {unknown} */ error) {
-    const routed = this.d.route?.(error);
+    const routed = this.d.route?.(this.host, error);
     if (routed) return showFieldError(this.form, routed.output, routed.fields, messageOf(error));
     const key = this.d.keyOf(error) ?? this.d.schema[0].key;
     showFieldError(this.form, key, this.schema.fields(key), messageOf(error));

@@ -21,9 +21,10 @@ const PRESETS = {
 /** How far the Step button moves the swarm on (model time). */
 const STEP = 0.2;
 const SWEEP = Array.from({ length: 19 }, (_, i) => -1 + i / 2);
-const sweep = { couplings: /** @type {number[]} */ ([]), orders: /** @type {number[]} */ ([]), timer: 0 };
-/** The sweep's points so far, for the module's drawing. */
-const sweepPoints = () => /** @type {const} */ ([new Float64Array(sweep.couplings), new Float64Array(sweep.orders), page.state.coupling]);
+/** The sweep's points so far, and the coupling on show (marked on it). */
+const sweep = { couplings: /** @type {number[]} */ ([]), orders: /** @type {number[]} */ ([]), coupling: 1, timer: 0 };
+/** The sweep's points, for the module's drawing. */
+const sweepPoints = () => /** @type {const} */ ([new Float64Array(sweep.couplings), new Float64Array(sweep.orders), sweep.coupling]);
 /** The views' names in file names. */
 const FILE_NAMES = /** @type {Record<string, string>} */ ({ hopf: "hopf", objects: "objects", plots: "order-plots", sweep: "coupling-sweep" });
 
@@ -59,7 +60,8 @@ const page = new Page({
     title: (run) => `A Lohe swarm of ${run.summary.count} oscillators on S³, through the Hopf map`,
     file: (run) => `kli-swarm-${run.summary.count}-oscillators`,
   },
-  shown: (host) => {
+  shown: (host, _, state) => {
+    sweep.coupling = state.coupling;
     showValues(host);
     host.redraw(["sweep"]); // its marker follows K; otherwise it changes only while a sweep runs
   },

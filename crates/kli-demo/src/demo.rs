@@ -1,6 +1,8 @@
 //! The `Demo` class: one per choice of `p`, `r` and options, holding the computed [`Scene`] and
 //! drawing its views onto canvas contexts the page passes in.
 
+use std::cell::OnceCell;
+
 use js_sys::{Array, Float64Array, Object, Reflect};
 use kli::quaternion::to_wxyz;
 use kli_wasm::error::JsResult;
@@ -32,6 +34,8 @@ pub struct Demo {
     order: Order,
     /// The time on show, in `[0, T]`.
     clock: Clock,
+    /// The summary, made at its first read (a readout asks for it every frame).
+    summary: OnceCell<JsValue>,
 }
 
 #[wasm_bindgen]
@@ -49,7 +53,7 @@ impl Demo {
         let flipped = path.target() != r;
         let clock = Clock::new(0.0, path.final_time());
         let scene = Scene::new(path);
-        Ok(Demo { scene, mesh: aircraft(), flipped, order, clock })
+        Ok(Demo { scene, mesh: aircraft(), flipped, order, clock, summary: OnceCell::new() })
     }
 
     /// The exact q(t) of this run's flow (closed form), as the package's `KliPath.exactAt`; a
@@ -179,21 +183,24 @@ impl Figure for Demo {
     /// p·r < 0, the same rotation as r), and whether this is the paper's example
     /// (`p = k`, `r = ½(1 + i + j + k)`), whose Table 1 the paper prints.
     fn summary(&self) -> JsValue {
-        let path = self.scene.path();
-        Record::new()
-            .set("finalTime", path.final_time())
-            .set("steps", path.steps() as f64)
-            .set("predictedTime", self.scene.predicted_time())
-            .set("flipped", self.flipped)
-            .set("paperExample", self.is_paper_example())
-            .end()
+        let make = || {
+            let path = self.scene.path();
+            Record::new()
+                .set("finalTime", path.final_time())
+                .set("steps", path.steps() as f64)
+                .set("predictedTime", self.scene.predicted_time())
+                .set("flipped", self.flipped)
+                .set("paperExample", self.is_paper_example())
+                .end()
+        };
+        self.summary.get_or_init(make).clone()
     }
 
-    fn paint(&self, view: usize, layer: Layer, pen: &Pen, frame: &Frame) {
+    fn paint(&self, view: &View, layer: Layer, pen: &Pen, frame: &Frame) {
         let (width, height, t) = (frame.width, frame.height, frame.t.max(0.0));
-        match view {
-            0 => self.paint_object(pen, width, height, t),
-            1 => {
+        match view.name {
+            "object" => self.paint_object(pen, width, height, t),
+            "hopf" => {
                 let viewport = frame.sphere_viewport();
                 if layer.still() {
                     draw_sphere(pen, &viewport, &frame.camera, &self.scene);
@@ -202,7 +209,7 @@ impl Figure for Demo {
                     draw_sphere_cursor(pen, &viewport, &frame.camera, &self.scene, t);
                 }
             }
-            2 => {
+            "filmstrip" => {
                 if layer.still() {
                     self.paint_filmstrip(pen, width, height)
                 }

@@ -160,8 +160,8 @@ pub(crate) trait Figure: Timed {
     /// The run's figures as named fields, for readouts and tables.
     fn summary(&self) -> JsValue;
 
-    /// Paints `layer` of the view `VIEWS[view]` at `frame`.
-    fn paint(&self, view: usize, layer: Layer, pen: &Pen, frame: &Frame);
+    /// Paints `layer` of `view` (one of `VIEWS`, matched by its name) at `frame`.
+    fn paint(&self, view: &View, layer: Layer, pen: &Pen, frame: &Frame);
 
     /// The data behind the figures as CSV (`csv == true`) or JSON.
     fn export(&self, csv: bool) -> String;
@@ -242,7 +242,7 @@ pub(crate) fn draw<F: Figure>(
         Pen::begin(ctx, frame.width, frame.height, frame.pixel_ratio, BACKGROUND)
     };
     pen.scale_text(frame.text_scale);
-    figure.paint(view, layer, &pen, &frame);
+    figure.paint(&F::VIEWS[view], layer, &pen, &frame);
     Ok(())
 }
 
@@ -252,7 +252,7 @@ pub(crate) fn to_svg<F: Figure>(figure: &F, view: &str, frame: &JsValue) -> JsRe
     let frame = Frame::read(frame);
     let paint = |pen: &Pen| {
         pen.scale_text(frame.text_scale);
-        figure.paint(view, Layer::Whole, pen, &frame)
+        figure.paint(&F::VIEWS[view], Layer::Whole, pen, &frame)
     };
     Ok(svg_document(frame.width, frame.height, F::VIEWS[view].title, &paint))
 }

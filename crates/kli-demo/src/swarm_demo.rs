@@ -181,14 +181,14 @@ impl Figure for SwarmDemo {
             .end()
     }
 
-    fn paint(&self, view: usize, layer: Layer, pen: &Pen, frame: &Frame) {
+    fn paint(&self, view: &View, layer: Layer, pen: &Pen, frame: &Frame) {
         if !layer.still() {
             return;
         }
         let (width, height) = (frame.width, frame.height);
-        match view {
-            0 => self.paint_sphere(pen, frame),
-            1 => self.paint_objects(pen, width, height),
+        match view.name {
+            "hopf" => self.paint_sphere(pen, frame),
+            "objects" => self.paint_objects(pen, width, height),
             _ => draw_history(pen, width, height, &self.history),
         }
     }

@@ -7,6 +7,8 @@ mod model;
 mod plots;
 mod view;
 
+use std::cell::OnceCell;
+
 use glam::{DQuat, DVec3};
 use js_sys::Float64Array;
 use kli::KliError;
@@ -27,6 +29,8 @@ pub struct KeyframesDemo {
     model: Model,
     clock: Clock,
     mesh: Vec<Face>,
+    /// The summary, made at its first read.
+    summary: OnceCell<JsValue>,
 }
 
 #[wasm_bindgen]
@@ -37,7 +41,7 @@ impl KeyframesDemo {
     pub fn new(keys: &[f64], times: &[f64], smoothness: f64) -> JsResult<KeyframesDemo> {
         let model = Model::new(keys, times, smoothness)?;
         let clock = Clock::new(model.start_time(), model.end_time());
-        Ok(KeyframesDemo { model, clock, mesh: aircraft() })
+        Ok(KeyframesDemo { model, clock, mesh: aircraft(), summary: OnceCell::new() })
     }
 
     /// The keys as used (signs consistent), 4m numbers.
@@ -136,6 +140,29 @@ impl KeyframesDemo {
 }
 
 impl KeyframesDemo {
+    fn make_summary(&self) -> JsValue {
+        let model = &self.model;
+        let curves: js_sys::Array = STYLES
+            .iter()
+            .zip(&model.measures)
+            .map(|(style, m)| {
+                Record::new()
+                    .set("id", style.id)
+                    .set("name", style.name)
+                    .set("keyError", m.key_error)
+                    .set("largestJump", m.largest_jump)
+                    .set("bending", m.bending)
+                    .set("totalAngle", m.total_angle)
+                    .end()
+            })
+            .collect();
+        Record::new()
+            .set("iterations", model.chain.iterations() as f64)
+            .set("residual", model.chain.residual())
+            .set("curves", curves)
+            .end()
+    }
+
     /// The keys, flat, with key `index` replaced by `key`.
     fn keys_with(&self, index: usize, key: DQuat) -> Float64Array {
         let keys = self.model.keys.quaternions().iter().enumerate();
@@ -180,34 +207,15 @@ impl Figure for KeyframesDemo {
     /// curve (chain, Squad, piecewise SLERP) as `{ id, name, keyError, largestJump, bending,
     /// totalAngle }` (MATH.md, "Smoothness").
     fn summary(&self) -> JsValue {
-        let model = &self.model;
-        let curves: js_sys::Array = STYLES
-            .iter()
-            .zip(&model.measures)
-            .map(|(style, m)| {
-                Record::new()
-                    .set("id", style.id)
-                    .set("name", style.name)
-                    .set("keyError", m.key_error)
-                    .set("largestJump", m.largest_jump)
-                    .set("bending", m.bending)
-                    .set("totalAngle", m.total_angle)
-                    .end()
-            })
-            .collect();
-        Record::new()
-            .set("iterations", model.chain.iterations() as f64)
-            .set("residual", model.chain.residual())
-            .set("curves", curves)
-            .end()
+        self.summary.get_or_init(|| self.make_summary()).clone()
     }
 
-    fn paint(&self, view: usize, layer: Layer, pen: &Pen, frame: &Frame) {
+    fn paint(&self, which: &View, layer: Layer, pen: &Pen, frame: &Frame) {
         let (size, t) = ((frame.width, frame.height), frame.t);
-        match view {
-            0 if layer.still() => view::draw_objects(pen, &self.model, &self.mesh, size, t),
-            0 => {}
-            1 => view::draw_sphere(pen, &self.model, frame, layer),
+        match which.name {
+            "objects" if layer.still() => view::draw_objects(pen, &self.model, &self.mesh, size, t),
+            "objects" => {}
+            "hopf" => view::draw_sphere(pen, &self.model, frame, layer),
             _ => plots::draw_plots(pen, &self.model, size, t, layer),
         }
     }
