@@ -89,6 +89,10 @@ pub enum ErrorKind {
     Unstable { integrator: &'static str, step: f64, time: f64, norm: f64 },
     /// `max_time / step` asks for more samples than a path may hold.
     TooManySteps { steps: f64, limit: usize },
+    /// A mean that is not unique: the two largest eigenvalues of the chordal mean's scatter
+    /// matrix are equal to rounding (`1` and `i`: MATH.md, "Averaging rotations"), or the
+    /// quaternions sum to zero. Reported, never an arbitrary pick.
+    NotUnique { top: f64, second: f64 },
     /// Anything else, in words: the type checks of a language binding.
     Invalid(String),
 }
@@ -108,6 +112,7 @@ impl ErrorKind {
             ErrorKind::LeftSphere { .. } => "left-sphere",
             ErrorKind::Unstable { .. } => "unstable",
             ErrorKind::TooManySteps { .. } => "too-many-steps",
+            ErrorKind::NotUnique { .. } => "not-unique",
             ErrorKind::Invalid(_) => "invalid",
         }
     }
@@ -231,6 +236,13 @@ impl KliError {
                 name("max_time"),
                 name("max_time"),
                 n(*steps)
+            ),
+            ErrorKind::NotUnique { top, second } => format!(
+                "{arg} have no unique mean: the largest two eigenvalues of their scatter matrix, \
+                 {} and {}, are equal to rounding (the rotations are spread evenly, as 1 and i \
+                 are); weights that break the tie, or the geodesic median, give one",
+                n(*top),
+                n(*second)
             ),
             ErrorKind::Invalid(problem) => format!("{arg} {problem}"),
         }

@@ -26,7 +26,8 @@
 //! # Ok::<(), kli::KliError>(())
 //! ```
 //!
-//! Modules, one concept each: [`model`] (the vector field), [`integrator`] (RK4, Euler, geodesic),
+//! Modules, one concept each: [`average`] (the mean of many rotations: chordal, quaternion,
+//! Karcher, median), [`model`] (the vector field), [`integrator`] (RK4, Euler, geodesic),
 //! [`algorithm`] (Algorithm 1), [`great_arc`] (the circle from `p` to the target),
 //! [`closed_form`] (the exact solution), [`slerp`](mod@slerp), [`hopf`](mod@hopf),
 //! [`axis_angle`](mod@axis_angle) (polar form), [`batch`] (many pairs at once), [`swarm`] (the
@@ -39,6 +40,7 @@ pub mod axis_angle;
 pub mod batch;
 
 pub mod algorithm;
+pub mod average;
 pub mod closed_form;
 pub mod error;
 pub mod great_arc;

@@ -128,7 +128,7 @@ export interface KliOptions {
 /** What is wrong, in a word: the `kind` of every Error kli throws. */
 export type KliErrorKind =
   | "not-finite" | "zero-length" | "out-of-range" | "wrong-length" | "unknown-name" | "antipodal"
-  | "not-reached" | "stalled" | "left-sphere" | "unstable" | "too-many-steps" | "invalid"
+  | "not-reached" | "stalled" | "left-sphere" | "unstable" | "too-many-steps" | "not-unique" | "invalid"
   /** A method of an object after its free(). */
   | "freed"
   /** A call into an object from inside one of its own calls (a getter or Proxy called back). */
