@@ -50,9 +50,10 @@ setup-browser:
 	fi
 
 # The npm package: crates/kli-wasm, the JavaScript API only, in entries with a module each:
-# `kli` (kli.js, the default features), `kli/swarm` (swarm.js) and `kli/spline` (spline.js), each
-# built with its feature alone, in a target directory of its own so every build stays cached.
-ENTRIES := swarm spline
+# `kli` (kli.js, the default features), `kli/swarm` (swarm.js), `kli/spline` (spline.js) and
+# `kli/average` (average.js), each built with its feature alone, in a target directory of its
+# own so every build stays cached.
+ENTRIES := swarm spline average
 # What each build reads: a build runs again only when one of these is newer than its stamp, so
 # `make demo` serves at once when nothing changed (tests/e2e/contract.test.mjs checks it).
 CORE_SOURCES := Cargo.toml Cargo.lock $(shell find src -name '*.rs')

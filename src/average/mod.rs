@@ -83,7 +83,8 @@ pub struct Average {
 }
 
 /// The data checked: each quaternion finite and not zero (normalised), each weight finite and
-/// positive, as many weights as quaternions (all 1 when absent).
+/// positive, as many weights as quaternions (all 1 when absent), the weights scaled so that the
+/// largest is 1.
 pub(crate) struct Data {
     pub rotations: Vec<DQuat>,
     pub weights: Vec<f64>,
@@ -115,13 +116,10 @@ impl Data {
                 .map(|(j, &x)| require(&format!("weights[{j}]"), x, Requirement::Positive))
                 .collect::<Result<Vec<_>, _>>()?,
         };
-        let total: f64 = weights.iter().sum();
-        if !total.is_finite() {
-            return Err(KliError::new(
-                "weights",
-                ErrorKind::OutOfRange { value: total, requirement: Requirement::Finite },
-            ));
-        }
+        // The means do not change with the weights' scale: scaled by the largest, 10⁻³⁰⁸ and
+        // 10³⁰⁸ are as good as 1, and no sum below overflows or vanishes.
+        let largest = weights.iter().fold(0.0_f64, |m, &w| m.max(w));
+        let weights = weights.iter().map(|w| w / largest).collect();
         Ok(Data { rotations, weights })
     }
 

@@ -213,7 +213,19 @@ fn bad_input_is_refused_by_name() {
         assert_eq!((error.argument(), error.kind().code()), ("weights[1]", "out-of-range"));
     }
     assert_eq!(refusal(&[p(), r()], Some(&[1.0])).argument(), "weights");
-    assert_eq!(refusal(&[p(), r()], Some(&[1e308, 1e308])).argument(), "weights");
+    // The weights' scale does not matter, however large or small.
+    let three = [p(), r(), DQuat::IDENTITY];
+    for method in [Method::Chordal, Method::Quaternion, Method::Geodesic, Method::Median] {
+        let plain = mean(&three, Some(&[3.0, 1.0, 1.0]), method);
+        for scale in [1e300, 1e-300] {
+            let got = mean(&three, Some(&[3.0 * scale, scale, scale]), method);
+            assert!(angle(got, plain) < 1e-14, "{method:?} at {scale:e}");
+        }
+        let tiny = average(&three, Some(&[5e-324; 3]), method).unwrap();
+        assert!(
+            tiny.dispersion.is_finite() && tiny.weights.iter().flatten().all(|w| w.is_finite())
+        );
+    }
     assert_eq!("karcher".parse::<Method>().unwrap_err().argument(), "method");
     assert_eq!("median".parse::<Method>().unwrap(), Method::Median);
 }

@@ -20,6 +20,7 @@ const SCALE = Number(process.env.KLI_FUZZ_SCALE ?? 1);
 const kli = await load("kli");
 const spline = await load("spline");
 const swarm = await load("swarm");
+const average = await load("average");
 
 // xorshift32: the same hostile values on every run.
 function random(seed) {
@@ -73,7 +74,7 @@ function attempt(call, check = () => {}) {
     assert.ok(e instanceof Error, `not an Error: ${String(e)}`);
     assert.equal(typeof e.argument, "string", `no argument: ${e.message}`);
     assert.equal(typeof e.kind, "string", `no kind: ${e.message}`);
-    assert.ok(kli.module.isKliError(e) && spline.module.isKliError(e) && swarm.module.isKliError(e));
+    assert.ok(kli.module.isKliError(e) && spline.module.isKliError(e) && swarm.module.isKliError(e) && average.module.isKliError(e));
     assert.doesNotMatch(e.message, /unreachable|table index|memory access|null pointer passed|recursive use of|is not a function|Cannot convert/);
     return e.kind;
   }
@@ -98,6 +99,43 @@ function wellFormed(result, unit = false) {
 }
 
 const KEYS = [[1, 0, 0, 0], [0.5, 0.5, 0.5, 0.5], [0, 0, 1, 0], [0.5, -0.5, 0.5, 0.5]];
+test("kli/average: 3,000 seeded hostile calls, no trap, no leak, the module still right", () => {
+  const { averageRotations, blendRotations } = average.module;
+  const next = random(23);
+  const before = average.table(), caught = thrown;
+  const methods = ["chordal", "quaternion", "geodesic", "median"];
+  let errors = 0;
+  for (let i = 0; i < 3000 * SCALE; i++) {
+    const value = hostile(next, () => averageRotations(KEYS));
+    const other = hostile(next);
+    const out = new Float64Array(8);
+    const calls = [
+      () => averageRotations(value), () => averageRotations(KEYS, value), () => averageRotations(KEYS, { weights: value }),
+      () => averageRotations(KEYS, { method: value }), () => averageRotations(value, { method: methods[i % 4], order: other }),
+      () => averageRotations(KEYS, { weights: [1, 2, value, 1], method: methods[i % 4] }),
+      () => blendRotations(value, [1, 1], out), () => blendRotations(KEYS.flat(), value, out),
+      () => blendRotations(KEYS.flat(), [1, 1], value), () => blendRotations(KEYS.flat(), [1, 1], out, value),
+      () => blendRotations(value, other, out),
+    ];
+    const kind = attempt(calls[Math.floor(next() * calls.length)], (r) => {
+      if (r instanceof Float64Array) wellFormed(r, true);
+      else if (r) {
+        wellFormed(r.rotation, true);
+        for (const key of ["iterations", "residual", "dispersion"]) wellFormed(r[key]);
+        if (r.weights) wellFormed(r.weights);
+      }
+    });
+    if (kind !== "ok") errors++;
+  }
+  assert.ok(errors > 1500 * SCALE, `only ${errors} refusals: the fuzz is not hostile enough`);
+  assertNoLeak(average.table(), before, thrown - caught);
+  // Still right: p and r weighted equally meet halfway, (p + r)/√3.
+  const { rotation } = averageRotations([[0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]]);
+  for (const [got, want] of [...rotation].map((c, k) => [c, [0.288675134594813, 0.288675134594813, 0.288675134594813, 0.866025403784439][k]])) {
+    assert.ok(Math.abs(got - want) < 1e-14, `${rotation}`);
+  }
+});
+
 
 test("isKliError: true for kli's Errors, false for anything else", () => {
   for (const { module } of [kli, spline, swarm]) {

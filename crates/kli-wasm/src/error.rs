@@ -15,6 +15,8 @@ pub type JsResult<T> = Result<T, Thrown>;
 pub struct Thrown(JsValue);
 
 impl From<KliError> for Thrown {
+    // Out of line: inlined at every `?`, the conversion cost the module a kilobyte.
+    #[inline(never)]
     fn from(e: KliError) -> Thrown {
         Thrown(throw(e))
     }
@@ -50,6 +52,7 @@ pub fn number(x: f64) -> String {
 
 /// The `Error` to throw for `e`: its message in JavaScript's names and numbers, and its
 /// `argument`, `kind` and `component` as properties.
+#[inline(never)]
 fn throw(e: KliError) -> JsValue {
     let error = Error::new(&e.message(&js_name, &number));
     let set = |key: &str, value: JsValue| Reflect::set(&error, &key.into(), &value).is_ok();

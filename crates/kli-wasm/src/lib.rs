@@ -16,9 +16,12 @@
 //! stack), [`typed`] (typed arrays and array-likes), [`read`] (numbers, quaternions and vectors
 //! in), [`options`] (options objects, and a pair of rotations with its options); with the `api` feature (the `kli` entry) `calls` (the single calls), `path`
 //! (the `KliPath` class), `batch` (many pairs a call), `buffer` (`Float64Buffer`); with `swarm`
-//! (the `kli/swarm` entry) `swarm` (`LoheSwarm`). Crates that add to the module (the demo page's
+//! (the `kli/swarm` entry) `swarm` (`LoheSwarm`); with `spline` (`kli/spline`) `spline`; with
+//! `average` (`kli/average`) `average` (`averageRotations`, `blendRotations`). Crates that add to the module (the demo page's
 //! `kli-demo`) use [`error`], [`read`] and [`options`] too.
 
+#[cfg(feature = "average")]
+pub mod average;
 #[cfg(feature = "api")]
 pub mod batch;
 #[cfg(feature = "api")]

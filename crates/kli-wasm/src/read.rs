@@ -9,7 +9,7 @@ use kli::{ErrorKind, KliError, Shape};
 use wasm_bindgen::prelude::*;
 
 use crate::typed::{Refused, read_numbers};
-use crate::value::{describe, get};
+use crate::value::{describe, get, is_array, is_view};
 
 #[wasm_bindgen]
 extern "C" {
@@ -175,4 +175,46 @@ pub fn quaternion(name: &str, value: &JsValue, order: Order) -> Result<DQuat, Kl
 /// Reads a 3-vector `[x, y, z]`.
 pub fn vector3(name: &str, value: &JsValue) -> Result<DVec3, KliError> {
     Ok(DVec3::from_array(numbers(name, value, "[x, y, z]")?))
+}
+
+/// A list of quaternions in `order`: 4n numbers (a typed array, such as a three.js track's or a
+/// glTF accessor's `Float32Array`, or a flat array of numbers), or an array of n quaternions
+/// (each as [`quaternion`] reads it, `{ x, y, z, w }` objects too). At most `max` numbers; `each`
+/// names one in messages ("key", "rotation"). Not normalised: the core checks each.
+pub fn quaternion_list(
+    name: &str,
+    each: &str,
+    value: &JsValue,
+    order: Order,
+    max: usize,
+) -> Result<Vec<DQuat>, KliError> {
+    let array = is_array(value).unwrap_or(false);
+    // A flat array of numbers is a three.js track's `values` as an Array.
+    let flat = is_view(value) || (array && get(name, value, &0.into())?.as_f64().is_some());
+    if flat {
+        let flat = crate::typed::numbers(name, value, max)?;
+        if flat.len() % 4 != 0 {
+            let problem = format!("must hold 4 numbers per {each} (got {})", flat.len());
+            return Err(KliError::invalid(name, problem));
+        }
+        return Ok(flat.chunks_exact(4).map(|q| order.read([q[0], q[1], q[2], q[3]])).collect());
+    }
+    if !array {
+        let problem =
+            format!("must be a typed array or an array of quaternions (got {})", describe(value));
+        return Err(KliError::invalid(name, problem));
+    }
+    let length = get(name, value, &"length".into())?.as_f64().unwrap_or(0.0) as usize;
+    if length > max / 4 {
+        let problem = format!("may hold at most {} {each}s (got {length})", max / 4);
+        return Err(KliError::invalid(name, problem));
+    }
+    let one = |i: usize| {
+        let element = format!("{name}[{i}]");
+        let q = quaternion(&element, &get(&element, value, &(i as u32).into())?, order)?;
+        // `quaternion` normalises; a list is checked (and normalised) by the core, which names
+        // the element the same way.
+        Ok(q)
+    };
+    (0..length).map(one).collect()
 }

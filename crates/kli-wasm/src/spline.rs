@@ -1,7 +1,6 @@
 //! The `kli/spline` entry: curves through many keyframes, the Kuramoto–Lohe chain beside Squad
 //! and piecewise SLERP, with one interface (`RotationSpline`) so they compare call for call.
 
-use glam::DQuat;
 use js_sys::Float64Array;
 use kli::spline::{
     ChainOptions, Curve, Keys, KliSpline, MAX_SAMPLES_PER_SEGMENT, PiecewiseSlerp, Squad,
@@ -12,9 +11,9 @@ use wasm_bindgen::prelude::*;
 
 use crate::error::JsResult;
 use crate::options::Fields;
-use crate::read::{Order, number_argument, quaternion};
+use crate::read::{Order, number_argument, quaternion_list};
 use crate::typed::{F64Array, float64_length, numbers};
-use crate::value::{describe, get, is_array, is_view};
+use crate::value::describe;
 
 #[wasm_bindgen(typescript_custom_section)]
 const TYPES: &'static str = r#"
@@ -216,32 +215,7 @@ impl RotationSpline {
 /// The keys (4m numbers: a typed array or a flat array; or an array of m quaternions) in
 /// `order`, and the options' `times`.
 fn read_keys(value: &JsValue, times: Option<Vec<f64>>, order: Order) -> Result<Keys, KliError> {
-    let array = is_array(value).unwrap_or(false);
-    // A flat array of numbers is a three.js track's `values` as an Array.
-    let flat = is_view(value) || (array && get("keys", value, &0.into())?.as_f64().is_some());
-    let quaternions: Vec<DQuat> = if flat {
-        let flat = numbers("keys", value, MAX_LENGTH)?;
-        if flat.len() % 4 != 0 {
-            let problem = format!("must hold 4 numbers per key (got {})", flat.len());
-            return Err(KliError::invalid("keys", problem));
-        }
-        flat.chunks_exact(4).map(|q| order.read([q[0], q[1], q[2], q[3]])).collect()
-    } else if array {
-        let length = get("keys", value, &"length".into())?.as_f64().unwrap_or(0.0) as usize;
-        if length > MAX_LENGTH / 4 {
-            let problem = format!("may hold at most {} keys (got {length})", MAX_LENGTH / 4);
-            return Err(KliError::invalid("keys", problem));
-        }
-        let key = |i: usize| {
-            let name = format!("keys[{i}]");
-            quaternion(&name, &get(&name, value, &(i as u32).into())?, order)
-        };
-        (0..length).map(key).collect::<Result<_, _>>()?
-    } else {
-        let problem =
-            format!("must be a typed array or an array of quaternions (got {})", describe(value));
-        return Err(KliError::invalid("keys", problem));
-    };
+    let quaternions = quaternion_list("keys", "key", value, order, MAX_LENGTH)?;
     Keys::new(&quaternions, times.as_deref()).map_err(|e| order.error(e))
 }
 

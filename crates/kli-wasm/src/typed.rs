@@ -58,6 +58,7 @@ pub enum Refused {
 
 impl Refused {
     /// The Error, worded for any list of numbers.
+    #[inline(never)]
     pub fn error(self, name: &str) -> KliError {
         match self {
             Refused::Element { index, got } => {

@@ -42,6 +42,7 @@ pub fn typed_length(value: &JsValue) -> Option<f64> {
 }
 
 /// What a value whose getter or Proxy trap threw is said to be: "options could not be read (…)".
+#[inline(never)]
 pub fn unreadable(name: &str, thrown_value: &JsValue) -> KliError {
     KliError::invalid(name, format!("could not be read ({})", thrown(thrown_value)))
 }
