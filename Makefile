@@ -187,6 +187,7 @@ bench: pkg www setup-browser
 	node bench/swarm.mjs
 	node bench/spline.mjs
 	node bench/smoothness.mjs
+	node bench/average.mjs
 	node bench/page.mjs
 	node bench/video.mjs
 	node bench/lighthouse.mjs

@@ -95,10 +95,13 @@ impl Data {
         if quaternions.is_empty() {
             return Err(KliError::invalid("quaternions", "must hold at least one rotation"));
         }
+        // Named only when refused: a name a datum costs more than the mean.
         let rotations = quaternions
             .iter()
             .enumerate()
-            .map(|(j, &q)| unit(&format!("quaternions[{j}]"), q))
+            .map(|(j, &q)| {
+                unit("quaternions", q).map_err(|e| e.renamed(format!("quaternions[{j}]")))
+            })
             .collect::<Result<Vec<_>, _>>()?;
         let weights = match weights {
             None => vec![1.0; rotations.len()],
@@ -113,7 +116,10 @@ impl Data {
             Some(w) => w
                 .iter()
                 .enumerate()
-                .map(|(j, &x)| require(&format!("weights[{j}]"), x, Requirement::Positive))
+                .map(|(j, &x)| {
+                    require("weights", x, Requirement::Positive)
+                        .map_err(|e| e.renamed(format!("weights[{j}]")))
+                })
                 .collect::<Result<Vec<_>, _>>()?,
         };
         // The means do not change with the weights' scale: scaled by the largest, 10⁻³⁰⁸ and
