@@ -14,6 +14,9 @@
  */
 
 /** The longest frame the clock counts (ms): after a stall the run goes on, it does not jump. */
+
+/** A task later. */
+const nextTask = () => new Promise((resolve) => setTimeout(resolve));
 const LONGEST_FRAME = 100;
 
 export class Player {
@@ -101,11 +104,17 @@ export class Player {
     if (!run) return false;
     const generation = this.generation;
     const target = Number.isNaN(t) ? this.span[0] : t;
-    while (!run.seek(target)) {
+    // A bounded piece of work a task. A run with no end computes its way there, so its first
+    // piece waits for a task of its own too: the task that asked (a figure being made, a click)
+    // does not carry it.
+    for (let piece = 0; ; piece++) {
+      if (piece > 0 || !this.spanned) {
+        await nextTask();
+        if (generation !== this.generation) return false;
+      }
+      if (run.seek(target)) break;
       progress?.(run.time);
       this.hooks.draw();
-      await new Promise((resolve) => setTimeout(resolve));
-      if (generation !== this.generation) return false;
     }
     this.hooks.draw();
     return true;

@@ -285,8 +285,10 @@ export class Page {
   }
 
   seek(/** @type {number} */ t) {
-    this.player.seek(t);
+    const done = this.player.seek(t);
     this.showTime();
+    // A run that computes its way there (the swarm) arrives tasks later.
+    done.then((arrived) => arrived && !this.player.spanned && this.showTime());
   }
 
   // ---- Frames --------------------------------------------------------------------------------
