@@ -14,11 +14,12 @@ use crate::quaternion::{from_wxyz, to_wxyz};
 /// not unique: rounding, with room for the sum of 10⁶ products.
 const TIE: f64 = 1e-12;
 
-/// `M = Σ w_j r_j r_jᵀ` over `[w, x, y, z]` components, in one pass over the data.
-pub fn scatter(rotations: &[DQuat], weights: &[f64]) -> Symmetric4 {
-    // The ten distinct products, accumulated in lanes a pair at a time.
+/// `M = Σ w_j r_j r_jᵀ` over `[w, x, y, z]` components, in one pass over the data; `weights`
+/// `None` is all 1 (the swarm's `λ_max`).
+pub fn scatter(rotations: &[DQuat], weights: Option<&[f64]>) -> Symmetric4 {
     let mut sum = [0.0; 10];
-    for (&r, &w) in rotations.iter().zip(weights) {
+    for (j, &r) in rotations.iter().enumerate() {
+        let w = weights.map_or(1.0, |w| w[j]);
         let [a, b, c, d] = to_wxyz(r);
         let (wa, wb, wc, wd) = (w * a, w * b, w * c, w * d);
         let products =
@@ -34,7 +35,7 @@ pub fn scatter(rotations: &[DQuat], weights: &[f64]) -> Symmetric4 {
 /// The chordal mean of `data` with the scalar part ≥ 0, and the relative eigen-residual
 /// `|M q − λ q| / λ`; an Error ([`ErrorKind::NotUnique`]) when the top eigenvalue is repeated.
 pub(super) fn chordal(data: &Data) -> Result<(DQuat, f64), KliError> {
-    let m = scatter(&data.rotations, &data.weights);
+    let m = scatter(&data.rotations, Some(&data.weights));
     let (values, vectors) = eigen(m);
     if values[0] - values[1] <= TIE * values[0] {
         let kind = ErrorKind::NotUnique { top: values[0], second: values[1] };

@@ -126,7 +126,7 @@ fn the_flow_settles_on_the_eigensolvers_mean() {
         let weights: Vec<f64> = (0..30).map(|_| 0.5 + random.uniform()).collect();
         let eigen = mean(&data, Some(&weights), Method::Chordal);
         let total: f64 = weights.iter().sum();
-        let m = scatter(&data, &weights).map(|row| row.map(|x| x / total));
+        let m = scatter(&data, Some(&weights)).map(|row| row.map(|x| x / total));
         let start = random.unit_quaternion();
         let (mut q, mut steps) = (start, 0);
         for next in chordal_flow(m, start, 1.0).skip(1) {
