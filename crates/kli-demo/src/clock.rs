@@ -9,6 +9,22 @@ pub(crate) trait Clocked {
     fn clock_mut(&mut self) -> &mut Clock;
 }
 
+/// `Clocked` for a page class whose [`Clock`] is its field `clock`.
+macro_rules! clocked {
+    ($class:ident) => {
+        impl $crate::clock::Clocked for $class {
+            fn clock(&self) -> &$crate::clock::Clock {
+                &self.clock
+            }
+
+            fn clock_mut(&mut self) -> &mut $crate::clock::Clock {
+                &mut self.clock
+            }
+        }
+    };
+}
+pub(crate) use clocked;
+
 impl<T: Clocked> Timed for T {
     fn span(&self) -> (f64, f64) {
         self.clock().span()

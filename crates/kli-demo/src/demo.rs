@@ -12,7 +12,7 @@ use wasm_bindgen::prelude::*;
 
 use crate::aircraft::{Face, aircraft};
 use crate::camera::Viewport;
-use crate::clock::{Clock, Clocked};
+use crate::clock::Clock;
 use crate::figure::{Figure, Frame, Layer, Motion, Record, View, finite, names};
 use crate::format::{Json, csv_table, fixed, number};
 use crate::object_view::{draw_object, object_camera};
@@ -138,15 +138,7 @@ impl Demo {
     }
 }
 
-impl Clocked for Demo {
-    fn clock(&self) -> &Clock {
-        &self.clock
-    }
-
-    fn clock_mut(&mut self) -> &mut Clock {
-        &mut self.clock
-    }
-}
+crate::clock::clocked!(Demo);
 
 crate::figure_class!(Demo, "KliSummary");
 

@@ -18,7 +18,7 @@ use kli_wasm::error::{JsResult, Thrown};
 use wasm_bindgen::prelude::*;
 
 use crate::aircraft::{Face, aircraft};
-use crate::clock::{Clock, Clocked};
+use crate::clock::Clock;
 use crate::figure::{Figure, Frame, Layer, Motion, Record, View, finite, names};
 use crate::pen::Pen;
 use model::{Model, STYLES};
@@ -172,15 +172,7 @@ impl KeyframesDemo {
     }
 }
 
-impl Clocked for KeyframesDemo {
-    fn clock(&self) -> &Clock {
-        &self.clock
-    }
-
-    fn clock_mut(&mut self) -> &mut Clock {
-        &mut self.clock
-    }
-}
+crate::clock::clocked!(KeyframesDemo);
 
 crate::figure_class!(KeyframesDemo, "KeyframesSummary");
 
