@@ -120,9 +120,16 @@ export class Player {
     return true;
   }
 
-  /** Asks for a frame while playing and seen. */
+  /** Asks for a frame while playing and seen; while unseen (hidden by style, which no observer
+   *  reports), looks again in a quarter of a second, asking for no frame. */
   schedule() {
     if (this.frame || !this.playing || !this.run) return;
+    clearTimeout(this.recheck);
+    if (!this.hooks.seen()) {
+      this.last = null;
+      this.recheck = setTimeout(() => this.schedule(), 250);
+      return;
+    }
     this.frame = requestAnimationFrame((now) => this.tick(now));
   }
 
@@ -140,13 +147,7 @@ export class Player {
     this.frame = 0;
     const run = this.run;
     if (!run || !this.playing) return;
-    if (!this.hooks.seen()) {
-      // Hidden (by style, which no observer reports): look again in a quarter of a second.
-      this.last = null;
-      clearTimeout(this.recheck);
-      this.recheck = setTimeout(() => this.schedule(), 250);
-      return;
-    }
+    if (!this.hooks.seen()) return this.schedule();
     const seconds = this.last === null ? 0 : (Math.min(Math.max(now - this.last, 0), LONGEST_FRAME) / 1000) * this.speed;
     this.last = now;
     const ended = seconds > 0 && run.advance(seconds);
