@@ -28,17 +28,30 @@ const PLAIN: std::ops::Range<f64> = 1e-290..1e290;
 /// for lengths as small as `1e-300` or as large as `1e300` is computed after scaling by the
 /// largest component, without underflow or overflow.
 pub fn unit(name: &str, q: DQuat) -> Result<DQuat, KliError> {
+    match plain_inverse_square(q) {
+        // Divided by |q|, not multiplied by 1/|q|: a unit input comes back bit for bit.
+        Some(_) => Ok(q / q.length()),
+        None => unit_rare(name, q),
+    }
+}
+
+/// `1/|q|²` for nearly every input, `None` for the rest (which [`unit`] refuses or scales
+/// first): `q` finite (a NaN or ∞ component makes `|q|²` NaN or ∞) and `|q|²` far from under-
+/// and overflow. A loop over a million quaternions inlines this test, and `q √(1/|q|²)` is `q`
+/// normalised with one division.
+#[inline(always)]
+pub fn plain_inverse_square(q: DQuat) -> Option<f64> {
+    let length_squared = q.length_squared();
+    PLAIN.contains(&length_squared).then(|| 1.0 / length_squared)
+}
+
+/// [`unit`] for the rest: refused (not finite, zero) or scaled first (tiny or huge).
+#[inline(never)]
+fn unit_rare(name: &str, q: DQuat) -> Result<DQuat, KliError> {
     let wxyz = to_wxyz(q);
     if let Some(index) = wxyz.iter().position(|c| !c.is_finite()) {
         let kind = ErrorKind::NotFinite { shape: Shape::Quaternion, index, value: wxyz[index] };
         return Err(KliError::new(name, kind));
-    }
-    let length_squared = q.length_squared();
-    if length_squared == 1.0 {
-        return Ok(q);
-    }
-    if PLAIN.contains(&length_squared) {
-        return Ok(q / length_squared.sqrt());
     }
     let largest = wxyz.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
     if largest == 0.0 {

@@ -5,9 +5,9 @@
 
 use glam::DQuat;
 
-use super::Data;
 use super::eigen::{Symmetric4, eigen};
 use crate::error::{ErrorKind, KliError};
+use crate::lanes::Lanes;
 use crate::quaternion::{from_wxyz, to_wxyz};
 
 /// How close the two largest eigenvalues may be, relative to the largest, before the mean is
@@ -17,26 +17,64 @@ const TIE: f64 = 1e-12;
 /// `M = Σ w_j r_j r_jᵀ` over `[w, x, y, z]` components, in one pass over the data; `weights`
 /// `None` is all 1 (the swarm's `λ_max`).
 pub fn scatter(rotations: &[DQuat], weights: Option<&[f64]>) -> Symmetric4 {
-    let mut sum = [0.0; 10];
+    let mut sum = Scatter::default();
     for (j, &r) in rotations.iter().enumerate() {
-        let w = weights.map_or(1.0, |w| w[j]);
-        let [a, b, c, d] = to_wxyz(r);
-        let (wa, wb, wc, wd) = (w * a, w * b, w * c, w * d);
-        let products =
-            [wa * a, wa * b, wa * c, wa * d, wb * b, wb * c, wb * d, wc * c, wc * d, wd * d];
-        for (s, p) in sum.iter_mut().zip(products) {
-            *s += p;
-        }
+        sum.add(weights.map_or(1.0, |w| w[j]), r);
     }
-    let [aa, ab, ac, ad, bb, bc, bd, cc, cd, dd] = sum;
-    [[aa, ab, ac, ad], [ab, bb, bc, bd], [ac, bc, cc, cd], [ad, bd, cd, dd]]
+    sum.matrix()
 }
 
-/// The chordal mean of `data` with the scalar part ≥ 0, and the relative eigen-residual
-/// `|M q − λ q| / λ`; an Error ([`ErrorKind::NotUnique`]) when the top eigenvalue is repeated.
-pub(super) fn chordal(data: &Data) -> Result<(DQuat, f64), KliError> {
-    let m = scatter(&data.rotations, Some(&data.weights));
-    let (values, vectors) = eigen(m);
+/// The running sum `Σ w_j r_j r_jᵀ`: its ten distinct entries, as two-lane pairs so that each
+/// datum is five multiply-adds of two lanes.
+#[derive(Clone, Copy)]
+pub struct Scatter {
+    // (aa, bb) (ab, bc) (ac, bd) (ad, cc) (cd, dd), for r = [a, b, c, d] = [w, x, y, z].
+    sums: [Lanes; 5],
+}
+
+impl Default for Scatter {
+    fn default() -> Scatter {
+        Scatter { sums: [Lanes::splat(0.0); 5] }
+    }
+}
+
+impl Scatter {
+    /// Adds `w r rᵀ`.
+    #[inline(always)]
+    pub fn add(&mut self, w: f64, r: DQuat) {
+        let [a, b, c, d] = to_wxyz(r);
+        let left = [
+            Lanes::new(a, b),
+            Lanes::new(a, b),
+            Lanes::new(a, b),
+            Lanes::new(a, c),
+            Lanes::new(c, d),
+        ];
+        let right = [
+            Lanes::new(a, b),
+            Lanes::new(b, c),
+            Lanes::new(c, d),
+            Lanes::new(d, c),
+            Lanes::new(d, d),
+        ];
+        let w = Lanes::splat(w);
+        for ((s, l), r) in self.sums.iter_mut().zip(left).zip(right) {
+            *s = *s + w * l * r;
+        }
+    }
+
+    /// The sum as a symmetric 4×4 matrix.
+    pub fn matrix(&self) -> Symmetric4 {
+        let [[aa, bb], [ab, bc], [ac, bd], [ad, cc], [cd, dd]] = self.sums.map(Lanes::to_array);
+        [[aa, ab, ac, ad], [ab, bb, bc, bd], [ac, bc, cc, cd], [ad, bd, cd, dd]]
+    }
+}
+
+/// The chordal mean for the scatter matrix `m`, with the scalar part ≥ 0, and the relative
+/// eigen-residual `|M q − λ q| / λ`; an Error ([`ErrorKind::NotUnique`]) when the top eigenvalue
+/// is repeated.
+pub(super) fn top(m: &Symmetric4) -> Result<(DQuat, f64), KliError> {
+    let (values, vectors) = eigen(*m);
     if values[0] - values[1] <= TIE * values[0] {
         let kind = ErrorKind::NotUnique { top: values[0], second: values[1] };
         return Err(KliError::new("quaternions", kind));

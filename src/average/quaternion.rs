@@ -5,7 +5,7 @@
 
 use glam::DQuat;
 
-use super::{Average, Data};
+use super::{Average, Data, Method, Weights, average};
 use crate::error::KliError;
 
 /// `m/|m|`, the data's signs aligned to `reference`'s hemisphere (`s_j = sign(r_j·reference)`),
@@ -30,17 +30,19 @@ pub(super) fn sum(data: &Data, reference: Option<DQuat>) -> Result<DQuat, KliErr
 }
 
 /// The quaternion mean of `quaternions` with `weights`: aligned to the hemisphere of the chordal
-/// mean (of the first datum where that is not unique), or with `aligned: false` as the signs
-/// come. Errors as [`average`](super::average)'s.
+/// mean (of the first datum where that is not unique), as [`average`] with
+/// [`Method::Quaternion`]; or with `aligned: false`, the signs as they come. Errors as
+/// [`average`]'s.
 pub fn quaternion_mean(
     quaternions: &[DQuat],
     weights: Option<&[f64]>,
     aligned: bool,
 ) -> Result<Average, KliError> {
-    let data = Data::new(quaternions, weights)?;
-    let reference = aligned
-        .then(|| super::chordal::chordal(&data).map(|(q, _)| q).unwrap_or(data.rotations[0]));
-    let rotation = sum(&data, reference)?;
+    if aligned {
+        return average(quaternions, weights, Method::Quaternion);
+    }
+    let data = Data::new(quaternions.iter(), Weights::new(weights, quaternions.len())?)?;
+    let rotation = sum(&data, None)?;
     let dispersion = data.dispersion(rotation);
     Ok(Average { rotation, iterations: 0, residual: 0.0, dispersion, weights: None })
 }

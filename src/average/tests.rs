@@ -229,3 +229,23 @@ fn bad_input_is_refused_by_name() {
     assert_eq!("karcher".parse::<Method>().unwrap_err().argument(), "method");
     assert_eq!("median".parse::<Method>().unwrap(), Method::Median);
 }
+
+#[test]
+fn the_angle_is_exact_from_a_nanoradian_to_a_half_turn() {
+    // A rotation about an axis through `t` from `a` is `t` away, whatever the axis and sign:
+    // built from (cos t/2, sin t/2 n), independent of the chord formula.
+    let a = from_wxyz([0.5, -0.5, 0.5, 0.5]);
+    let mut random = Random::new(7);
+    for t in [1e-9, 1e-5, 0.1, 1.0, 2.0, 3.0, 3.1, std::f64::consts::PI] {
+        let axis = random.gaussian3().normalize();
+        let b = a * DQuat::from_axis_angle(axis, t);
+        for b in [b, -b] {
+            let got = angle(a, b);
+            // `acos(|a·b|)` would be 1e-8 off at a nanoradian.
+            assert!((got - t).abs() <= 1e-15 * (1.0 + t), "{t}: {got}");
+            assert!((angle(b, a) - got).abs() <= 1e-15 * (1.0 + t));
+        }
+    }
+    assert_eq!(angle(a, a), 0.0);
+    assert_eq!(angle(a, -a), 0.0);
+}

@@ -9,7 +9,7 @@ use wasm_bindgen::prelude::*;
 
 use crate::error::JsResult;
 use crate::options::Fields;
-use crate::read::{Order, quaternion_list};
+use crate::read::{Order, quaternion_numbers};
 use crate::typed::{F64Array, numbers};
 use crate::value::describe;
 
@@ -93,8 +93,9 @@ pub fn average_rotations(
             weights = Some(numbers("weights", &value, MAX_LENGTH / 4)?);
         }
     }
-    let rotations = quaternion_list("quaternions", "rotation", quaternions, order, MAX_LENGTH)?;
-    let mean = average(&rotations, weights.as_deref(), method).map_err(|e| order.error(e))?;
+    let flat = quaternion_numbers("quaternions", "rotation", quaternions, order, MAX_LENGTH)?;
+    let rotations = flat.chunks_exact(4).map(|q| order.read([q[0], q[1], q[2], q[3]]));
+    let mean = average(rotations, weights.as_deref(), method).map_err(|e| order.error(e))?;
     let result = js_sys::Object::new();
     let set = |key: &str, value: JsValue| {
         let _ = js_sys::Reflect::set(&result, &key.into(), &value);

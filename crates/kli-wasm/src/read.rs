@@ -188,6 +188,20 @@ pub fn quaternion_list(
     order: Order,
     max: usize,
 ) -> Result<Vec<DQuat>, KliError> {
+    let flat = quaternion_numbers(name, each, value, order, max)?;
+    Ok(flat.chunks_exact(4).map(|q| order.read([q[0], q[1], q[2], q[3]])).collect())
+}
+
+/// [`quaternion_list`]'s numbers, 4 a quaternion in `order`, not yet read as quaternions: a
+/// typed array's are its own, copied once (for a million quaternions a second copy costs more
+/// than the mean).
+pub fn quaternion_numbers(
+    name: &str,
+    each: &str,
+    value: &JsValue,
+    order: Order,
+    max: usize,
+) -> Result<Vec<f64>, KliError> {
     let array = is_array(value).unwrap_or(false);
     // A flat array of numbers is a three.js track's `values` as an Array.
     let flat = is_view(value) || (array && get(name, value, &0.into())?.as_f64().is_some());
@@ -197,7 +211,7 @@ pub fn quaternion_list(
             let problem = format!("must hold 4 numbers per {each} (got {})", flat.len());
             return Err(KliError::invalid(name, problem));
         }
-        return Ok(flat.chunks_exact(4).map(|q| order.read([q[0], q[1], q[2], q[3]])).collect());
+        return Ok(flat);
     }
     if !array {
         let problem =
@@ -214,7 +228,11 @@ pub fn quaternion_list(
         let q = quaternion(&element, &get(&element, value, &(i as u32).into())?, order)?;
         // `quaternion` normalises; a list is checked (and normalised) by the core, which names
         // the element the same way.
-        Ok(q)
+        Ok(order.write(q))
     };
-    (0..length).map(one).collect()
+    let mut flat = Vec::with_capacity(4 * length);
+    for i in 0..length {
+        flat.extend(one(i)?);
+    }
+    Ok(flat)
 }

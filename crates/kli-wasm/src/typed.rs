@@ -87,6 +87,14 @@ pub fn read_numbers(name: &str, value: &JsValue, max: usize) -> Result<Vec<f64>,
         if let Some(length) = typed_length(value).filter(|&n| n > max as f64) {
             return Err(shape(too_long(name, length, max)));
         }
+        if value.is_instance_of::<Float64Array>() {
+            // Read through a fresh view into the module's memory: one copy, not two.
+            let array = F64Array::new(name, value).map_err(shape)?;
+            if array.length > max {
+                return Err(shape(too_long(name, array.length as f64, max)));
+            }
+            return array.to_vec(name).map_err(Refused::Unreadable);
+        }
         let Some(copy) = copy(value) else { return Err(shape(refused(name, wanted, value))) };
         if copy.length() as usize > max {
             return Err(shape(too_long(name, copy.length() as f64, max)));
@@ -187,6 +195,15 @@ impl F64Array {
             Ok(view) => Ok(view.unchecked_into()),
             Err(e) => Err(unreadable(name, &e)),
         }
+    }
+
+    /// All its elements, copied once into the module's memory.
+    pub fn to_vec(&self, name: &str) -> Result<Vec<f64>, KliError> {
+        let view = self.view(name, 0, self.length)?;
+        if view.length() as usize != self.length {
+            return Err(KliError::invalid(name, "is shorter than its length says"));
+        }
+        Ok(view.to_vec())
     }
 
     /// Copies elements `[start, start + into.len())` into `into`.
