@@ -71,7 +71,7 @@ fn two_rotations_weighted_three_to_one() {
 #[test]
 fn a_tie_is_refused_never_picked() {
     // 1 and i: M has the eigenvalues 1, 1, 0, 0.
-    let error = average(&[DQuat::IDENTITY, from_wxyz([0.0, 1.0, 0.0, 0.0])], None, Method::Chordal)
+    let error = average([DQuat::IDENTITY, from_wxyz([0.0, 1.0, 0.0, 0.0])], None, Method::Chordal)
         .unwrap_err();
     assert_eq!(error.kind().code(), "not-unique");
     assert_eq!(error.argument(), "quaternions");
@@ -221,7 +221,7 @@ fn bad_input_is_refused_by_name() {
             let got = mean(&three, Some(&[3.0 * scale, scale, scale]), method);
             assert!(angle(got, plain) < 1e-14, "{method:?} at {scale:e}");
         }
-        let tiny = average(&three, Some(&[5e-324; 3]), method).unwrap();
+        let tiny = average(three, Some(&[5e-324; 3]), method).unwrap();
         assert!(
             tiny.dispersion.is_finite() && tiny.weights.iter().flatten().all(|w| w.is_finite())
         );
