@@ -15,7 +15,7 @@ WASM_FEATURES := --enable-bulk-memory --enable-nontrapping-float-to-int --enable
                  --enable-mutable-globals --enable-reference-types --enable-multivalue --enable-simd
 RELEASE := target/$(TARGET)/release
 
-.PHONY: help setup setup-rust setup-node setup-browser pkg www single demo serve test lint publish-check \
+.PHONY: fixtures help setup setup-rust setup-node setup-browser pkg www single demo serve test lint publish-check \
         test-native test-wasm-node test-wasm-portable test-wasm-browser test-package test-page bench clean
 
 help:
@@ -25,6 +25,7 @@ help:
 	@echo "make www    build the page's module into www/pkg/"
 	@echo "make single each page as one self-contained HTML file in dist/single/ (works from file://)"
 	@echo "make bench  run the benchmarks"
+	@echo "make fixtures  recompute the reference means from SciPy (tests/fixtures)"
 
 setup: setup-rust setup-node setup-browser
 
@@ -191,6 +192,10 @@ bench: pkg www setup-browser
 	node bench/page.mjs
 	node bench/video.mjs
 	node bench/lighthouse.mjs
+
+# The reference means tests/js/average.test.mjs checks against, from SciPy (once, committed).
+fixtures:
+	node scripts/average-fixture.mjs
 
 clean:
 	cargo clean
