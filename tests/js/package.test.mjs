@@ -271,6 +271,52 @@ test("kli/three: smoothTrack and smoothInterpolation put the chain through a thr
   assert.deepEqual(r.refused, [true, "fps", "fps must be a number from 1 to 1000 (got 0)"]);
 });
 
+test("kli/three: blendRotations blends THREE.Quaternions, arrays of them and tracks' values by the weighted chordal mean, in any order", () => {
+  execFileSync("ln", ["-sfn", join(root, "node_modules/three"), join(project, "node_modules/three")]);
+  writeFileSync(join(project, "three-blend.mjs"), `
+    import * as THREE from "three";
+    import initAverage, { averageRotations } from "kli/average";
+    import { blendRotations, isKliError } from "kli/three";
+    await initAverage();
+    const q = (axis, angle) => new THREE.Quaternion().setFromAxisAngle(new THREE.Vector3(...axis).normalize(), angle);
+    // Three poses of two bones; the second pose's first bone with the other sign (the same rotation).
+    const poses = [[q([1, 0, 0], 0.4), q([0, 1, 0], 1.0)], [q([0, 1, 0], 0.9), q([1, 1, 0], 0.2)], [q([0, 0, 1], 1.3), q([0, 1, 1], 2.0)]];
+    poses[1][0].set(-poses[1][0].x, -poses[1][0].y, -poses[1][0].z, -poses[1][0].w);
+    const weights = [0.5, 0.3, 0.2];
+    const bones = blendRotations(poses, weights);
+    const reordered = blendRotations([poses[2], poses[0], poses[1]], [0.2, 0.5, 0.3]);
+    const mean = (b) => Array.from(averageRotations(poses.map((p) => p[b].toArray()), { weights, order: "xyzw" }).rotation);
+    const one = blendRotations(poses.map((p) => p[1]), weights, new THREE.Quaternion());
+    // A key at a time: two tracks of three keys, the values scalar last as three.js keeps them.
+    const track = (k) => new THREE.QuaternionKeyframeTrack(".quaternion", [0, 1, 2], [q([1, 0, 0], k), q([0, 1, 0], 2 * k), q([0, 0, 1], 3 * k)].flatMap((r) => r.toArray()));
+    const [a, b] = [track(0.3), track(0.9)];
+    const values = blendRotations([a.values, b.values], [1, 3], new Float32Array(12));
+    const blended = new THREE.QuaternionKeyframeTrack(".quaternion", a.times, values);
+    const keyMean = (k) => Array.from(averageRotations([a.values.slice(4 * k, 4 * k + 4), b.values.slice(4 * k, 4 * k + 4)], { weights: [1, 3], order: "xyzw" }).rotation);
+    const refusals = [];
+    for (const call of [() => blendRotations([], []), () => blendRotations([poses[0], poses[1][0]], [1, 1]), () => blendRotations(poses, [1, 1]),
+      () => blendRotations(poses, [0, 0, 0]), () => blendRotations([a.values, b.values], [1, 1], new Float64Array(3)), () => blendRotations([[NaN, 0, 0, 1]], [1])]) {
+      try { call(); refusals.push(null); } catch (e) { refusals.push([isKliError(e), e.argument]); }
+    }
+    console.log(JSON.stringify({ bones: bones.map((r) => r.toArray()), isQuaternion: bones.every((r) => r.isQuaternion), reordered: reordered.map((r) => r.toArray()),
+      means: [mean(0), mean(1)], one: one.toArray(), values: Array.from(values), keyMeans: [0, 1, 2].flatMap(keyMean), valid: blended.validate(), refusals }));
+  `);
+  const r = run("three-blend.mjs");
+  const same = (got, want, tolerance, what) => {
+    const dot = got.reduce((s, c, i) => s + c * want[i], 0);
+    assert.ok(Math.abs(Math.abs(dot) - 1) < tolerance, `${what}: ${got} against ${want}`);
+  };
+  assert.equal(r.isQuaternion, true);
+  r.bones.forEach((bone, b) => {
+    same(bone, r.means[b], 1e-15, `bone ${b} against averageRotations`);
+    same(bone, r.reordered[b], 1e-15, `bone ${b} with the poses reordered`);
+  });
+  same(r.one, r.means[1], 1e-15, "one THREE.Quaternion a pose");
+  for (let k = 0; k < 3; k++) same(r.values.slice(4 * k, 4 * k + 4), r.keyMeans.slice(4 * k, 4 * k + 4), 1e-7, `key ${k}`);
+  assert.equal(r.valid, true);
+  assert.deepEqual(r.refusals, [[true, "poses"], [true, "poses[1]"], [true, "poses"], [true, "weights"], [true, "out"], [true, "poses[0] (bone 0)"]]);
+});
+
 test("kli/gltf: smoothRotations replaces LINEAR rotation samplers with the chain, leaves the rest, survives a .glb", () => {
   const core = JSON.stringify(join(root, "node_modules/@gltf-transform/core/dist/index.js"));
   writeFileSync(join(project, "gltf-smooth.mjs"), `

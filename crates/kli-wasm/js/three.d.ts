@@ -1,4 +1,4 @@
-import type { QuaternionKeyframeTrack } from "three";
+import type { Quaternion, QuaternionKeyframeTrack } from "three";
 export { isKliError } from "./spline.js";
 
 /** Options of smoothTrack and smoothInterpolation. */
@@ -16,3 +16,15 @@ export function smoothTrack(track: QuaternionKeyframeTrack, options?: SmoothTrac
 /** A copy of `track` that the mixer evaluates on the chain itself (no resampling); its module
  *  memory is freed with the track. For playback; to serialise, use smoothTrack. */
 export function smoothInterpolation(track: QuaternionKeyframeTrack, options?: Pick<SmoothTrackOptions, "smoothness">): QuaternionKeyframeTrack;
+
+/** Poses blended a bone at a time by the weighted chordal mean (kli/average; initialise it
+ *  first), whatever their order: one THREE.Quaternion a pose, an array of them (a bone each), or a
+ *  track's `values` (4 numbers a key, scalar last). `weights` one a pose, each ≥ 0, not all 0.
+ *  The result goes into `out` if given. */
+export function blendRotations(poses: Quaternion[], weights: ArrayLike<number>, out?: Quaternion): Quaternion;
+export function blendRotations(poses: Quaternion[][], weights: ArrayLike<number>, out?: Quaternion[]): Quaternion[];
+export function blendRotations<T extends Float32Array | Float64Array | number[] = Float64Array>(
+  poses: ArrayLike<number>[],
+  weights: ArrayLike<number>,
+  out?: T,
+): T;

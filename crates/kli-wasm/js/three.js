@@ -2,9 +2,12 @@
 // QuaternionKeyframeTrack only linearly (piecewise SLERP: ω jumps at every key; InterpolateSmooth
 // is "unsupported" for quaternions). These put the Kuramoto–Lohe chain of kli/spline through the
 // same keys: `smoothTrack` resamples it into a plain track (for AnimationClip, toJSON, glTF
-// export), `smoothInterpolation` evaluates it live in the mixer. Quaternions are scalar last, as
-// three.js keeps them. Initialise kli/spline first (`await init()` from "kli/spline").
-import { Interpolant, QuaternionKeyframeTrack } from "three";
+// export), `smoothInterpolation` evaluates it live in the mixer. `blendRotations` blends poses
+// by kli/average's weighted chordal mean, whatever their order. Quaternions are scalar last, as
+// three.js keeps them. Initialise kli/spline first (`await init()` from "kli/spline") for the
+// tracks, kli/average for the blend.
+import { Interpolant, Quaternion, QuaternionKeyframeTrack } from "three";
+import { blendRotations as blendFlat } from "./average.js";
 import { isKliError } from "./spline.js";
 import { chainThrough, readOptions, refuse, resample } from "./resample.js";
 
@@ -71,4 +74,66 @@ export function smoothInterpolation(track, options) {
   };
   chains.register(smooth, chain);
   return smooth;
+}
+
+const isQuaternion = (q) => q !== null && typeof q === "object" && q.isQuaternion === true;
+
+/** How a pose is given: one THREE.Quaternion, an array of them (a bone each), or 4 numbers a bone
+ *  scalar last (a track's `values`: a key each); and how many bones it has. */
+function shapeOf(pose, name) {
+  if (isQuaternion(pose)) return { kind: "quaternion", bones: 1 };
+  if (Array.isArray(pose) && pose.length > 0 && pose.every(isQuaternion)) return { kind: "quaternions", bones: pose.length };
+  const numbers = ArrayBuffer.isView(pose) || Array.isArray(pose);
+  if (numbers && typeof pose.length === "number" && pose.length > 0 && pose.length % 4 === 0) {
+    return { kind: "values", bones: pose.length / 4 };
+  }
+  return refused(name, "must be a THREE.Quaternion, an array of them, or 4 numbers a bone scalar last (a track's values)");
+}
+
+function refused(name, problem) {
+  throw refuse(name, problem);
+}
+
+/**
+ * The poses blended a bone at a time by the weighted chordal mean (kli/average), which does not
+ * depend on the order of the poses (slerping one pose into the next does). Each pose is a
+ * THREE.Quaternion, an array of them, or a track's `values` (4 numbers a key, scalar last), all of
+ * one shape; `weights` one a pose, each ≥ 0 and not all 0. The result goes into `out` (a
+ * Quaternion, an array of them, an array of numbers) or a new one (a Float64Array for values).
+ */
+export function blendRotations(poses, weights, out) {
+  if (!Array.isArray(poses) || poses.length === 0) {
+    refused("poses", "must be a non-empty array of poses (THREE.Quaternions, arrays of them, or tracks' values)");
+  }
+  const { kind, bones } = shapeOf(poses[0], "poses[0]");
+  const flat = new Float64Array(4 * bones * poses.length);
+  poses.forEach((pose, p) => {
+    const shape = shapeOf(pose, `poses[${p}]`);
+    if (shape.kind !== kind || shape.bones !== bones) {
+      refused(`poses[${p}]`, `must have the shape of poses[0] (${bones} ${kind === "values" ? "keys of 4 numbers" : "THREE.Quaternions"})`);
+    }
+    const at = 4 * bones * p;
+    if (kind === "values") flat.set(pose, at);
+    else [pose].flat().forEach((q, b) => flat.set([q.x, q.y, q.z, q.w], at + 4 * b));
+  });
+  const blended = blendFlat(flat, weights, new Float64Array(4 * bones), { order: "xyzw" });
+  if (kind === "values") {
+    const target = out ?? new Float64Array(4 * bones);
+    if (!(ArrayBuffer.isView(target) || Array.isArray(target)) || target.length !== 4 * bones) {
+      refused("out", `must be an array of ${4 * bones} numbers`);
+    }
+    for (let k = 0; k < blended.length; k++) target[k] = blended[k];
+    return target;
+  }
+  const quaternion = (b, q) => (q ?? new Quaternion()).set(blended[4 * b], blended[4 * b + 1], blended[4 * b + 2], blended[4 * b + 3]);
+  if (kind === "quaternion") {
+    if (out !== undefined && !isQuaternion(out)) refused("out", "must be a THREE.Quaternion");
+    return quaternion(0, out);
+  }
+  if (out !== undefined && !(Array.isArray(out) && out.length === bones && out.every(isQuaternion))) {
+    refused("out", `must be an array of ${bones} THREE.Quaternions`);
+  }
+  const target = out ?? [];
+  for (let b = 0; b < bones; b++) target[b] = quaternion(b, target[b]);
+  return target;
 }
