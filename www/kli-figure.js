@@ -32,6 +32,7 @@ const DEFAULTS = {
   kli: KLI_DEFAULTS,
   keyframes: { keys: [[1, 0, 0, 0], [0.8, 0.6, 0, 0], [0.6, 0, 0.8, 0], [0, 0, 0.6, 0.8]], times: [], smoothness: 1 },
   swarm: { count: 200, coupling: 1, seed: 1 },
+  average: { count: 40, noise: 5, outliers: 0.2, seed: 1, moved: [] },
 };
 /** The largest `t` and `speed` a figure takes. */
 const MAX_T = 1e6, MAX_SPEED = 1000;
@@ -42,6 +43,7 @@ const MODULES = {
   kli: () => import("./pkg/kli_demo.js"),
   keyframes: () => import("./pkg/keyframes_demo.js"),
   swarm: () => import("./pkg/swarm_demo.js"),
+  average: () => import("./pkg/average_demo.js"),
 };
 /** @type {Map<string, Promise<any>>} each page module, initialised once for the whole page */
 const loaded = new Map();

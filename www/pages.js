@@ -28,6 +28,10 @@ export const PAGES = [
     name: "swarm", html: "swarm.html", script: "swarm.js", title: "The swarm",
     views: { swarm: "hopf" },
   },
+  {
+    name: "average", html: "average.html", script: "average.js", title: "Averaging",
+    views: { average: "hopf" },
+  },
 ];
 
 /** The page whose module draws `view`, if any. */

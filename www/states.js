@@ -61,5 +61,20 @@ export const SWARM = {
   keyOf: (/** @type {unknown} */ error) => SWARM.schema.find((entry) => entry.key === argumentOf(error))?.key,
 };
 
+/** Averaging (average.html, and the average figure): the measurements' recipe and the ones moved
+ *  by hand (index, w, x, y, z each), `?n=40&noise=5&out=0.2&seed=1&moved=3,0.5,0.5,0.5,0.5`. */
+export const AVERAGE = {
+  schema: /** @type {const} */ ([
+    { key: "count", url: "n", kind: "number", range: [3, 500] },
+    { key: "noise", url: "noise", kind: "number", range: [0, 30] },
+    { key: "outliers", url: "out", kind: "number", range: [0, 0.5] },
+    { key: "seed", url: "seed", kind: "number" },
+    { key: "moved", url: "moved", kind: "quaternions" },
+  ]),
+  /** @param {any} module @param {{ count: number, noise: number, outliers: number, seed: number, moved: number[][] }} state */
+  create: (module, state) => new module.AverageDemo({ ...state, moved: new Float64Array(state.moved.flat()) }),
+  keyOf: (/** @type {unknown} */ error) => AVERAGE.schema.find((entry) => entry.key === argumentOf(error))?.key,
+};
+
 /** Each page's state, by the page's name (pages.js). */
-export const STATES = { kli: KLI, keyframes: KEYFRAMES, swarm: SWARM };
+export const STATES = { kli: KLI, keyframes: KEYFRAMES, swarm: SWARM, average: AVERAGE };

@@ -27,7 +27,10 @@ pub(crate) struct Frame {
     pub height: f64,
     pub pixel_ratio: f64,
     // The swarm is drawn as it is now: its page alone draws no time from a frame.
-    #[cfg_attr(not(any(feature = "kli-page", feature = "keyframes-page")), allow(dead_code))]
+    #[cfg_attr(
+        not(any(feature = "kli-page", feature = "keyframes-page", feature = "average-page")),
+        allow(dead_code)
+    )]
     pub t: f64,
     pub camera: Camera,
     /// Every text's size is multiplied by this (0.5 to 4).

@@ -87,6 +87,29 @@ pub fn draw_legend_row(pen: &Pen, (right, y): (f64, f64), entries: &[Entry]) {
     }
 }
 
+/// A plot's legend: beside its title when there is room; else one row inside the panel's top
+/// (keep the curves below 1/1.08 of its height); else, on a narrow panel, an entry a row there.
+#[cfg_attr(not(any(feature = "keyframes-page", feature = "average-page")), allow(dead_code))]
+pub(crate) fn draw_plot_key(
+    pen: &Pen,
+    panel: &crate::plots::Panel,
+    title: &str,
+    entries: &[Entry],
+) {
+    let (right, line) = (panel.left + panel.width - 4.0, 14.0 * pen.text_scale());
+    let row = legend_row_width(pen, entries);
+    if row <= panel.width - pen.text_width(title, 12.5) - 12.0 {
+        draw_legend_row(pen, (right, panel.top - line), entries);
+    } else if row <= panel.width - 8.0 {
+        draw_legend_row(pen, (right, panel.top + 8.0 * pen.text_scale()), entries);
+    } else {
+        for (i, entry) in entries.iter().enumerate() {
+            let y = panel.top + 8.0 * pen.text_scale() + i as f64 * line;
+            draw_legend_row(pen, (right, y), std::slice::from_ref(entry));
+        }
+    }
+}
+
 /// Labels for points that may fall on top of each other (keys whose Hopf points coincide):
 /// points within `radius` pixels of an earlier one share its label ("k0, k1"). Returns each
 /// label and where its first point is.

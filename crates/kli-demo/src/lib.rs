@@ -2,18 +2,20 @@
 //!
 //! Draws what the pages show on `<canvas>` 2D contexts through `web-sys`, and exports the classes
 //! the pages drive. Each page loads one module, a build of this crate with its feature
-//! (`kli-page`, `swarm-page`, `keyframes-page`), which holds the npm package's API for that page too
+//! (`kli-page`, `swarm-page`, `keyframes-page`, `average-page`), which holds the npm package's API for that page too
 //! ([`kli_wasm`]), so the pages and the package speak one language.
 //!
 //! Plain-Rust geometry and data ([`camera`], [`aircraft`], [`scene`], [`ticks`], [`palette`]) are
 //! apart from the files that draw ([`pen`], [`object_view`], [`sphere_view`], [`plots`]) and the
 //! classes themselves ([`demo`] for the KLI page, [`swarm_demo`] for the swarm page, with
-//! [`swarm_view`] and [`swarm_plots`], [`keyframes`] for the keyframes page); every export
+//! [`swarm_view`] and [`swarm_plots`], [`keyframes`] for the keyframes page, [`average`] for the averaging page); every export
 //! says where it came from ([`provenance`]).
 
 pub mod aircraft;
+#[cfg(feature = "average-page")]
+pub mod average;
 pub mod camera;
-#[cfg(any(feature = "kli-page", feature = "keyframes-page"))]
+#[cfg(any(feature = "kli-page", feature = "keyframes-page", feature = "average-page"))]
 mod clock;
 #[cfg(feature = "kli-page")]
 pub mod demo;
@@ -37,6 +39,8 @@ pub mod swarm_plots;
 pub mod swarm_view;
 pub mod ticks;
 
+#[cfg(feature = "average-page")]
+pub use average::AverageDemo;
 #[cfg(feature = "kli-page")]
 pub use demo::Demo;
 #[cfg(feature = "keyframes-page")]

@@ -3,7 +3,7 @@
 
 use super::model::{Model, STYLES, Series};
 use crate::figure::Layer;
-use crate::legend::{Entry, Mark, draw_legend_row, legend_row_width};
+use crate::legend::{Entry, Mark, draw_plot_key};
 use crate::palette::MUTED;
 use crate::pen::Pen;
 use crate::plots::{Panel, inset, trim};
@@ -55,23 +55,11 @@ pub fn draw_plots(pen: &Pen, model: &Model, (width, height): (f64, f64), t: f64,
     }
 }
 
-/// The curves' legend: beside the title when there is room; else one row inside the panel's top
-/// (the curves reach 1/1.08 of its height); else, on a narrow panel, an entry a row there.
+/// The curves' legend (see [`draw_plot_key`]).
 fn draw_key(pen: &Pen, panel: &Panel, title: &str) {
     let entries: Vec<Entry> = STYLES
         .iter()
         .map(|s| Entry { mark: Mark::Line(s.colour, 2.0, &[]), label: s.name })
         .collect();
-    let (right, line) = (panel.left + panel.width - 4.0, 14.0 * pen.text_scale());
-    let row = legend_row_width(pen, &entries);
-    if row <= panel.width - pen.text_width(title, 12.5) - 12.0 {
-        draw_legend_row(pen, (right, panel.top - line), &entries);
-    } else if row <= panel.width - 8.0 {
-        draw_legend_row(pen, (right, panel.top + 8.0 * pen.text_scale()), &entries);
-    } else {
-        for (i, entry) in entries.iter().enumerate() {
-            let y = panel.top + 8.0 * pen.text_scale() + i as f64 * line;
-            draw_legend_row(pen, (right, y), std::slice::from_ref(entry));
-        }
-    }
+    draw_plot_key(pen, panel, title, &entries);
 }

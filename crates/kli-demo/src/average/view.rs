@@ -1,0 +1,201 @@
+//! The averaging page's pictures: the measurements, the truth, the four means and the follower's
+//! path on the Hopf sphere; the follower as an object beside the truth; each mean's error as a
+//! bar; and the sweep of the errors against the outlier share.
+
+use glam::DVec3;
+use kli::hopf::hopf;
+
+use super::model::{Model, STYLES};
+use crate::aircraft::Face;
+use crate::camera::Viewport;
+use crate::figure::{Frame, Layer};
+use crate::format::fixed;
+use crate::legend::{Entry, Mark, draw_legend, draw_plot_key};
+use crate::object_view::{draw_object, object_camera};
+use crate::palette::{GRID, INK, KLI, MUTED};
+use crate::pen::Pen;
+use crate::plots::{Panel, inset, trim};
+use crate::sphere_view::{Side, View, draw_globe, draw_grid_back, draw_grid_front, grid};
+use crate::ticks::nice_step;
+
+/// The measurements' dots: inliers, wild ones, and the ring of those the median marks.
+const DATUM: &str = "#1864ab";
+const WILD: &str = "#e8590c";
+
+/// The still part: the sphere, the measurements (wild ones in their own colour, those the median
+/// marks ringed), the truth, the means and the follower's whole path; the moving part: the
+/// follower at the frame's time.
+pub fn draw_sphere(pen: &Pen, model: &Model, frame: &Frame, layer: Layer) {
+    let viewport = frame.sphere_viewport();
+    let view = View { pen, viewport: &viewport, camera: &frame.camera };
+    if layer.still() {
+        draw_still(&view, model);
+    }
+    if layer != Layer::Still {
+        let p = hopf(model.follower(frame.t));
+        pen.alpha(if view.in_front(p) { 1.0 } else { 0.45 });
+        pen.disc(view.at(p), 6.5, Some(INK), Some(("#ffffff", 2.0)));
+        pen.alpha(1.0);
+    }
+}
+
+fn draw_still(view: &View, model: &Model) {
+    let pen = view.pen;
+    let grid = grid();
+    let points: Vec<DVec3> = model.data.iter().map(|&q| hopf(q)).collect();
+    let r = if points.len() > 200 { 2.4 } else { 3.4 };
+    draw_grid_back(view, &grid);
+    view.polyline_on(&model.flow_hopf, Side::Back, (INK, 1.5, &[4.0, 3.0]));
+    for (&p, &wild) in points.iter().zip(&model.wild) {
+        if !view.in_front(p) {
+            pen.disc(view.at(p), r, Some(if wild { WILD } else { MUTED }), None);
+        }
+    }
+    pen.alpha(1.0);
+    draw_globe(view);
+    draw_grid_front(view, &grid);
+    view.polyline_on(&model.flow_hopf, Side::Front, (INK, 2.0, &[4.0, 3.0]));
+    let marked = model.marked();
+    for ((&p, &wild), &mark) in points.iter().zip(&model.wild).zip(&marked) {
+        let front = view.in_front(p);
+        pen.alpha(if front { 1.0 } else { 0.4 });
+        if front {
+            pen.disc(view.at(p), r, Some(if wild { WILD } else { DATUM }), None);
+        }
+        if mark {
+            pen.disc(view.at(p), r + 3.0, None, Some((WILD, 1.5)));
+        }
+    }
+    let truth = hopf(model.truth);
+    pen.alpha(if view.in_front(truth) { 1.0 } else { 0.4 });
+    star(pen, view.at(truth), 9.0, INK);
+    for (mean, style) in model.means.iter().zip(&STYLES) {
+        let p = hopf(mean.rotation);
+        pen.alpha(if view.in_front(p) { 1.0 } else { 0.4 });
+        pen.disc(view.at(p), 5.0, Some("#ffffff"), Some((style.colour, 2.5)));
+    }
+    pen.alpha(1.0);
+    let entries = [
+        Entry { mark: Mark::Disc(Some(DATUM), DATUM), label: "a measurement h(r_j)" },
+        Entry {
+            mark: Mark::Disc(Some(WILD), WILD),
+            label: "a wild one (ringed: marked by the median)",
+        },
+        Entry {
+            mark: Mark::Disc(Some(INK), INK), label: "★ the truth; ● the follower, from 1"
+        },
+        Entry {
+            mark: Mark::Disc(Some("#ffffff"), KLI),
+            label: "the four means (colours as in the bars)",
+        },
+    ];
+    draw_legend(pen, view.viewport, &entries, None);
+}
+
+/// A five-pointed star centred at `(x, y)`.
+fn star(pen: &Pen, (x, y): (f64, f64), r: f64, colour: &str) {
+    let points: Vec<(f64, f64)> = (0..10)
+        .map(|k| {
+            let a = std::f64::consts::PI * (k as f64 / 5.0 - 0.5);
+            let radius = if k % 2 == 0 { r } else { 0.45 * r };
+            (x + radius * a.cos(), y + radius * a.sin())
+        })
+        .collect();
+    pen.fill_polygon(&points, colour, Some("#ffffff"));
+}
+
+/// The follower at `t` beside the truth, as objects.
+pub fn draw_objects(pen: &Pen, model: &Model, mesh: &[Face], (width, height): (f64, f64), t: f64) {
+    let camera = object_camera();
+    let wide = width >= height;
+    let (w, h) = if wide { (width / 2.0, height) } else { (width, height / 2.0) };
+    let error = kli::average::angle(model.follower(t), model.truth).to_degrees();
+    let objects = [
+        (model.follower(t), format!("the follower: {}° from the truth", fixed(error, 1)), INK),
+        (model.truth, "the truth".to_owned(), MUTED),
+    ];
+    for (i, (q, label, colour)) in objects.iter().enumerate() {
+        let (left, top) = if wide { (i as f64 * w, 0.0) } else { (0.0, i as f64 * h) };
+        let viewport = Viewport::fitting(left, top + 14.0, w, h - 14.0, 1.6);
+        draw_object(pen, &viewport, &camera, mesh, *q, false);
+        pen.text(label, (left + 0.5 * w, top + 10.0), colour, 12.0, "center");
+    }
+}
+
+/// Each mean's angle to the truth as a bar, degrees, its value at its end.
+pub fn draw_means(pen: &Pen, model: &Model, (width, height): (f64, f64)) {
+    let s = pen.text_scale();
+    let errors: Vec<f64> = model.errors().iter().map(|e| e.to_degrees()).collect();
+    let largest = errors.iter().fold(1.0_f64, |m, &e| m.max(e));
+    let names = STYLES.iter().map(|st| pen.text_width(st.name, 11.0));
+    let label = names.fold(0.0_f64, f64::max) + 12.0;
+    let left = label.min(0.45 * width);
+    let top = 26.0 * s;
+    let value = pen.text_width("88.88°", 11.0) + 10.0;
+    let span = (width - left - value).max(10.0);
+    let row = ((height - top - 8.0) / STYLES.len() as f64).max(1.0);
+    pen.text("Each mean's angle to the truth", (4.0, 12.0 * s), INK, 12.5, "left");
+    pen.line((left, top), (left, top + row * STYLES.len() as f64), GRID, 1.0, &[]);
+    for (i, (style, &e)) in STYLES.iter().zip(&errors).enumerate() {
+        let y = top + (i as f64 + 0.5) * row;
+        let bar = (0.7 * row).min(22.0);
+        let length = span * e / largest;
+        let corners = [
+            (left, y - 0.5 * bar),
+            (left + length, y - 0.5 * bar),
+            (left + length, y + 0.5 * bar),
+            (left, y + 0.5 * bar),
+        ];
+        pen.fill_polygon(&corners, style.colour, None);
+        pen.text(style.name, (left - 6.0, y), INK, 11.0, "right");
+        pen.text(&format!("{}°", fixed(e, 2)), (left + length + 5.0, y), INK, 11.0, "left");
+    }
+}
+
+/// The sweep: each mean's error (degrees; the median over seeded sets) against the outlier
+/// share, the page's share marked. Points that are not finite are left out.
+pub fn draw_sweep(
+    pen: &Pen,
+    (width, height): (f64, f64),
+    shares: &[f64],
+    errors: &[f64],
+    current: f64,
+) {
+    let n = shares.len().min(errors.len() / 4);
+    let finite = |v: f64| v.is_finite().then_some(v);
+    let largest = (0..4 * n).filter_map(|k| finite(errors[k].to_degrees())).fold(1.0, f64::max);
+    // Room above the curves for the legend's row inside the panel.
+    let step = nice_step(1.1 * largest);
+    let top = step * (1.1 * largest / step).ceil();
+    let area = inset((0.0, 0.0, width, height), pen.text_scale(), 46.0);
+    let (left, top_edge, w, h) = area;
+    let p = Panel {
+        left,
+        top: top_edge,
+        width: w,
+        height: h,
+        x_min: 0.0,
+        x_max: 0.5,
+        y_min: 0.0,
+        y_max: top,
+    };
+    let ticks: Vec<(f64, String)> =
+        [0.0, 0.5 * top, top].iter().map(|&v| (v, format!("{}°", trim(v)))).collect();
+    let title = "each mean's error against the outlier share";
+    p.frame_with(pen, title, &ticks, "share");
+    for (m, style) in STYLES.iter().enumerate() {
+        let (xs, ys): (Vec<f64>, Vec<f64>) = (0..n)
+            .filter_map(|i| finite(errors[4 * i + m]).map(|e| (shares[i], e.to_degrees())))
+            .unzip();
+        p.series(pen, &xs, ys.iter().copied(), style.colour, 2.0, &[]);
+        let points: Vec<(f64, f64)> = xs.iter().zip(&ys).map(|(&x, &y)| p.at(x, y)).collect();
+        pen.dots(&points, 2.5, style.colour);
+    }
+    let (x, _) = p.at(current.clamp(0.0, 0.5), 0.0);
+    pen.line((x, p.top), (x, p.top + p.height), MUTED, 1.0, &[3.0, 3.0]);
+    let entries: Vec<Entry> = STYLES
+        .iter()
+        .map(|st| Entry { mark: Mark::Line(st.colour, 2.0, &[]), label: st.name })
+        .collect();
+    draw_plot_key(pen, &p, title, &entries);
+}
