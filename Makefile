@@ -117,12 +117,13 @@ www/vendor/codecs.js: www/video/codecs.js node_modules/.installed
 	  --outfile=$@
 
 # What the examples import by name through their import map, served locally: the package's
-# kli, kli/spline and kli/three; three.js as one minified module with its source map, as an
-# app's bundler would serve it; reveal.js for the example deck (examples/slides.html).
+# kli, kli/spline, kli/average and kli/three (which imports both); three.js as one minified
+# module with its source map, as an app's bundler would serve it; reveal.js for the example deck (examples/slides.html).
 www/examples/vendor/.built: pkg/.built node_modules/.installed
 	rm -rf www/examples/vendor
 	mkdir -p www/examples/vendor/kli www/examples/vendor/three www/examples/vendor/reveal/theme
-	cp pkg/kli.js pkg/kli_bg.wasm pkg/spline.js pkg/spline_bg.wasm pkg/three.js pkg/resample.js www/examples/vendor/kli/
+	cp pkg/kli.js pkg/kli_bg.wasm pkg/spline.js pkg/spline_bg.wasm pkg/average.js pkg/average_bg.wasm pkg/three.js pkg/resample.js \
+	  www/examples/vendor/kli/
 	esbuild node_modules/three/build/three.module.js --bundle --format=esm --minify --sourcemap \
 	  --log-level=warning --outfile=www/examples/vendor/three/three.module.js
 	cp node_modules/reveal.js/dist/reveal.mjs www/examples/vendor/reveal/reveal.module.js

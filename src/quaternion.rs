@@ -35,7 +35,7 @@ pub fn unit(name: &str, q: DQuat) -> Result<DQuat, KliError> {
     }
 }
 
-/// `1/|q|²` for nearly every input, `None` for the rest (which [`unit`] refuses or scales
+/// `1/|q|²` for nearly every input, `None` for the rest (which [`unit()`] refuses or scales
 /// first): `q` finite (a NaN or ∞ component makes `|q|²` NaN or ∞) and `|q|²` far from under-
 /// and overflow. A loop over a million quaternions inlines this test, and `q √(1/|q|²)` is `q`
 /// normalised with one division.

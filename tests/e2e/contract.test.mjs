@@ -75,7 +75,7 @@ async function swipeUp(cdp, x, y) {
 }
 
 test("touch-action: none only on the canvases that can be dragged, so a swipe elsewhere scrolls", async () => {
-  for (const [url, draggable] of [["index.html", ["hopf-canvas"]], ["keyframes.html", ["keyframes-hopf"]], ["swarm.html", ["swarm-hopf"]]]) {
+  for (const [url, draggable] of [["index.html", ["hopf-canvas"]], ["keyframes.html", ["keyframes-hopf"]], ["swarm.html", ["swarm-hopf"]], ["average.html", ["average-hopf"]]]) {
     const { page, context, problems } = await open(url, { viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true });
     try {
       const actions = await page.evaluate(() => Array.from(document.querySelectorAll("canvas"), (c) => [c.id, getComputedStyle(c).touchAction]));
@@ -131,6 +131,7 @@ test("every page shows every refused URL value beside its field at once, and run
   const cases = [
     ["index.html?eps=-1&step=0", { tolerance: /tolerance/, step: /step/ }],
     ["swarm.html?K=abc&n=0", { coupling: /coupling/, count: /count/ }],
+    ["average.html?n=1&noise=abc", { count: /count/, noise: /noise/ }],
     ["keyframes.html?keys=1,0,0,0;nan,0,0,1;0,1,0,0&s=5", { keys: /keys\[1\]/, smoothness: /smoothness/ }],
   ];
   for (const [url, refused] of cases) {
@@ -205,13 +206,16 @@ test("the figure interface under hostile input: every call draws with defaults o
         kli: await import("./pkg/kli_demo.js"),
         keyframes: await import("./pkg/keyframes_demo.js"),
         swarm: await import("./pkg/swarm_demo.js"),
+        average: await import("./pkg/average_demo.js"),
       };
       await modules.keyframes.default();
       await modules.swarm.default();
+      await modules.average.default();
       const figures = [
         [new modules.kli.Demo([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]), ["object", "hopf", "filmstrip", "plots"], "path"],
         [new modules.keyframes.KeyframesDemo(new Float64Array([1, 0, 0, 0, 0.8, 0.6, 0, 0, 0.6, 0, 0.8, 0]), new Float64Array(0), 1), ["objects", "hopf", "plots"], "curves"],
         [new modules.swarm.SwarmDemo({ count: 20 }), ["hopf", "objects", "plots"], "swarm"],
+        [new modules.average.AverageDemo({ count: 20 }), ["hopf", "objects", "means"], "measurements"],
       ];
       const ctx = document.createElement("canvas").getContext("2d");
       const hostileFrames = [null, undefined, 0, "frame", {}, { width: NaN, height: Infinity, pixelRatio: -1, t: "x" },
@@ -267,7 +271,7 @@ test("the figure interface under hostile input: every call draws with defaults o
       for (const [figure] of figures) figure.free();
       return { refusals, unnamed, contract, nan: svgs.filter((svg) => /NaN|Infinity/.test(svg)).length };
     });
-    assert.equal(result.refusals, 100 * 3 * 5);
+    assert.equal(result.refusals, 100 * 4 * 5);
     assert.deepEqual(result.unnamed, []);
     assert.deepEqual(result.contract, []);
     assert.equal(result.nan, 0);

@@ -12,7 +12,7 @@ setup();
 const HOSTILE = ["NaN", "Infinity", "-Infinity", "1e308", "-1e308", "0", "-0", "1e-320", "abc", "", "0x10", "1,2",
   ";;;", "1,0,0,0;", "%00", "<img src=x onerror=window.__pwned=1>", "1".repeat(400), "9".repeat(20), "-1", "2.5",
   "1e9", "0,0,0,0", "1,0,0,0;0,0,0,0", "1,0,0,0;1,0,0,0;1,0,0,0", "0,1,1,2", "5,4,3"];
-const PAGES = { kli: "index.html", keyframes: "keyframes.html", swarm: "swarm.html" };
+const PAGES = { kli: "index.html", keyframes: "keyframes.html", swarm: "swarm.html", average: "average.html" };
 
 function random(seed) {
   let x = seed >>> 0 || 1;

@@ -45,7 +45,7 @@ function compare(page, a, b) {
   }, [a.toString("base64"), b.toString("base64")]);
 }
 
-for (const html of ["index.html", "keyframes.html", "swarm.html"]) {
+for (const html of ["index.html", "keyframes.html", "swarm.html", "average.html"]) {
   test(`${html} at rest looks as it did (screenshot within tolerance)`, async () => {
     const { page, context, problems } = await open(html, { reducedMotion: "reduce" });
     try {

@@ -23,7 +23,7 @@ const drawn = (page) => page.evaluate(() => Array.from(document.querySelectorAll
   return { id: canvas.id, count };
 }));
 
-for (const name of ["index.html", "swarm.html", "keyframes.html"]) {
+for (const name of ["index.html", "swarm.html", "keyframes.html", "average.html"]) {
   test(`dist/single/${name} works from file:// with no server and no network`, async () => {
     const file = join(root, "dist/single", name);
     assert.ok(existsSync(file), `${file} is missing: run make single`);

@@ -265,7 +265,7 @@ fn text_boxes(svg: &str, ctx: &CanvasRenderingContext2d) -> Vec<([f64; 4], Strin
 #[wasm_bindgen_test]
 fn no_two_labels_of_a_figure_overlap() {
     use js_sys::{Float64Array, Object, Reflect};
-    use kli_demo::{Demo, KeyframesDemo, SwarmDemo};
+    use kli_demo::{AverageDemo, Demo, KeyframesDemo, SwarmDemo};
     use wasm_bindgen::JsValue;
 
     let frame = |width: f64, height: f64, t: f64| {
@@ -290,6 +290,10 @@ fn no_two_labels_of_a_figure_overlap() {
     let options = Object::new();
     Reflect::set(&options, &"count".into(), &500.0.into()).unwrap();
     let swarm = SwarmDemo::new(Some(JsValue::from(options).unchecked_into())).unwrap();
+    let average = AverageDemo::new(None).unwrap();
+    let shares: Vec<f64> = (0..11).map(|i| i as f64 / 20.0).collect();
+    let errors: Vec<f64> =
+        shares.iter().flat_map(|&share| AverageDemo::sweep_point(None, share).unwrap()).collect();
     // (view, wide screen size, phone size) of each class, as the pages lay them out.
     let sphere = [(560.0, 420.0), (358.0, 268.0)];
     let svgs: Vec<(String, String)> = [
@@ -328,6 +332,23 @@ fn no_two_labels_of_a_figure_overlap() {
             })
         }),
     )
+    .chain(
+        [
+            ("hopf", sphere),
+            ("objects", [(560.0, 360.0), (358.0, 360.0)]),
+            ("means", [(1100.0, 190.0), (358.0, 190.0)]),
+        ]
+        .iter()
+        .flat_map(|(view, sizes)| {
+            sizes.map(|(w, h)| {
+                (format!("average {view} {w}×{h}"), average.to_svg(view, &frame(w, h, 2.0)))
+            })
+        }),
+    )
+    .chain([(1100.0, 240.0), (358.0, 240.0)].map(|(w, h)| {
+        let svg = AverageDemo::sweep_svg(&frame(w, h, 0.0), &shares, &errors, 0.2);
+        (format!("average sweep {w}×{h}"), Ok(svg))
+    }))
     .map(|(name, svg)| (name, svg.unwrap()))
     .collect();
     let ctx = canvas(1, 1);
