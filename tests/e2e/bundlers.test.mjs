@@ -6,7 +6,7 @@
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
 import { execFileSync } from "node:child_process";
-import { mkdtempSync, mkdirSync, readdirSync, writeFileSync } from "node:fs";
+import { mkdtempSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { chromium } from "playwright-core";
@@ -44,6 +44,7 @@ before(async () => {
 
 after(async () => {
   await browser?.close();
+  if (project) rmSync(project, { recursive: true, force: true });
 });
 
 /** Serves `dir` (or uses a running server's `origin`), opens it in Chromium, and returns the
@@ -136,7 +137,7 @@ async function viteDev(name, viteModule, config) {
   writeFileSync(join(dir, "main.js"), app(`await Promise.all([init(), initSwarm(), initSpline()]);`));
   writeFileSync(join(dir, "index.html"), page);
   const { createServer } = await import(viteModule);
-  const server = await createServer({ root: dir, configFile: false, logLevel: "silent", server: { port: 0, host: "127.0.0.1" }, ...config });
+  const server = await createServer({ root: dir, configFile: false, logLevel: process.env.VITE_LOG ?? "silent", server: { port: 0, host: "127.0.0.1" }, ...config });
   await server.listen();
   const address = server.httpServer.address();
   try {
@@ -150,8 +151,13 @@ const vite = (module) => join(root, "node_modules", module, "dist/node/index.js"
 
 /** Vite 7, installed into the test's project from the registry: not a dev dependency, because
  *  the registry mirror here lacks most of rollup's platform packages and `npm ci` then refuses
- *  a lock file that names them. */
+ *  a lock file that names them. Its rollup is rollup's WebAssembly build at a pinned version:
+ *  the native build's platform package is an optional dependency, and when the mirror has a
+ *  new rollup before its platform packages npm installs rollup without it and Vite fails. */
 function installVite7() {
+  const manifest = JSON.parse(readFileSync(join(project, "package.json"), "utf8"));
+  manifest.overrides = { rollup: "npm:@rollup/wasm-node@4.68.4" };
+  writeFileSync(join(project, "package.json"), JSON.stringify(manifest));
   execFileSync("npm", ["install", "--no-audit", "--no-fund", "--no-save", "vite@7.3.8"], { cwd: project, stdio: "ignore" });
   return join(project, "node_modules/vite/dist/node/index.js");
 }
