@@ -91,8 +91,15 @@ pkg/.built: $(PKG_SOURCES)
 # its own with its own stamp; then scripts/pages.mjs writes the pages' bundles, modulepreload
 # links and the service worker's file list and cache name (a content hash).
 PAGES := $(shell node scripts/pages.mjs names)
-www: setup-rust setup-node pkg www/pkg/.built www/vendor/codecs.js www/examples/vendor/.built
+www: setup-rust setup-node pkg www/pkg/.built www/pkg/first/.built www/vendor/codecs.js www/examples/vendor/.built
 	node scripts/pages.mjs write
+
+# Each page's first picture, drawn by its module in Node at the size of each canvas in each
+# layout (www/first-pictures.json; `node scripts/first-pictures.mjs --measure` after a change of
+# the pages' layout), shown by the HTML before any script runs.
+www/pkg/first/.built: www/pkg/.built www/first-pictures.json scripts/first-pictures.mjs www/states.js www/presets.js www/pages.js $(wildcard www/*.html)
+	node scripts/first-pictures.mjs
+	@touch $@
 
 # The pages' modules, one a page (the pages are listed in www/pages.js): a build of
 # crates/kli-demo with the page's feature `<page>-page`, bound to www/pkg/<page>_demo.js. One

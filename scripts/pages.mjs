@@ -41,6 +41,8 @@ async function offlineFiles() {
     files.add(bundle(page));
     files.add(`pkg/${page.name}_demo.js`);
     files.add(`pkg/${page.name}_demo_bg.wasm`);
+    // Its first pictures (scripts/first-pictures.mjs), as its HTML names them.
+    for (const [file] of readFileSync(join(www, page.html), "utf8").matchAll(/pkg\/first\/[\w-]+\.svg/g)) files.add(file);
   }
   return [...files].sort();
 }

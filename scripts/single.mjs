@@ -58,6 +58,12 @@ async function single({ html: page, script, ...rest }) {
   replace(`<script type="module" src="${bundleOf({ html: page, script, ...rest })}"></script>`, () => `<script type="module">\n${code}</script>`);
   // The examples need the site's import map and vendored files: not part of the one-file pages.
   replace(/ · <a href="examples\/three\.html">With three\.js<\/a>/, "");
+  // The first pictures (scripts/first-pictures.mjs) inside, as data: addresses.
+  const pictures = [...html.matchAll(/"(pkg\/first\/[\w-]+\.svg)"/g)].map(([, file]) => file);
+  for (const file of new Set(pictures)) {
+    const svg = await readFile(join(www, file));
+    replace(new RegExp(`"${file}"`, "g"), `"data:image/svg+xml;base64,${svg.toString("base64")}"`);
+  }
   await writeFile(join(out, page), html);
   return html.length;
 }

@@ -11,12 +11,6 @@ import { AVERAGE } from "./states.js";
 
 /** @typedef {{ count: number, noise: number, outliers: number, seed: number, moved: number[][] }} AverageState */
 
-/** @type {Record<string, AverageState>} */
-const PRESETS = {
-  clean: { count: 40, noise: 5, outliers: 0, seed: 1, moved: [] },
-  some: { count: 40, noise: 5, outliers: 0.2, seed: 1, moved: [] },
-  many: { count: 100, noise: 5, outliers: 0.4, seed: 3, moved: [] },
-};
 /** The shares the sweep visits. */
 const SHARES = Array.from({ length: 11 }, (_, i) => i / 20);
 /** The sweep's points so far (4 errors a share, radians), and the share on show (marked on it). */
@@ -30,7 +24,6 @@ const degrees = (/** @type {number} */ radians) => (radians * 180) / Math.PI;
 const page = new Page({
   name: "average",
   module: average,
-  canvases: { hopf: "#average-hopf", objects: "#average-objects", means: "#average-means", sweep: "#average-sweep" },
   own: {
     sweep: {
       draw: (ctx, frame) => AverageDemo.drawSweep(ctx, frame, ...sweepPoints()),
@@ -39,8 +32,8 @@ const page = new Page({
   },
   form: "#average-inputs",
   schema: AVERAGE.schema,
-  presets: PRESETS,
-  defaults: PRESETS.some,
+  presets: AVERAGE.presets,
+  defaults: AVERAGE.defaults,
   create: (state) => AVERAGE.create(average, state),
   keyOf: AVERAGE.keyOf,
   readout: (run, t) => {

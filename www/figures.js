@@ -144,6 +144,7 @@ export class Figures {
       if (kind === "layered") this.layered(name, ctx, frame);
       else this.paint(name, ctx, frame);
       this.stale.delete(name);
+      uncover(this.canvases[name]);
     }
     return drawn;
   }
@@ -161,7 +162,9 @@ export class Figures {
     setTimeout(() => {
       for (const view of this.later) {
         const frame = this.frame(view, t);
-        if (frame) this.paint(view, context(this.canvases[view]), frame);
+        if (!frame) continue;
+        this.paint(view, context(this.canvases[view]), frame);
+        uncover(this.canvases[view]);
       }
       this.later.clear();
     });
@@ -220,6 +223,13 @@ export class Figures {
       png: () => png(frame, (ctx, ratio) => this.paint(name, ctx, { ...frame, pixelRatio: ratio })),
     });
   }
+}
+
+/** Takes away the first picture under a canvas (drawn by `make www`: scripts/first-pictures.mjs)
+ *  once the canvas shows its view. */
+export function uncover(/** @type {HTMLCanvasElement} */ canvas) {
+  const picture = canvas.previousElementSibling;
+  if (picture?.classList.contains("first-picture")) picture.remove();
 }
 
 /** The 2D context of a canvas (a page whose canvases cannot draw has nothing to show). */

@@ -15,18 +15,6 @@ import { KEYFRAMES } from "./states.js";
 
 /** @typedef {{ keys: number[][], times: number[], smoothness: number }} KeyframesState */
 
-/** @type {Record<string, KeyframesState>} */
-const PRESETS = {
-  tumble: {
-    keys: [[1, 0, 0, 0], [0.8, 0.6, 0, 0], [0.5, 0.5, 0.5, 0.5], [0, 0.6, 0.8, 0], [-0.3, 0.1, 0.7, 0.64], [0.2, -0.6, 0.3, 0.72]],
-    times: [], smoothness: 1,
-  },
-  uneven: {
-    keys: [[1, 0, 0, 0], [0.6, 0, 0.8, 0], [0, 0, 0.6, 0.8], [0.36, 0.48, 0.48, 0.64], [0.8, 0, 0, 0.6]],
-    times: [0, 0.5, 2, 2.4, 4], smoothness: 1,
-  },
-  hard: { keys: [[1, 0, 0, 0], [1, 0, 0, 0], [0, 1, 0, 0], [-0.6, 0, -0.8, 0], [0.6, 0, 0.8, 0], [1, 0, 0, 0]], times: [], smoothness: 1 },
-};
 /** The views' names in file names. */
 const FILE_NAMES = /** @type {Record<string, string>} */ ({ objects: "objects", hopf: "hopf", plots: "angular-velocity-plots" });
 const KEY_FIELDS = ["key-ax", "key-ay", "key-az", "key-angle"];
@@ -35,11 +23,10 @@ const KEY_FIELDS = ["key-ax", "key-ay", "key-az", "key-angle"];
 const page = new Page({
   name: "keyframes",
   module: keyframes,
-  canvases: { objects: "#keyframes-objects", hopf: "#keyframes-hopf", plots: "#keyframes-plots" },
   form: "#keyframes-inputs",
   schema: KEYFRAMES.schema,
-  presets: PRESETS,
-  defaults: PRESETS.tumble,
+  presets: KEYFRAMES.presets,
+  defaults: KEYFRAMES.defaults,
   create: (state) => KEYFRAMES.create(keyframes, state),
   keyOf: KEYFRAMES.keyOf,
   // The key editor's axis and angle: their own message.

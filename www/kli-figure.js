@@ -12,7 +12,6 @@
 import { Camera } from "./camera.js";
 import { Figures } from "./figures.js";
 import { parseNumber } from "./numbers.js";
-import { DEFAULTS as KLI_DEFAULTS } from "./presets.js";
 import { Player } from "./player.js";
 import { outOfRange, parseText } from "./schema.js";
 import { STATES } from "./states.js";
@@ -29,10 +28,10 @@ const ATTRIBUTES = ["view", "t", "autoplay", "speed", "label", "text-scale", "pr
   ...new Set(Object.values(STATES).flatMap((state) => state.schema.map((entry) => attributeName(entry.key))))];
 /** What a figure shows when its attributes do not say. */
 const DEFAULTS = {
-  kli: KLI_DEFAULTS,
+  kli: STATES.kli.defaults,
   keyframes: { keys: [[1, 0, 0, 0], [0.8, 0.6, 0, 0], [0.6, 0, 0.8, 0], [0, 0, 0.6, 0.8]], times: [], smoothness: 1 },
   swarm: { count: 200, coupling: 1, seed: 1 },
-  average: { count: 40, noise: 5, outliers: 0.2, seed: 1, moved: [] },
+  average: STATES.average.defaults,
 };
 /** The largest `t` and `speed` a figure takes. */
 const MAX_T = 1e6, MAX_SPEED = 1000;

@@ -23,7 +23,6 @@ let typingAxisAngle = false;
 const page = new Page({
   name: "kli",
   module: kli,
-  canvases: { object: "#object-canvas", hopf: "#hopf-canvas", filmstrip: "#filmstrip-canvas", plots: "#plots-canvas" },
   form: "#inputs",
   schema: KLI.schema,
   presets: PRESETS,

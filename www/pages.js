@@ -12,6 +12,8 @@
  * @property {string} title the link text in the pages' navigation
  * @property {Readonly<Record<string, string>>} views each <kli-figure> view its module draws: the module's name for it
  *   (how each view follows the time is the module's to say: its runs' `views`)
+ * @property {Readonly<Record<string, string>>} canvases each view's canvas on the page (a selector), by the view's
+ *   name: the page runtime draws into them, and `make www` draws each first picture (scripts/first-pictures.mjs)
  */
 
 /** @type {readonly Page[]} */
@@ -19,18 +21,22 @@ export const PAGES = [
   {
     name: "kli", html: "index.html", script: "main.js", title: "KLI: two rotations",
     views: { object: "object", hopf: "hopf", plots: "plots", filmstrip: "filmstrip" },
+    canvases: { object: "#object-canvas", hopf: "#hopf-canvas", filmstrip: "#filmstrip-canvas", plots: "#plots-canvas" },
   },
   {
     name: "keyframes", html: "keyframes.html", script: "keyframes.js", title: "Many rotations",
     views: { keyframes: "hopf" },
+    canvases: { objects: "#keyframes-objects", hopf: "#keyframes-hopf", plots: "#keyframes-plots" },
   },
   {
     name: "swarm", html: "swarm.html", script: "swarm.js", title: "The swarm",
     views: { swarm: "hopf" },
+    canvases: { hopf: "#swarm-hopf", objects: "#swarm-objects", plots: "#swarm-plots", sweep: "#swarm-sweep" },
   },
   {
     name: "average", html: "average.html", script: "average.js", title: "Averaging",
     views: { average: "hopf" },
+    canvases: { hopf: "#average-hopf", objects: "#average-objects", means: "#average-means", sweep: "#average-sweep" },
   },
 ];
 

@@ -8,16 +8,8 @@ import { timeTag } from "./exports.js";
 import { Page } from "./runtime.js";
 import { SWARM } from "./states.js";
 
-/** @typedef {import("./pkg/swarm_demo.js").SwarmOptions} SwarmOptions */
-/** @typedef {Required<Omit<SwarmOptions, "startSpread" | "order">> & { startSpread?: number }} SwarmState */
+/** @typedef {import("./states.js").SwarmState} SwarmState */
 
-/** @type {Record<string, SwarmState>} */
-const PRESETS = {
-  synchronise: { coupling: 1, count: 500, graph: "all", leaders: 1, frequencySpread: 0, seed: 1 },
-  balance: { coupling: -1, count: 500, graph: "all", leaders: 1, frequencySpread: 0, seed: 1 },
-  frequencies: { coupling: 2, count: 500, graph: "all", leaders: 1, frequencySpread: 1, seed: 1 },
-  kli: { coupling: 2, count: 2, graph: "leader", leaders: 1, frequencySpread: 0, startSpread: 1.5, seed: 3 },
-};
 /** How far the Step button moves the swarm on (model time). */
 const STEP = 0.2;
 const SWEEP = Array.from({ length: 19 }, (_, i) => -1 + i / 2);
@@ -32,7 +24,6 @@ const FILE_NAMES = /** @type {Record<string, string>} */ ({ hopf: "hopf", object
 const page = new Page({
   name: "swarm",
   module: swarm,
-  canvases: { hopf: "#swarm-hopf", objects: "#swarm-objects", plots: "#swarm-plots", sweep: "#swarm-sweep" },
   own: {
     sweep: {
       draw: (ctx, frame) => SwarmDemo.drawSweep(ctx, frame, ...sweepPoints()),
@@ -41,8 +32,8 @@ const page = new Page({
   },
   form: "#swarm-inputs",
   schema: SWARM.schema,
-  presets: PRESETS,
-  defaults: PRESETS.synchronise,
+  presets: SWARM.presets,
+  defaults: SWARM.defaults,
   create: (state) => SWARM.create(swarm, state),
   keyOf: SWARM.keyOf,
   readout: (run, t) => {

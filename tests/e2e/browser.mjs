@@ -31,7 +31,16 @@ export function setup() {
 
 /** A fresh page that records problems: console errors, page errors, failed or foreign requests.
  *  `init` runs in the page before any of its scripts; `prepare(context)` before it loads. */
-export async function open(query = "", { init, prepare, ...options } = {}) {
+export async function open(query = "", options = {}) {
+  const { page, context, problems } = await blank(options);
+  await page.goto(`${origin}/${query}`);
+  // Pages with a load status are ready when it hides; others (the examples) once loaded.
+  await page.waitForFunction(() => document.querySelector("#load-status")?.hidden ?? document.readyState === "complete");
+  return { page, context, problems };
+}
+
+/** As `open`, but the page is left blank: the caller loads what it wants, from `origin()`. */
+export async function blank({ init, prepare, ...options } = {}) {
   const context = await browser.newContext({ viewport: { width: 1280, height: 900 }, deviceScaleFactor: 1, ...options });
   if (init) await context.addInitScript(init);
   if (prepare) await prepare(context);
@@ -44,10 +53,40 @@ export async function open(query = "", { init, prepare, ...options } = {}) {
     if (!request.url().startsWith(origin) && !request.url().startsWith("data:")) problems.push(`foreign request: ${request.url()}`);
   });
   page.on("response", (response) => response.status() >= 400 && problems.push(`${response.status()}: ${response.url()}`));
-  await page.goto(`${origin}/${query}`);
-  // Pages with a load status are ready when it hides; others (the examples) once loaded.
-  await page.waitForFunction(() => document.querySelector("#load-status")?.hidden ?? document.readyState === "complete");
   return { page, context, problems };
+}
+
+/** The address of the server for www/. */
+export const address = () => origin;
+
+/**
+ * The mean difference of two PNGs (0 to 255 a channel) and the share of pixels that differ by
+ * more than 48 in a channel, decoded by the browser; null when their sizes differ.
+ */
+export function compare(page, a, b) {
+  return page.evaluate(async ([a, b]) => {
+    const decode = async (base64) => {
+      const bitmap = await createImageBitmap(await (await fetch(`data:image/png;base64,${base64}`)).blob());
+      const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
+      const ctx = canvas.getContext("2d");
+      ctx.drawImage(bitmap, 0, 0);
+      return ctx.getImageData(0, 0, bitmap.width, bitmap.height);
+    };
+    const [x, y] = await Promise.all([decode(a), decode(b)]);
+    if (x.width !== y.width || x.height !== y.height) return { size: [x.width, x.height, y.width, y.height] };
+    let sum = 0, far = 0;
+    for (let i = 0; i < x.data.length; i += 4) {
+      let worst = 0;
+      for (let c = 0; c < 3; c++) {
+        const d = Math.abs(x.data[i + c] - y.data[i + c]);
+        sum += d;
+        worst = Math.max(worst, d);
+      }
+      if (worst > 48) far++;
+    }
+    const pixels = x.data.length / 4;
+    return { mean: sum / (3 * pixels), far: far / pixels };
+  }, [a.toString("base64"), b.toString("base64")]);
 }
 
 /** Pixel statistics of a canvas: how many are not white, and how many are near a colour. */

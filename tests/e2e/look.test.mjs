@@ -7,43 +7,13 @@ import { test } from "node:test";
 import assert from "node:assert/strict";
 import { readFile, writeFile, mkdir } from "node:fs/promises";
 import { join } from "node:path";
-import { artifacts, open, root, setup } from "./browser.mjs";
+import { artifacts, compare, open, root, setup } from "./browser.mjs";
 
 setup();
 
 const LOOK = join(root, "tests/e2e/look");
 /** What changes from load to load on a page at rest: the keyframes table's measured times. */
 const MOVING = { "keyframes.html": ["#figures td:nth-child(6)", "#figures td:nth-child(7)"] };
-
-/**
- * The mean difference of two PNGs (0 to 255 a channel) and the share of pixels that differ by
- * more than 48 in a channel, decoded by the browser; null when their sizes differ.
- */
-function compare(page, a, b) {
-  return page.evaluate(async ([a, b]) => {
-    const decode = async (base64) => {
-      const bitmap = await createImageBitmap(await (await fetch(`data:image/png;base64,${base64}`)).blob());
-      const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
-      const ctx = canvas.getContext("2d");
-      ctx.drawImage(bitmap, 0, 0);
-      return ctx.getImageData(0, 0, bitmap.width, bitmap.height);
-    };
-    const [x, y] = await Promise.all([decode(a), decode(b)]);
-    if (x.width !== y.width || x.height !== y.height) return { size: [x.width, x.height, y.width, y.height] };
-    let sum = 0, far = 0;
-    for (let i = 0; i < x.data.length; i += 4) {
-      let worst = 0;
-      for (let c = 0; c < 3; c++) {
-        const d = Math.abs(x.data[i + c] - y.data[i + c]);
-        sum += d;
-        worst = Math.max(worst, d);
-      }
-      if (worst > 48) far++;
-    }
-    const pixels = x.data.length / 4;
-    return { mean: sum / (3 * pixels), far: far / pixels };
-  }, [a.toString("base64"), b.toString("base64")]);
-}
 
 for (const html of ["index.html", "keyframes.html", "swarm.html", "average.html"]) {
   test(`${html} at rest looks as it did (screenshot within tolerance)`, async () => {

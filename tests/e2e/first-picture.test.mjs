@@ -1,0 +1,121 @@
+// Each page shows its figures before any script has drawn them: the first pictures `make www`
+// draws (scripts/first-pictures.mjs). With the page's .wasm held back, each module-drawn canvas
+// already shows its first picture, and it is the picture the live page shows at rest, within a
+// small pixel tolerance; the handover moves nothing (no layout shift); with the module gone for
+// good the pictures stay, and print. On a wide screen and on a phone.
+import { test } from "node:test";
+import assert from "node:assert/strict";
+import { readFileSync } from "node:fs";
+import { join } from "node:path";
+import { address, artifacts, blank, compare, root, setup } from "./browser.mjs";
+import { PAGES } from "../../www/pages.js";
+import { LAYOUTS } from "../../scripts/first-pictures.mjs";
+
+setup();
+
+/** How far a first picture may be from the live canvas: the SVG is laid out without the font
+ *  to measure its labels (crates/kli-demo/src/pen.rs, em_width), so a label column can sit a
+ *  pixel or two off; measured at most 6.0 of 255 (the averaging page's bars on a phone), 1–3
+ *  elsewhere. A blank box or another state is far beyond. */
+const TOLERANCE = { mean: 6.5, far: 0.05 };
+
+/** The canvases that have a first picture, by the page's HTML. */
+const pictured = (page) => Object.values(page.canvases).filter((selector) =>
+  readFileSync(join(root, "www", page.html), "utf8").includes(`pkg/first/${selector.slice(1)}-`));
+
+/** Opens `html` with its .wasm held until `release()` (reduced motion: the live page rests at
+ *  its first time, as the picture shows it). */
+async function held(html, viewport) {
+  let release;
+  const gate = new Promise((resolve) => (release = resolve));
+  const phone = viewport.width < 500;
+  const { page, context, problems } = await blank({
+    viewport, reducedMotion: "reduce", ...(phone ? { hasTouch: true, isMobile: true } : {}),
+    prepare: (context) => context.route(/\.wasm$/, async (route) => {
+      await gate;
+      await route.continue();
+    }),
+    init: () => {
+      window.__shifts = [];
+      new PerformanceObserver((list) => {
+        for (const entry of list.getEntries()) {
+          const sources = entry.sources.map((source) => `${source.node?.id || source.node?.nodeName} ${JSON.stringify(source.previousRect)} → ${JSON.stringify(source.currentRect)}`);
+          window.__shifts.push(`${entry.value.toFixed(4)} at ${entry.startTime.toFixed(0)} ms: ${sources.join("; ")}`);
+        }
+      }).observe({ type: "layout-shift", buffered: true });
+    },
+  });
+  await page.goto(`${address()}/${html}`);
+  return { page, context, problems, release };
+}
+
+/** A screenshot of each canvas's box. */
+async function shots(page, selectors) {
+  const result = [];
+  for (const selector of selectors) {
+    const box = await page.locator(selector).boundingBox();
+    result.push(await page.screenshot({ clip: box, fullPage: true, animations: "disabled" }));
+  }
+  return result;
+}
+
+for (const layout of LAYOUTS) {
+  for (const page of PAGES) {
+    test(`${page.html} (${layout.name}): the first picture before the module, equal to the live one at rest, no shift`, async () => {
+      const selectors = pictured(page);
+      assert.ok(selectors.length >= 2, `${page.html} has first pictures`);
+      const { page: tab, context, problems, release } = await held(page.html, layout.viewport);
+      try {
+        // Every picture loaded and shown while the module is still held back.
+        await tab.waitForFunction(() => [...document.querySelectorAll(".first-picture img")].every((image) => image.complete && image.naturalWidth > 0));
+        await tab.waitForFunction(() => performance.getEntriesByName("kli:first-frame").length > 0);
+        assert.equal(await tab.evaluate(() => performance.getEntriesByName("kli:wasm-ready").length), 0, "the module was held back");
+        const before = await shots(tab, selectors);
+        const readout = await tab.textContent("#readout");
+        release();
+        await tab.waitForFunction(() => performance.getEntriesByName("kli:interactive").length > 0);
+        // The still views are painted in a task after the first frame.
+        await tab.waitForTimeout(600);
+        assert.equal(await tab.locator(".first-picture").count(), 0, "the live canvases took over");
+        const after = await shots(tab, selectors);
+        assert.equal(await tab.textContent("#readout"), readout, "the HTML's readout is the live one at rest");
+        for (const [i, selector] of selectors.entries()) {
+          const difference = await compare(tab, before[i], after[i]);
+          const name = `first-${layout.name}-${selector.slice(1)}`;
+          if (process.env.KLI_FIRST_REPORT) console.log(`${name}: mean ${difference.mean.toFixed(2)}, far ${(100 * difference.far).toFixed(2)}%`);
+          if (!(difference.mean < TOLERANCE.mean && difference.far < TOLERANCE.far)) {
+            const { writeFileSync } = await import("node:fs");
+            writeFileSync(join(artifacts, `${name}-picture.png`), before[i]);
+            writeFileSync(join(artifacts, `${name}-live.png`), after[i]);
+          }
+          assert.equal(difference.size, undefined, `${selector}: the size changed`);
+          assert.ok(difference.mean < TOLERANCE.mean && difference.far < TOLERANCE.far,
+            `${selector}: mean difference ${difference.mean.toFixed(2)}, ${(100 * difference.far).toFixed(2)}% of pixels far off (test-artifacts/${name}-*.png)`);
+        }
+        const [first, interactive] = await tab.evaluate(() => ["kli:first-frame", "kli:interactive"].map((name) => performance.getEntriesByName(name)[0].startTime));
+        assert.ok(first < interactive, `the first picture (${first} ms) before the page is interactive (${interactive} ms)`);
+        assert.deepEqual(await tab.evaluate(() => window.__shifts), [], "no layout shift");
+        assert.deepEqual(problems, []);
+      } finally {
+        await context.close();
+      }
+    });
+  }
+}
+
+test("with no module, the first pictures stay, and print; a URL asking for another state takes them away", async () => {
+  for (const [query, kept] of [["average.html", true], ["average.html?n=12", false]]) {
+    const { page, context } = await blank({ prepare: (context) => context.route(/\.wasm$/, (route) => route.abort()) });
+    try {
+      await page.goto(`${address()}/${query}`);
+      await page.waitForFunction(() => document.querySelector("#load-status")?.classList.contains("error"));
+      assert.equal(await page.locator(".first-picture").count(), kept ? 3 : 0, query);
+      if (!kept) continue;
+      await page.emulateMedia({ media: "print" });
+      const box = await page.locator(".first-picture img").first().boundingBox();
+      assert.ok(box && box.height > 100, `printed: ${JSON.stringify(box)}`);
+    } finally {
+      await context.close();
+    }
+  }
+});
