@@ -28,7 +28,7 @@ export function pictureMarkup(id, sizes) {
   const [wide, phone] = LAYOUTS;
   const [width, height] = sizes[wide.name][id].map(Math.round);
   return `<picture class="first-picture"><source media="${phone.media}" srcset="${src(phone.name)}">` +
-    `<img src="${src(wide.name)}" alt="" width="${width}" height="${height}" elementtiming="kli-first-picture"></picture>`;
+    `<img src="${src(wide.name)}" alt="" width="${width}" height="${height}" decoding="sync" fetchpriority="high" elementtiming="kli-first-picture"></picture>`;
 }
 
 /** The canvases whose first picture the module draws: each page's canvases of its runs' views. */

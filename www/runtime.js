@@ -93,28 +93,43 @@ import { videoPanel } from "./video/panel.js";
  */
 
 /**
- * Marks "kli:first-frame" at the moment the last of the first pictures on screen was painted
- * (Element Timing reports each: their `elementtiming` attribute), so the mark says when the
- * page's complete first picture was seen, before any module. Where none is on screen (or the
- * browser has no Element Timing), the first draw marks it.
+ * Marks "kli:first-frame" when the page's complete first picture was seen: the moment the last
+ * of the first pictures on screen was painted (Element Timing reports each: their
+ * `elementtiming` attribute), or the first draw of the canvases if that was sooner. Returns
+ * what the first draw calls with its time. Reports come after the paint they time, so the
+ * mark waits for them (a second at most); where no picture is on screen (or the browser has no
+ * Element Timing), the first draw marks it at once.
  */
 function markFirstPictures() {
+  const mark = (/** @type {number} */ startTime) => {
+    if (performance.getEntriesByName("kli:first-frame").length === 0) performance.mark("kli:first-frame", { startTime });
+  };
   const onScreen = [...document.querySelectorAll(".first-picture img")].filter((image) => {
     const box = image.getBoundingClientRect();
     return box.width > 0 && box.bottom > 0 && box.top < innerHeight;
   }).length;
-  if (onScreen === 0 || !PerformanceObserver.supportedEntryTypes.includes("element")) return;
+  if (onScreen === 0 || !PerformanceObserver.supportedEntryTypes.includes("element")) return mark;
+  let drawn = Infinity;
   /** @type {Map<string, number>} each picture's paint, by its address */
   const painted = new Map();
-  const observer = new PerformanceObserver((list) => {
-    for (const entry of /** @type {any[]} */ (list.getEntries())) {
+  const take = (/** @type {PerformanceEntryList} */ entries) => {
+    for (const entry of /** @type {any[]} */ (entries)) {
       if (entry.identifier === "kli-first-picture") painted.set(entry.url, entry.renderTime || entry.loadTime);
     }
     if (painted.size < onScreen) return;
     observer.disconnect();
-    if (performance.getEntriesByName("kli:first-frame").length === 0) performance.mark("kli:first-frame", { startTime: Math.max(...painted.values()) });
-  });
+    mark(Math.min(Math.max(...painted.values()), drawn));
+  };
+  const observer = new PerformanceObserver((list) => take(list.getEntries()));
   observer.observe({ type: "element", buffered: true });
+  return (/** @type {number} */ time) => {
+    drawn = Math.min(drawn, time);
+    setTimeout(() => {
+      take(observer.takeRecords());
+      observer.disconnect();
+      mark(drawn);
+    }, 1000);
+  };
 }
 
 /**
@@ -174,7 +189,8 @@ export class Page {
     this.video = undefined;
     /** @type {Host<State, R>} */
     this.host = this.makeHost();
-    markFirstPictures();
+    /** Called at the first draw with its time: marks the first frame (markFirstPictures). */
+    this.firstDrawn = /** @type {((time: number) => void) | null} */ (markFirstPictures());
   }
 
   /** What the descriptor's hooks get. */
@@ -340,9 +356,10 @@ export class Page {
         this.ui.readout.textContent = this.lastReadout = readout;
       }
     }
-    // For the DevTools timeline and `make bench`: when the first complete frame was drawn (unless
-    // the first pictures were on screen before).
-    if (performance.getEntriesByName("kli:first-frame").length === 0) performance.mark("kli:first-frame");
+    // For the DevTools timeline and `make bench`: when the first complete frame was seen, the
+    // first pictures' or this one.
+    this.firstDrawn?.(performance.now());
+    this.firstDrawn = null;
   }
 
   /** Turns the sphere views. */
