@@ -356,7 +356,7 @@ impl<'a> Pen<'a> {
     }
 
     /// The width of `text` in CSS pixels at `size` (in SVG, where the viewer's font decides, an
-    /// estimate by [`em_width`]).
+    /// estimate by `em_width`).
     pub fn text_width(&self, text: &str, size: f64) -> f64 {
         let size = size * self.text_scale.get();
         match &self.surface {
