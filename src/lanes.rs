@@ -1,8 +1,80 @@
 //! Two `f64` lanes, so the batch kernels handle two pairs per step: wasm SIMD (`f64x2`) on
 //! wasm32 built with `simd128`, SSE2 (`__m128d`, part of every x86-64) natively there, and a
-//! plain `[f64; 2]` elsewhere. One kernel source serves all three.
+//! plain `[f64; 2]` elsewhere. One kernel source serves all three, and, through [`Simd`],
+//! [`crate::quad::Quad`]'s four lanes too.
 
 use std::ops::{Add, BitAnd, Div, Mul, Neg, Sub};
+
+/// What a branch-free kernel computes with: [`Lanes`], or [`crate::quad::Quad`] (two `Lanes`
+/// in flight). Each operation acts lane by lane.
+pub trait Simd:
+    Copy
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+{
+    /// A comparison's result, lane by lane.
+    type Mask: Copy + BitAnd<Output = Self::Mask>;
+    fn splat(x: f64) -> Self;
+    fn abs(self) -> Self;
+    fn sqrt(self) -> Self;
+    /// As wasm's `pmax`: `o` where `self < o`, else `self`.
+    fn max(self, o: Self) -> Self;
+    /// For `|x| < 2^51`.
+    fn round_ties_even(self) -> Self;
+    fn le(self, o: Self) -> Self::Mask;
+    fn lt(self, o: Self) -> Self::Mask;
+    fn eq(self, o: Self) -> Self::Mask;
+    fn select(mask: Self::Mask, yes: Self, no: Self) -> Self;
+    /// `f64::from_bits((bits - o) << 52)` lane-wise.
+    fn bits_sub_shl52(self, o: u64) -> Self;
+
+    /// `e^x` lane-wise for `x ≤ 0`, to about 1 ulp (`x < -708` is taken as `-708`, whose `e^x`
+    /// is already below every use here). Cody–Waite reduction `x = k ln 2 + r`, `|r| ≤ ln2/2`,
+    /// a degree-13 Taylor polynomial (remainder < 4e-18), and `2^k` built from bits: no branch,
+    /// no call.
+    #[inline(always)]
+    fn exp_nonpositive(self) -> Self {
+        const LN2_HI: f64 = 6.931_471_803_691_238e-1; // fdlibm: ln 2 with the low 32 bits clear
+        const LN2_LO: f64 = 1.908_214_929_270_587_7e-10;
+        const INVERSE_FACTORIALS: [f64; 14] = [
+            1.0,
+            1.0,
+            0.5,
+            1.0 / 6.0,
+            1.0 / 24.0,
+            1.0 / 120.0,
+            1.0 / 720.0,
+            1.0 / 5040.0,
+            1.0 / 40320.0,
+            1.0 / 362_880.0,
+            1.0 / 3_628_800.0,
+            1.0 / 39_916_800.0,
+            1.0 / 479_001_600.0,
+            1.0 / 6_227_020_800.0,
+        ];
+        let x = self.max(Self::splat(-708.0));
+        let k = (x * Self::splat(std::f64::consts::LOG2_E)).round_ties_even();
+        let r = (x - k * Self::splat(LN2_HI)) - k * Self::splat(LN2_LO);
+        // Estrin's scheme: four levels of independent multiply-adds instead of a 13-deep Horner
+        // chain, whose latency would bound the whole kernel (measured 25% faster in Node).
+        let c = INVERSE_FACTORIALS.map(Self::splat);
+        let (r2, pairs) = (r * r, [0, 1, 2, 3, 4, 5, 6].map(|k| c[2 * k] + c[2 * k + 1] * r));
+        let r4 = r2 * r2;
+        let quads = [
+            pairs[0] + pairs[1] * r2,
+            pairs[2] + pairs[3] * r2,
+            pairs[4] + pairs[5] * r2,
+            pairs[6],
+        ];
+        let p = (quads[0] + quads[1] * r4) + (quads[2] + quads[3] * r4) * (r4 * r4);
+        // 2^k: k + 1023 + 2^52 holds k + 1023 in its low mantissa bits; shift it into the exponent.
+        let biased = k + Self::splat(1023.0 + 4_503_599_627_370_496.0);
+        p * biased.bits_sub_shl52(0x4330_0000_0000_0000)
+    }
+}
 
 #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
 mod imp {
@@ -327,49 +399,49 @@ impl Lanes {
     pub fn splat(x: f64) -> Self {
         Self::new(x, x)
     }
+}
 
-    /// `e^x` lane-wise for `x ≤ 0`, to about 1 ulp (`x < -708` is taken as `-708`, whose `e^x`
-    /// is already below every use here). Cody–Waite reduction `x = k ln 2 + r`, `|r| ≤ ln2/2`, a
-    /// degree-13 Taylor polynomial (remainder < 4e-18), and `2^k` built from bits: no branch,
-    /// no call.
+impl Simd for Lanes {
+    type Mask = Mask;
     #[inline(always)]
-    pub fn exp_nonpositive(self) -> Self {
-        const LN2_HI: f64 = 6.931_471_803_691_238e-1; // fdlibm: ln 2 with the low 32 bits clear
-        const LN2_LO: f64 = 1.908_214_929_270_587_7e-10;
-        const INVERSE_FACTORIALS: [f64; 14] = [
-            1.0,
-            1.0,
-            0.5,
-            1.0 / 6.0,
-            1.0 / 24.0,
-            1.0 / 120.0,
-            1.0 / 720.0,
-            1.0 / 5040.0,
-            1.0 / 40320.0,
-            1.0 / 362_880.0,
-            1.0 / 3_628_800.0,
-            1.0 / 39_916_800.0,
-            1.0 / 479_001_600.0,
-            1.0 / 6_227_020_800.0,
-        ];
-        let x = self.max(Self::splat(-708.0));
-        let k = (x * Self::splat(std::f64::consts::LOG2_E)).round_ties_even();
-        let r = (x - k * Self::splat(LN2_HI)) - k * Self::splat(LN2_LO);
-        // Estrin's scheme: four levels of independent multiply-adds instead of a 13-deep Horner
-        // chain, whose latency would bound the whole kernel (measured 25% faster in Node).
-        let c = INVERSE_FACTORIALS.map(Self::splat);
-        let (r2, pairs) = (r * r, [0, 1, 2, 3, 4, 5, 6].map(|k| c[2 * k] + c[2 * k + 1] * r));
-        let r4 = r2 * r2;
-        let quads = [
-            pairs[0] + pairs[1] * r2,
-            pairs[2] + pairs[3] * r2,
-            pairs[4] + pairs[5] * r2,
-            pairs[6],
-        ];
-        let p = (quads[0] + quads[1] * r4) + (quads[2] + quads[3] * r4) * (r4 * r4);
-        // 2^k: k + 1023 + 2^52 holds k + 1023 in its low mantissa bits; shift it into the exponent.
-        let biased = k + Self::splat(1023.0 + 4_503_599_627_370_496.0);
-        p * biased.bits_sub_shl52(0x4330_0000_0000_0000)
+    fn splat(x: f64) -> Self {
+        Self::new(x, x)
+    }
+    #[inline(always)]
+    fn abs(self) -> Self {
+        Lanes::abs(self)
+    }
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        Lanes::sqrt(self)
+    }
+    #[inline(always)]
+    fn max(self, o: Self) -> Self {
+        Lanes::max(self, o)
+    }
+    #[inline(always)]
+    fn round_ties_even(self) -> Self {
+        Lanes::round_ties_even(self)
+    }
+    #[inline(always)]
+    fn le(self, o: Self) -> Mask {
+        Lanes::le(self, o)
+    }
+    #[inline(always)]
+    fn lt(self, o: Self) -> Mask {
+        Lanes::lt(self, o)
+    }
+    #[inline(always)]
+    fn eq(self, o: Self) -> Mask {
+        Lanes::eq(self, o)
+    }
+    #[inline(always)]
+    fn select(mask: Mask, yes: Self, no: Self) -> Self {
+        Lanes::select(mask, yes, no)
+    }
+    #[inline(always)]
+    fn bits_sub_shl52(self, o: u64) -> Self {
+        Lanes::bits_sub_shl52(self, o)
     }
 }
 

@@ -48,6 +48,7 @@ pub mod hopf;
 pub mod integrator;
 mod lanes;
 pub mod model;
+mod quad;
 pub mod quaternion;
 pub mod slerp;
 pub mod spline;

@@ -8,7 +8,7 @@
 
 use std::f64::consts::{FRAC_1_PI, FRAC_2_PI, PI};
 
-use crate::lanes::Lanes;
+use crate::lanes::{Lanes, Simd};
 
 /// `π/2` in two parts, `PIO2_HI` with 33 significant bits (so `k·PIO2_HI` is exact for
 /// `|k| < 2^20`) and the rest (fdlibm's `pio2_1` and `pio2_1t`); `2π` is four times each.
@@ -47,7 +47,7 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
 /// `(sin x, cos x)` lane-wise for `|x| ≤ π/4`, branch-free Taylor polynomials in `y = x²` (to
 /// `x¹⁷` and `x¹⁶`: remainders below 1e-17), by Estrin's scheme.
 #[inline(always)]
-pub(crate) fn sin_cos_small(x: Lanes) -> (Lanes, Lanes) {
+pub(crate) fn sin_cos_small<S: Simd>(x: S) -> (S, S) {
     let (sinc, cos) = sinc_cos_small_squared(x * x);
     (x * sinc, cos)
 }
@@ -55,7 +55,7 @@ pub(crate) fn sin_cos_small(x: Lanes) -> (Lanes, Lanes) {
 /// `(sin x / x, cos x)` lane-wise from `y = x²` for `|x| ≤ π/4`: the polynomials of
 /// [`sin_cos_small`], so `exp` of a small rotation needs no square root and no division.
 #[inline(always)]
-pub(crate) fn sinc_cos_small_squared(y: Lanes) -> (Lanes, Lanes) {
+pub(crate) fn sinc_cos_small_squared<S: Simd>(y: S) -> (S, S) {
     const SIN: [f64; 9] = [
         1.0,
         -1.0 / 6.0,
@@ -80,7 +80,7 @@ pub(crate) fn sinc_cos_small_squared(y: Lanes) -> (Lanes, Lanes) {
     ];
     let (y2, y4) = (y * y, y * y * (y * y));
     let estrin = |c: [f64; 9]| {
-        let c = c.map(Lanes::splat);
+        let c = c.map(S::splat);
         let pairs = [0, 1, 2, 3].map(|k| c[2 * k] + c[2 * k + 1] * y);
         (pairs[0] + pairs[1] * y2) + (pairs[2] + pairs[3] * y2) * y4 + c[8] * (y4 * y4)
     };

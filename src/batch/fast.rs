@@ -1,10 +1,16 @@
-//! The batch kernels for the common case, branch-free and two pairs a step on [`Lanes`]: unit
-//! inputs up to rounding, parameters in range, the target not near `-p`. Each reports whether
-//! every pair was in its domain; if one was not, the caller redoes the call pair by pair.
-//! Formulas: the half-angle frame of the parent module's docs.
+//! The batch kernels for the common case, branch-free: unit inputs up to rounding, parameters
+//! in range, the target not near `-p`. Each reports whether every pair was in its domain; if
+//! one was not, the caller redoes the call pair by pair. Formulas: the half-angle frame of the
+//! parent module's docs. The kernels are written once over [`Simd`] and run where each was
+//! measured fastest (`node bench/batch.mjs`, docs/performance.md): SLERP and NLERP four pairs a
+//! step on [`Quad`], two chains interleaved instruction by instruction (SLERP's chain of square
+//! roots, a division, `atan` and `sin`/`cos` is latency-bound: 1.27× faster than two pairs a
+//! step); KLI's closed form two pairs a step on [`Lanes`] (its `exp` polynomial keeps enough
+//! values live that two chains of it ran 0.85× as fast).
 
 use super::BatchKind;
-use crate::lanes::{Lanes, Mask};
+use crate::lanes::{Lanes, Mask, Simd};
+use crate::quad::{Quad, QuadMask};
 use crate::slerp::MAX_PARAMETER;
 use crate::trig::sin_cos_small;
 
@@ -29,22 +35,21 @@ pub(super) fn run(
 /// `e = n - 1` (remainder `35e⁴/128` < 3e-17): inputs that are unit quaternions up to rounding,
 /// including single-precision ones, need no square root or division.
 #[inline(always)]
-fn inverse_sqrt_near_one(n: Lanes) -> Lanes {
-    let e = n - Lanes::splat(1.0);
-    Lanes::splat(1.0)
-        + e * (Lanes::splat(-0.5) + e * (Lanes::splat(0.375) - Lanes::splat(0.3125) * e))
+fn inverse_sqrt_near_one<S: Simd>(n: S) -> S {
+    let e = n - S::splat(1.0);
+    S::splat(1.0) + e * (S::splat(-0.5) + e * (S::splat(0.375) - S::splat(0.3125) * e))
 }
 
 /// How far `|q|²` may be from 1 for [`inverse_sqrt_near_one`].
 const NEARLY_UNIT: f64 = 1e-4;
 
-/// One quaternion component per element, two pairs per lane.
-type Quat2 = [Lanes; 4];
+/// One quaternion component per element, a pair per lane.
+type Quats<S> = [S; 4];
 
 /// The dot product in glam's order (x, y, z, then w), so that `|q|² = 1` here exactly when
 /// [`crate::quaternion::unit`] sees it so and leaves `q` as it is.
 #[inline(always)]
-fn dot4(a: &Quat2, b: &Quat2) -> Lanes {
+fn dot4<S: Simd>(a: &Quats<S>, b: &Quats<S>) -> S {
     a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[0] * b[0]
 }
 
@@ -52,34 +57,90 @@ fn dot4(a: &Quat2, b: &Quat2) -> Lanes {
 /// `s = p + t` for `p` and the target `t` normalised by [`inverse_sqrt_near_one`], their squared
 /// lengths, and whether both inputs were near enough to unit for that. `p` and `t` themselves
 /// are kept for the ends: an input with `|q|² = 1` is multiplied by exactly 1.
-struct Frame {
-    p: Quat2,
-    t: Quat2,
-    d: Quat2,
-    s: Quat2,
-    dd: Lanes,
-    ss: Lanes,
-    nearly_unit: Mask,
+struct Frame<S: Simd> {
+    p: Quats<S>,
+    t: Quats<S>,
+    d: Quats<S>,
+    s: Quats<S>,
+    dd: S,
+    ss: S,
+    nearly_unit: S::Mask,
 }
 
-impl Frame {
+impl<S: Simd> Frame<S> {
     #[inline(always)]
-    fn new(p: &Quat2, r: &Quat2, shortest_path: bool) -> Self {
+    fn new(p: &Quats<S>, r: &Quats<S>, shortest_path: bool) -> Self {
         let (np, nr) = (dot4(p, p), dot4(r, r));
         let (ip, ir) = (inverse_sqrt_near_one(np), inverse_sqrt_near_one(nr));
-        let ir = if shortest_path {
-            Lanes::select(dot4(p, r).lt(Lanes::splat(0.0)), -ir, ir)
-        } else {
-            ir
-        };
+        let ir = if shortest_path { S::select(dot4(p, r).lt(S::splat(0.0)), -ir, ir) } else { ir };
         let (p, t) = (p.map(|c| c * ip), r.map(|c| c * ir));
         let d = [0, 1, 2, 3].map(|c| p[c] - t[c]);
         let s = [0, 1, 2, 3].map(|c| p[c] + t[c]);
-        let limit = Lanes::splat(NEARLY_UNIT);
+        let limit = S::splat(NEARLY_UNIT);
         let nearly_unit =
-            (np - Lanes::splat(1.0)).abs().le(limit) & (nr - Lanes::splat(1.0)).abs().le(limit);
+            (np - S::splat(1.0)).abs().le(limit) & (nr - S::splat(1.0)).abs().le(limit);
         Self { dd: dot4(&d, &d), ss: dot4(&s, &s), p, t, d, s, nearly_unit }
     }
+}
+
+/// Runs `kernel` over the pairs four at a time (the last one to three pairs padded with copies
+/// of the last pair) and writes its results to `out`; returns whether every pair was in the
+/// kernel's domain.
+#[inline(always)]
+fn four_pairs_at_a_time(
+    starts: &[f64],
+    ends: &[f64],
+    parameters: &[f64],
+    out: &mut [f64],
+    kernel: impl Fn(&Quats<Quad>, &Quats<Quad>, Quad) -> (Quats<Quad>, QuadMask),
+) -> bool {
+    let quads = |q: &[f64; 16]| -> Quats<Quad> {
+        [0, 1, 2, 3].map(|c| Quad::new(q[c], q[4 + c], q[8 + c], q[12 + c]))
+    };
+    let mut all = QuadMask::splat(true);
+    let mut run = |p: &[f64; 16], r: &[f64; 16], x: &[f64; 4], q: &mut [f64; 16]| {
+        let (result, valid) = kernel(&quads(p), &quads(r), Quad::new(x[0], x[1], x[2], x[3]));
+        all = all & valid;
+        for (c, component) in result.iter().enumerate() {
+            for (pair, value) in component.to_array().into_iter().enumerate() {
+                q[4 * pair + c] = value;
+            }
+        }
+    };
+    let (starts4, ends4, parameters4) =
+        (starts.chunks_exact(16), ends.chunks_exact(16), parameters.chunks_exact(4));
+    let (start_rest, end_rest, parameter_rest) =
+        (starts4.remainder(), ends4.remainder(), parameters4.remainder());
+    let mut out4 = out.chunks_exact_mut(16);
+    for (((p, r), x), q) in starts4.zip(ends4).zip(parameters4).zip(&mut out4) {
+        // Every chunk is whole: the conversions cannot fail, and the kernel sees fixed sizes.
+        if let (Ok(p), Ok(r), Ok(x), Ok(q)) =
+            (p.try_into(), r.try_into(), x.try_into(), q.try_into())
+        {
+            run(p, r, x, q);
+        }
+    }
+    let rest = parameter_rest.len();
+    let out_rest = out4.into_remainder();
+    if rest > 0
+        && start_rest.len() == 4 * rest
+        && end_rest.len() == 4 * rest
+        && out_rest.len() == 4 * rest
+    {
+        let pad = |values: &[f64], width: usize| -> [f64; 16] {
+            let mut padded = [0.0; 16];
+            for (i, slot) in padded.chunks_exact_mut(width).enumerate() {
+                let from = width * i.min(rest - 1);
+                slot.copy_from_slice(&values[from..from + width]);
+            }
+            padded
+        };
+        let (p, r, x) = (pad(start_rest, 4), pad(end_rest, 4), pad(parameter_rest, 1));
+        let mut q = [0.0; 16];
+        run(&p, &r, &[x[0], x[1], x[2], x[3]], &mut q);
+        out_rest.copy_from_slice(&q[..4 * rest]);
+    }
+    all.all()
 }
 
 /// Runs `kernel` over the pairs two at a time (an odd last pair fills both lanes) and writes its
@@ -90,9 +151,10 @@ fn two_pairs_at_a_time(
     ends: &[f64],
     parameters: &[f64],
     out: &mut [f64],
-    kernel: impl Fn(&Quat2, &Quat2, Lanes) -> (Quat2, Mask),
+    kernel: impl Fn(&Quats<Lanes>, &Quats<Lanes>, Lanes) -> (Quats<Lanes>, Mask),
 ) -> bool {
-    let lanes = |a: &[f64], b: &[f64]| -> Quat2 { [0, 1, 2, 3].map(|c| Lanes::new(a[c], b[c])) };
+    let lanes =
+        |a: &[f64], b: &[f64]| -> Quats<Lanes> { [0, 1, 2, 3].map(|c| Lanes::new(a[c], b[c])) };
     let mut all = Mask::splat(true);
     let mut run = |p: &[f64], p2: &[f64], r: &[f64], r2: &[f64], x: Lanes, q: &mut [f64]| {
         let (result, valid) = kernel(&lanes(p, p2), &lanes(r, r2), x);
@@ -132,31 +194,34 @@ fn kli_exact(
     out: &mut [f64],
     shortest_path: bool,
 ) -> bool {
-    two_pairs_at_a_time(starts, ends, t, out, |p, r, t| {
-        let Frame { p, d, s, dd, ss, nearly_unit, .. } = Frame::new(p, r, shortest_path);
-        let e = (-t).exp_nonpositive();
-        let dde = dd * e;
-        let half = Lanes::splat(0.5) / (ss + dde * e);
-        let a = (ss - dde * e + Lanes::splat(2.0) * dde) * half;
-        let b = (Lanes::splat(2.0) * e * ss - ss + dde * e) * half;
-        let zero = Lanes::splat(0.0);
-        let start = t.eq(zero);
-        let q = [0, 1, 2, 3].map(|c| Lanes::select(start, p[c], a * s[c] + b * d[c]));
-        (
-            q,
-            nearly_unit
-                & Lanes::splat(FRAME_LIMIT).le(ss)
-                & zero.le(t)
-                & t.le(Lanes::splat(f64::MAX)),
-        )
-    })
+    two_pairs_at_a_time(starts, ends, t, out, |p, r, t| kli_exact_kernel(p, r, t, shortest_path))
+}
+
+/// [`kli_exact`]'s formula for the pairs of `p` and `r` at `t`, and where they are in its domain.
+#[inline(always)]
+fn kli_exact_kernel<S: Simd>(
+    p: &Quats<S>,
+    r: &Quats<S>,
+    t: S,
+    shortest_path: bool,
+) -> (Quats<S>, S::Mask) {
+    let Frame { p, d, s, dd, ss, nearly_unit, .. } = Frame::new(p, r, shortest_path);
+    let e = (-t).exp_nonpositive();
+    let dde = dd * e;
+    let half = S::splat(0.5) / (ss + dde * e);
+    let a = (ss - dde * e + S::splat(2.0) * dde) * half;
+    let b = (S::splat(2.0) * e * ss - ss + dde * e) * half;
+    let zero = S::splat(0.0);
+    let start = t.eq(zero);
+    let q = [0, 1, 2, 3].map(|c| S::select(start, p[c], a * s[c] + b * d[c]));
+    (q, nearly_unit & S::splat(FRAME_LIMIT).le(ss) & zero.le(t) & t.le(S::splat(f64::MAX)))
 }
 
 /// `atan(u)` lane-wise for `0 ≤ u ≤ 1`, branch-free: two half-angle steps
 /// `u ↦ u / (1 + √(1 + u²))` bring `u` below `tan(π/16) ≈ 0.199`, where the Taylor series to
 /// `u²³` is exact to 1e-19.
 #[inline(always)]
-fn atan_unit_interval(u: Lanes) -> Lanes {
+fn atan_unit_interval<S: Simd>(u: S) -> S {
     const C: [f64; 12] = [
         1.0,
         -1.0 / 3.0,
@@ -173,19 +238,19 @@ fn atan_unit_interval(u: Lanes) -> Lanes {
     ];
     // Both halvings at once, with one division: for a = √(1 + u²), the second step of
     // v = u / (1 + a) is w = u / (1 + a + √((1 + a)² + u²)).
-    let one = Lanes::splat(1.0);
+    let one = S::splat(1.0);
     let u2 = u * u;
     let one_plus_a = one + (one + u2).sqrt();
     let w = u / (one_plus_a + (one_plus_a * one_plus_a + u2).sqrt());
     // The series in z = w², by Estrin's scheme (see `Lanes::exp_nonpositive`).
-    let c = C.map(Lanes::splat);
+    let c = C.map(S::splat);
     let z = w * w;
     let (z2, pairs) = (z * z, [0, 1, 2, 3, 4, 5].map(|k| c[2 * k] + c[2 * k + 1] * z));
     let z4 = z2 * z2;
     let series = (pairs[0] + pairs[1] * z2)
         + (pairs[2] + pairs[3] * z2) * z4
         + (pairs[4] + pairs[5] * z2) * (z4 * z4);
-    Lanes::splat(4.0) * w * series
+    S::splat(4.0) * w * series
 }
 
 /// SLERP for every pair in the common case (unit inputs up to rounding, `σ ∈ [0, 1]`, the
@@ -198,40 +263,50 @@ fn slerp(
     out: &mut [f64],
     shortest_path: bool,
 ) -> bool {
-    two_pairs_at_a_time(starts, ends, sigma, out, |p, r, sigma| {
-        let Frame { p, t, d, s, dd, ss, nearly_unit } = Frame::new(p, r, shortest_path);
-        // One division for 1/|s|, 1/|d| and |d|/|s|. When p = t exactly, |d| is floored so the
-        // quotient stays finite; sin is 0 there and the d term vanishes.
-        let (dn, sn) = (dd.sqrt().max(Lanes::splat(f64::MIN_POSITIVE)), ss.sqrt());
-        let inverse = Lanes::splat(1.0) / (dn * sn);
-        let half_angle = atan_unit_interval(dd * inverse);
-        let (sin, cos) =
-            sin_cos_small((Lanes::splat(1.0) - Lanes::splat(2.0) * sigma) * half_angle);
-        let (a, b) = (cos * dn * inverse, sin * sn * inverse);
-        let q = with_exact_ends(&p, &t, sigma, [0, 1, 2, 3].map(|c| a * s[c] + b * d[c]));
-        (q, nearly_unit & dd.le(ss) & Lanes::splat(0.0).le(sigma) & sigma.le(Lanes::splat(1.0)))
+    four_pairs_at_a_time(starts, ends, sigma, out, |p, r, sigma| {
+        slerp_kernel(p, r, sigma, shortest_path)
     })
+}
+
+/// [`slerp`]'s formula for the pairs of `p` and `r` at `σ`, and where they are in its domain.
+#[inline(always)]
+fn slerp_kernel<S: Simd>(
+    p: &Quats<S>,
+    r: &Quats<S>,
+    sigma: S,
+    shortest_path: bool,
+) -> (Quats<S>, S::Mask) {
+    let Frame { p, t, d, s, dd, ss, nearly_unit } = Frame::new(p, r, shortest_path);
+    // One division for 1/|s|, 1/|d| and |d|/|s|. When p = t exactly, |d| is floored so the
+    // quotient stays finite; sin is 0 there and the d term vanishes.
+    let (dn, sn) = (dd.sqrt().max(S::splat(f64::MIN_POSITIVE)), ss.sqrt());
+    let inverse = S::splat(1.0) / (dn * sn);
+    let half_angle = atan_unit_interval(dd * inverse);
+    let (sin, cos) = sin_cos_small((S::splat(1.0) - S::splat(2.0) * sigma) * half_angle);
+    let (a, b) = (cos * dn * inverse, sin * sn * inverse);
+    let q = with_exact_ends(&p, &t, sigma, [0, 1, 2, 3].map(|c| a * s[c] + b * d[c]));
+    (q, nearly_unit & dd.le(ss) & S::splat(0.0).le(sigma) & sigma.le(S::splat(1.0)))
 }
 
 /// Normalised linear interpolation for every pair, assuming unit inputs up to rounding (as
 /// [`kli_exact`] does, so the baseline is as cheap as it can be); returns whether all were.
 fn nlerp(starts: &[f64], ends: &[f64], s: &[f64], out: &mut [f64]) -> bool {
-    two_pairs_at_a_time(starts, ends, s, out, |p, r, sigma| {
+    four_pairs_at_a_time(starts, ends, s, out, |p, r, sigma| {
         // In the frame, p = (s + d)/2 and the target t = (s - d)/2: lerp is s/2 + (1/2 - σ) d.
         let Frame { p, t, d, s: sum, nearly_unit, .. } = Frame::new(p, r, true);
-        let half = Lanes::splat(0.5);
+        let half = Quad::splat(0.5);
         let m = [0, 1, 2, 3].map(|c| half * sum[c] + (half - sigma) * d[c]);
-        let scale = Lanes::splat(1.0) / dot4(&m, &m).sqrt();
-        let in_range = sigma.abs().le(Lanes::splat(MAX_PARAMETER));
+        let scale = Quad::splat(1.0) / dot4(&m, &m).sqrt();
+        let in_range = sigma.abs().le(Quad::splat(MAX_PARAMETER));
         (with_exact_ends(&p, &t, sigma, m.map(|c| c * scale)), nearly_unit & in_range)
     })
 }
 
 /// `q`, but the start `p` exactly where `σ = 0` and the target `t` exactly where `σ = 1`.
 #[inline(always)]
-fn with_exact_ends(p: &Quat2, t: &Quat2, sigma: Lanes, q: Quat2) -> Quat2 {
-    let (at_start, at_end) = (sigma.eq(Lanes::splat(0.0)), sigma.eq(Lanes::splat(1.0)));
-    [0, 1, 2, 3].map(|c| Lanes::select(at_start, p[c], Lanes::select(at_end, t[c], q[c])))
+fn with_exact_ends<S: Simd>(p: &Quats<S>, t: &Quats<S>, sigma: S, q: Quats<S>) -> Quats<S> {
+    let (at_start, at_end) = (sigma.eq(S::splat(0.0)), sigma.eq(S::splat(1.0)));
+    [0, 1, 2, 3].map(|c| S::select(at_start, p[c], S::select(at_end, t[c], q[c])))
 }
 
 /// `|s|²` below which the half-angle frame is not orthogonal to 1e-12 (`s·d/(|s||d|)` is
@@ -242,6 +317,7 @@ const FRAME_LIMIT: f64 = 1e-6;
 mod tests {
     use super::*;
     use crate::closed_form::kli_exact as kli_exact_single;
+    use crate::lanes::Lanes;
     use crate::quaternion::{from_wxyz, to_wxyz, unit};
     use glam::DQuat;
 
@@ -315,6 +391,8 @@ mod tests {
         for k in 0..=100_000 {
             let u = k as f64 / 100_000.0;
             worst = worst.max((atan_unit_interval(Lanes::splat(u)).to_array()[0] - u.atan()).abs());
+            let both = atan_unit_interval(Quad::new(u, 0.5 * u, u, u * u)).to_array();
+            assert_eq!(both[0], atan_unit_interval(Lanes::splat(u)).to_array()[0]);
             let x = (u - 0.5) * std::f64::consts::FRAC_PI_2;
             let (sin, cos) = sin_cos_small(Lanes::splat(x));
             worst = worst
@@ -361,6 +439,61 @@ mod tests {
         let mut out = vec![0.0; 4];
         assert!(!slerp(&[1.0, 0.0, 0.0, 0.0], &[0.0, 1.0, 0.0, 0.0], &[1.5], &mut out, true));
         assert!(!slerp(&[1.0, 0.0, 0.0, 0.0], &[-0.6, 0.8, 0.0, 0.0], &[0.5], &mut out, false));
+    }
+
+    #[test]
+    fn every_count_of_pairs_writes_each_pair_and_no_more() {
+        // Four pairs a step: counts 1 to 9 cover whole steps and every padded rest.
+        let pair = |k: usize| -> ([f64; 4], [f64; 4]) {
+            let a = k as f64;
+            let p = to_wxyz(unit_q(&[1.0, 0.1 * a, -0.2, 0.05 * a]));
+            let r = to_wxyz(unit_q(&[0.3 * a - 1.0, 0.7, 0.2 * a, -0.4]));
+            (p, r)
+        };
+        for n in 1..=9 {
+            let (starts, ends): (Vec<[f64; 4]>, Vec<[f64; 4]>) = (0..n).map(pair).unzip();
+            let (starts, ends) = (flat(&starts), flat(&ends));
+            let t: Vec<f64> = (0..n).map(|k| 0.3 + 0.9 * k as f64).collect();
+            let sigma: Vec<f64> = (0..n).map(|k| (k as f64 + 0.5) / n as f64).collect();
+            let mut kli = vec![7.0; 4 * n + 1];
+            let mut sl = vec![7.0; 4 * n + 1];
+            assert!(kli_exact(&starts, &ends, &t, &mut kli[..4 * n], true));
+            assert!(slerp(&starts, &ends, &sigma, &mut sl[..4 * n], true));
+            assert_eq!((kli[4 * n], sl[4 * n]), (7.0, 7.0), "n = {n}: wrote past the end");
+            for i in 0..n {
+                let p = unit_q(&starts[4 * i..4 * i + 4]);
+                let r = unit_q(&ends[4 * i..4 * i + 4]);
+                let exact = to_wxyz(kli_exact_single(p, r, t[i], true).unwrap());
+                let single = to_wxyz(crate::slerp(p, r, sigma[i], true).unwrap());
+                for c in 0..4 {
+                    assert!((kli[4 * i + c] - exact[c]).abs() < 1e-15, "n = {n}, pair {i}");
+                    assert!((sl[4 * i + c] - single[c]).abs() < 1e-15, "n = {n}, pair {i}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_kernels_agree_lane_for_lane_on_lanes_and_quads() {
+        // The same kernel source on two lanes and on four: the same bits.
+        let q = |a: f64| to_wxyz(unit_q(&[0.2, a, 0.9, -0.3]));
+        let (p, r) = ([q(0.1), q(-0.4)], [q(0.8), q(0.3)]);
+        let lanes = |x: [[f64; 4]; 2]| [0, 1, 2, 3].map(|c| Lanes::new(x[0][c], x[1][c]));
+        let quads =
+            |x: [[f64; 4]; 2]| [0, 1, 2, 3].map(|c| Quad::new(x[0][c], x[1][c], x[1][c], x[0][c]));
+        let (two, _) = slerp_kernel(&lanes(p), &lanes(r), Lanes::new(0.25, 0.75), true);
+        let (four, _) = slerp_kernel(&quads(p), &quads(r), Quad::new(0.25, 0.75, 0.75, 0.25), true);
+        for c in 0..4 {
+            let ([a, b], [w, x, y, z]) = (two[c].to_array(), four[c].to_array());
+            assert_eq!([a, b, b, a].map(f64::to_bits), [w, x, y, z].map(f64::to_bits));
+        }
+        let (two, _) = kli_exact_kernel(&lanes(p), &lanes(r), Lanes::new(0.5, 3.0), false);
+        let (four, _) =
+            kli_exact_kernel(&quads(p), &quads(r), Quad::new(0.5, 3.0, 3.0, 0.5), false);
+        for c in 0..4 {
+            let ([a, b], [w, x, y, z]) = (two[c].to_array(), four[c].to_array());
+            assert_eq!([a, b, b, a].map(f64::to_bits), [w, x, y, z].map(f64::to_bits));
+        }
     }
 
     fn unit_q(q: &[f64]) -> DQuat {
