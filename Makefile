@@ -191,6 +191,7 @@ test-page: pkg www single setup-browser
 
 # Benchmarks, not tests: nothing here is asserted by `make test`.
 bench: pkg www setup-browser
+	node bench/targets.mjs --reset
 	cargo bench -p kli-bench --bench core -- --warm-up-time 1 --measurement-time 3
 	node bench/batch.mjs
 	node bench/swarm.mjs
@@ -200,6 +201,7 @@ bench: pkg www setup-browser
 	node bench/page.mjs
 	node bench/video.mjs
 	node bench/lighthouse.mjs
+	node bench/targets.mjs
 
 # The reference means tests/js/average.test.mjs checks against, from SciPy (once, committed).
 fixtures:

@@ -12,6 +12,7 @@ import { Quaternion } from "three";
 import { quat } from "gl-matrix";
 import { Float64Buffer, initSync, kli, kliExactBatch, kliSample, nlerpBatch, slerpBatch } from "../pkg/kli.js";
 import { load, previous } from "./previous.mjs";
+import { record } from "./targets.mjs";
 
 initSync({ module: readFileSync(new URL("../pkg/kli_bg.wasm", import.meta.url)) });
 // Each reference's own module instance.
@@ -188,6 +189,16 @@ for (const { name } of references) {
 console.log(`\nTargets: kliExactBatch ≥ 3.5× three.js: ${ratio("kliExactBatch (wasm)", "three.js slerpFlat").toFixed(2)}×;` +
   ` slerpBatch ≥ 1.8×: ${ratio("slerpBatch (wasm)", "three.js slerpFlat").toFixed(2)}×;` +
   ` kliExactBatch within 2× of nlerpBatch: ${(medians["kliExactBatch (wasm)"] / medians["nlerpBatch (wasm), baseline"]).toFixed(2)}×`);
+
+const release = references.find(({ name }) => name.startsWith("previous release"));
+for (const [method, goal] of [["kliExactBatch", 3.5], ["slerpBatch", 1.8]]) {
+  const ours = ratio(`${method} (wasm)`, "three.js slerpFlat");
+  const theirs = release && ratio(`${method} (wasm)`, `${method} (${release.name})`);
+  record(`\`${method}\` ≥ ${goal}× three.js \`slerpFlat\`, 10⁶ copied pairs, and not slower than the previous release`,
+    `${ours.toFixed(2)}× (in place ${ratio(`${method} (wasm, in place)`, "three.js slerpFlat").toFixed(2)}×)`,
+    release ? `${release.name}: ${ratio(`${method} (${release.name})`, "three.js slerpFlat").toFixed(2)}×; ours ${theirs.toFixed(2)}× its speed` : "",
+    ours >= goal && (!release || theirs >= 0.97));
+}
 
 // ---- The paper's example, solved ---------------------------------------------------------------
 for (const integrator of ["rk4", "geodesic", "euler"]) {

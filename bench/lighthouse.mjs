@@ -2,9 +2,10 @@
 // page and both examples, served as a static host serves them (gzip, caching): performance,
 // accessibility and best practices, and the cumulative layout shift. Targets (issue 14):
 // performance ≥ 0.95, accessibility 1.0, best practices 1.0, CLS ≤ 0.1.
-//   node bench/lighthouse.mjs
+//   node bench/lighthouse.mjs [page …]     (every page and example, or the ones named)
 // Lighthouse is installed on first use into target/bench-tools (not a dev dependency: it is large
 // and only the benchmark needs it).
+import { record } from "./targets.mjs";
 import { execFile, execFileSync } from "node:child_process";
 import { promisify } from "node:util";
 import { existsSync, readFileSync } from "node:fs";
@@ -19,7 +20,8 @@ if (!existsSync(bin)) {
   execFileSync("npm", ["install", "--prefix", tools, "--no-audit", "--no-fund", "--silent", "lighthouse@12"], { stdio: "inherit" });
 }
 
-const PAGES = ["index.html", "keyframes.html", "swarm.html", "examples/figures.html", "examples/three.html"];
+const ALL = ["index.html", "keyframes.html", "swarm.html", "average.html", "examples/figures.html", "examples/three.html"];
+const PAGES = process.argv.length > 2 ? process.argv.slice(2) : ALL;
 const www = await serve(join(root, "www"), { hosted: true });
 try {
   for (const page of PAGES) {
@@ -34,6 +36,8 @@ try {
     const audit = (name) => report.audits[name].displayValue;
     const met = report.categories.performance.score >= 0.95 && report.categories.accessibility.score === 1 &&
       report.categories["best-practices"].score === 1 && report.audits["cumulative-layout-shift"].numericValue <= 0.1;
+    record(`Lighthouse mobile on ${page}: performance ≥ 0.95, accessibility and best practices 1, CLS ≤ 0.1`,
+      `${score("performance")}, ${score("accessibility")}, ${score("best-practices")}, CLS ${audit("cumulative-layout-shift")}`, "", met);
     console.log(`lighthouse ${page}: performance ${score("performance")}, accessibility ${score("accessibility")}, ` +
       `best practices ${score("best-practices")}, CLS ${audit("cumulative-layout-shift")} ` +
       `(FCP ${audit("first-contentful-paint")}, LCP ${audit("largest-contentful-paint")}, TBT ${audit("total-blocking-time")}): ` +

@@ -3,6 +3,7 @@
 // against gl-matrix's quat.sqlerp (helper points computed once) and three.js's
 // QuaternionKeyframeTrack interpolant, on the same keys.
 //   node bench/spline.mjs [rounds]
+import { record } from "./targets.mjs";
 import { readFileSync } from "node:fs";
 import { performance } from "node:perf_hooks";
 import { QuaternionKeyframeTrack } from "three";
@@ -42,6 +43,7 @@ for (let set = 0; set < 20; set++) {
 const mean = ratios.reduce((a, b) => a + b, 0) / ratios.length;
 console.log(`∫|ω̇|² of kliSpline (smoothness 1) / Squad's, 20 sets of 6 keys: mean ${mean.toFixed(3)} ` +
   `(${Math.min(...ratios).toFixed(3)}–${Math.max(...ratios).toFixed(3)}; target ≤ 0.85); keys hit to ${worstKey.toExponential(1)}`);
+record("the chain's `∫|ω̇|²` ≤ 0.85 of Squad's", mean.toFixed(3), "Squad: 1", mean <= 0.85);
 
 // 2. The solve: 10 keys at the default density (32 samples a segment), alternating with the
 // previous release's (its C¹ evaluation needed no solve of its own).
@@ -62,6 +64,8 @@ for (let k = 0; k < 50; k++) {
 }
 console.log(`kliSpline of 10 keys: median ${median(solves.current).toFixed(2)} ms per solve (${iterations[0]} Newton steps, ` +
   `residual ≤ ${residual.toExponential(1)}; target ≤ 2 ms, ≤ 1e-10); ${release.name} ${release.commit}: ${median(solves.old).toFixed(2)} ms`);
+record("solve 10 keys ≤ 2 ms, residual ≤ 1e-10", `${median(solves.current).toFixed(2)} ms, ${residual.toExponential(1)}`,
+  `${release.name}: ${median(solves.old).toFixed(2)} ms`, median(solves.current) <= 2 && residual <= 1e-10);
 
 // 3. .sample of 10⁶ times on the same 10 keys, against gl-matrix's sqlerp and three.js.
 const n = 1e6;
@@ -111,3 +115,7 @@ console.log("| --- | ---: | ---: |");
 for (const [name, times] of Object.entries(results)) {
   console.log(`| ${name} | ${median(times).toFixed(1)} | ${(median(times) * 1e6 / n).toFixed(1)} |`);
 }
+const perTime = (name) => (median(results[name]) * 1e6) / n;
+const [ours, glMatrix, before] = ["kliSpline .sample (wasm)", "gl-matrix quat.sqlerp (helpers once)", `kliSpline .sample, ${release.name} ${release.commit}`].map(perTime);
+record("`.sample` at least as fast as gl-matrix's `sqlerp`", `${ours.toFixed(1)} ns a time`,
+  `gl-matrix ${glMatrix.toFixed(1)}; ${release.name} ${before.toFixed(1)}`, ours <= glMatrix);
