@@ -47,6 +47,18 @@ export class Figures {
     this.later = new Set();
     /** @type {Canvases<Name> | null} */
     this.sizing = null;
+    /** @type {Map<Name, Element>} each canvas's first picture (scripts/first-pictures.mjs), until the canvas is drawn */
+    this.pictures = new Map();
+    for (const name of /** @type {Name[]} */ (Object.keys(canvases))) {
+      const picture = canvases[name].previousElementSibling;
+      if (picture?.classList.contains("first-picture")) this.pictures.set(name, picture);
+    }
+  }
+
+  /** Takes away view `name`'s first picture once its canvas shows the view. */
+  uncover(/** @type {Name} */ name) {
+    this.pictures.get(name)?.remove();
+    this.pictures.delete(name);
   }
 
   /** Shows a new run (a new module object): every still part is drawn again. */
@@ -144,7 +156,7 @@ export class Figures {
       if (kind === "layered") this.layered(name, ctx, frame);
       else this.paint(name, ctx, frame);
       this.stale.delete(name);
-      uncover(this.canvases[name]);
+      this.uncover(name);
     }
     return drawn;
   }
@@ -164,7 +176,7 @@ export class Figures {
         const frame = this.frame(view, t);
         if (!frame) continue;
         this.paint(view, context(this.canvases[view]), frame);
-        uncover(this.canvases[view]);
+        this.uncover(view);
       }
       this.later.clear();
     });
@@ -223,13 +235,6 @@ export class Figures {
       png: () => png(frame, (ctx, ratio) => this.paint(name, ctx, { ...frame, pixelRatio: ratio })),
     });
   }
-}
-
-/** Takes away the first picture under a canvas (drawn by `make www`: scripts/first-pictures.mjs)
- *  once the canvas shows its view. */
-export function uncover(/** @type {HTMLCanvasElement} */ canvas) {
-  const picture = canvas.previousElementSibling;
-  if (picture?.classList.contains("first-picture")) picture.remove();
 }
 
 /** The 2D context of a canvas (a page whose canvases cannot draw has nothing to show). */
