@@ -16,7 +16,16 @@ pub trait Simd:
     + Neg<Output = Self>
 {
     /// A comparison's result, lane by lane.
-    type Mask: Copy + BitAnd<Output = Self::Mask>;
+    type Mask: SimdMask;
+    /// How many lanes: pairs a step of a batch kernel.
+    const LANES: usize;
+    /// The first `LANES` numbers of `x`.
+    fn load(x: &[f64]) -> Self;
+    /// The first `LANES` quaternions of `q` (`[w, x, y, z]` each, one after another) as one
+    /// vector a component: a transpose, done in registers.
+    fn load_quaternions(q: &[f64]) -> [Self; 4];
+    /// [`Simd::load_quaternions`] backwards: writes `LANES` quaternions to the front of `out`.
+    fn store_quaternions(q: [Self; 4], out: &mut [f64]);
     fn splat(x: f64) -> Self;
     fn abs(self) -> Self;
     fn sqrt(self) -> Self;
@@ -74,6 +83,13 @@ pub trait Simd:
         let biased = k + Self::splat(1023.0 + 4_503_599_627_370_496.0);
         p * biased.bits_sub_shl52(0x4330_0000_0000_0000)
     }
+}
+
+/// A [`Simd::Mask`]: lane-wise booleans.
+pub trait SimdMask: Copy + BitAnd<Output = Self> {
+    fn splat(value: bool) -> Self;
+    /// Whether every lane is true.
+    fn all(self) -> bool;
 }
 
 #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
@@ -145,6 +161,11 @@ mod imp {
         #[inline(always)]
         pub fn select(mask: Mask, yes: Self, no: Self) -> Self {
             Self(v128_bitselect(yes.0, no.0, mask.0))
+        }
+        /// `(self[0], o[0])` and `(self[1], o[1])`: a 2×2 transpose.
+        #[inline(always)]
+        pub fn interleave(self, o: Self) -> (Self, Self) {
+            (Self(i64x2_shuffle::<0, 2>(self.0, o.0)), Self(i64x2_shuffle::<1, 3>(self.0, o.0)))
         }
         /// Lane-wise `bits(self) - bits(o)`, shifted left by 52, as f64 bits.
         #[inline(always)]
@@ -260,6 +281,12 @@ mod imp {
             // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
             unsafe { Self(_mm_or_pd(_mm_and_pd(mask.0, yes.0), _mm_andnot_pd(mask.0, no.0))) }
         }
+        /// `(self[0], o[0])` and `(self[1], o[1])`: a 2×2 transpose.
+        #[inline(always)]
+        pub fn interleave(self, o: Self) -> (Self, Self) {
+            // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
+            unsafe { (Self(_mm_unpacklo_pd(self.0, o.0)), Self(_mm_unpackhi_pd(self.0, o.0))) }
+        }
         #[inline(always)]
         pub fn bits_sub_shl52(self, o: u64) -> Self {
             // SAFETY: SSE2 is part of every x86-64 CPU (the target's baseline).
@@ -370,6 +397,11 @@ mod imp {
         pub fn select(mask: Mask, yes: Self, no: Self) -> Self {
             Self([0, 1].map(|i| if mask.0[i] { yes.0[i] } else { no.0[i] }))
         }
+        /// `(self[0], o[0])` and `(self[1], o[1])`: a 2×2 transpose.
+        #[inline(always)]
+        pub fn interleave(self, o: Self) -> (Self, Self) {
+            (Self([self.0[0], o.0[0]]), Self([self.0[1], o.0[1]]))
+        }
         #[inline(always)]
         pub fn bits_sub_shl52(self, o: u64) -> Self {
             Self(self.0.map(|a| f64::from_bits(a.to_bits().wrapping_sub(o) << 52)))
@@ -401,8 +433,39 @@ impl Lanes {
     }
 }
 
+impl SimdMask for Mask {
+    #[inline(always)]
+    fn splat(value: bool) -> Self {
+        Mask::splat(value)
+    }
+    #[inline(always)]
+    fn all(self) -> bool {
+        Mask::all(self)
+    }
+}
+
 impl Simd for Lanes {
     type Mask = Mask;
+    const LANES: usize = 2;
+    #[inline(always)]
+    fn load(x: &[f64]) -> Self {
+        Self::new(x[0], x[1])
+    }
+    #[inline(always)]
+    fn load_quaternions(q: &[f64]) -> [Self; 4] {
+        // Each half of a quaternion is one load; two interleaves put the pairs side by side.
+        let (wx0, yz0) = (Self::new(q[0], q[1]), Self::new(q[2], q[3]));
+        let (wx1, yz1) = (Self::new(q[4], q[5]), Self::new(q[6], q[7]));
+        let ((w, x), (y, z)) = (wx0.interleave(wx1), yz0.interleave(yz1));
+        [w, x, y, z]
+    }
+    #[inline(always)]
+    fn store_quaternions([w, x, y, z]: [Self; 4], out: &mut [f64]) {
+        let ((wx0, wx1), (yz0, yz1)) = (w.interleave(x), y.interleave(z));
+        for (k, half) in [wx0, yz0, wx1, yz1].into_iter().enumerate() {
+            out[2 * k..2 * k + 2].copy_from_slice(&half.to_array());
+        }
+    }
     #[inline(always)]
     fn splat(x: f64) -> Self {
         Self::new(x, x)
@@ -520,5 +583,21 @@ mod tests {
         assert!(!a.le(b).all() && Mask::splat(true).all() && (b.le(b) & a.le(a)).all());
         assert_eq!(a.max(b).to_array(), [2.0, 5.0]);
         assert_eq!((-a).abs().to_array(), [1.0, 5.0]);
+    }
+
+    #[test]
+    fn quaternions_go_in_and_out_whole() {
+        let q = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0];
+        let [w, x, y, z] = Lanes::load_quaternions(&q);
+        assert_eq!(
+            [w, x, y, z].map(Lanes::to_array),
+            [[1.0, 5.0], [2.0, 6.0], [3.0, 7.0], [4.0, 8.0]]
+        );
+        let mut out = [f64::NAN; 9];
+        Lanes::store_quaternions([w, x, y, z], &mut out);
+        assert_eq!(out[..8], q);
+        assert!(out[8].is_nan());
+        let (low, high) = Lanes::new(1.0, 2.0).interleave(Lanes::new(3.0, 4.0));
+        assert_eq!((low.to_array(), high.to_array()), ([1.0, 3.0], [2.0, 4.0]));
     }
 }

@@ -6,7 +6,7 @@
 
 use std::ops::{Add, BitAnd, Div, Mul, Neg, Sub};
 
-use crate::lanes::{Lanes, Mask, Simd};
+use crate::lanes::{Lanes, Mask, Simd, SimdMask};
 
 /// Four lanes: `.0` the first two, `.1` the last two.
 #[derive(Clone, Copy)]
@@ -16,6 +16,8 @@ pub struct Quad(pub Lanes, pub Lanes);
 #[derive(Clone, Copy)]
 pub struct QuadMask(pub Mask, pub Mask);
 
+// The kernels load and store through `Simd`; these are for the tests.
+#[cfg(test)]
 impl Quad {
     #[inline(always)]
     pub fn new(a: f64, b: f64, c: f64, d: f64) -> Self {
@@ -29,20 +31,35 @@ impl Quad {
     }
 }
 
-impl QuadMask {
+impl SimdMask for QuadMask {
     #[inline(always)]
-    pub fn splat(value: bool) -> Self {
+    fn splat(value: bool) -> Self {
         QuadMask(Mask::splat(value), Mask::splat(value))
     }
 
     #[inline(always)]
-    pub fn all(self) -> bool {
+    fn all(self) -> bool {
         (self.0 & self.1).all()
     }
 }
 
 impl Simd for Quad {
     type Mask = QuadMask;
+    const LANES: usize = 4;
+    #[inline(always)]
+    fn load(x: &[f64]) -> Self {
+        Quad(Lanes::load(&x[..2]), Lanes::load(&x[2..4]))
+    }
+    #[inline(always)]
+    fn load_quaternions(q: &[f64]) -> [Self; 4] {
+        let (a, b) = (Lanes::load_quaternions(&q[..8]), Lanes::load_quaternions(&q[8..16]));
+        [0, 1, 2, 3].map(|c| Quad(a[c], b[c]))
+    }
+    #[inline(always)]
+    fn store_quaternions(q: [Self; 4], out: &mut [f64]) {
+        Lanes::store_quaternions(q.map(|c| c.0), &mut out[..8]);
+        Lanes::store_quaternions(q.map(|c| c.1), &mut out[8..16]);
+    }
     #[inline(always)]
     fn splat(x: f64) -> Self {
         Quad(Lanes::splat(x), Lanes::splat(x))
@@ -142,5 +159,19 @@ mod tests {
             Quad::new(2.5, -3.5, 0.5, 1.5).round_ties_even().to_array(),
             [2.0, -4.0, 0.0, 2.0]
         );
+    }
+
+    #[test]
+    fn quaternions_go_in_and_out_whole() {
+        let q: Vec<f64> = (0..16).map(f64::from).collect();
+        let [w, x, y, z] = Quad::load_quaternions(&q);
+        assert_eq!(w.to_array(), [0.0, 4.0, 8.0, 12.0]);
+        assert_eq!(x.to_array(), [1.0, 5.0, 9.0, 13.0]);
+        assert_eq!(y.to_array(), [2.0, 6.0, 10.0, 14.0]);
+        assert_eq!(z.to_array(), [3.0, 7.0, 11.0, 15.0]);
+        let mut out = [f64::NAN; 16];
+        Quad::store_quaternions([w, x, y, z], &mut out);
+        assert_eq!(out.to_vec(), q);
+        assert_eq!(Quad::load(&[1.0, 2.0, 3.0, 4.0, 5.0]).to_array(), [1.0, 2.0, 3.0, 4.0]);
     }
 }

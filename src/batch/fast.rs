@@ -9,8 +9,8 @@
 //! values live that two chains of it ran 0.85× as fast).
 
 use super::BatchKind;
-use crate::lanes::{Lanes, Mask, Simd};
-use crate::quad::{Quad, QuadMask};
+use crate::lanes::{Lanes, Simd, SimdMask};
+use crate::quad::Quad;
 use crate::slerp::MAX_PARAMETER;
 use crate::trig::sin_cos_small;
 
@@ -83,102 +83,70 @@ impl<S: Simd> Frame<S> {
     }
 }
 
-/// Runs `kernel` over the pairs four at a time (the last one to three pairs padded with copies
-/// of the last pair) and writes its results to `out`; returns whether every pair was in the
-/// kernel's domain.
+/// Runs `kernel` over the pairs `S::LANES` at a time (the last few padded with copies of the
+/// last pair) and writes its results to `out`; returns whether every pair was in the kernel's
+/// domain.
 #[inline(always)]
-fn four_pairs_at_a_time(
+fn in_steps<S: Simd>(
     starts: &[f64],
     ends: &[f64],
     parameters: &[f64],
     out: &mut [f64],
-    kernel: impl Fn(&Quats<Quad>, &Quats<Quad>, Quad) -> (Quats<Quad>, QuadMask),
+    kernel: impl Fn(&Quats<S>, &Quats<S>, S) -> (Quats<S>, S::Mask),
 ) -> bool {
-    let quads = |q: &[f64; 16]| -> Quats<Quad> {
-        [0, 1, 2, 3].map(|c| Quad::new(q[c], q[4 + c], q[8 + c], q[12 + c]))
-    };
-    let mut all = QuadMask::splat(true);
-    let mut run = |p: &[f64; 16], r: &[f64; 16], x: &[f64; 4], q: &mut [f64; 16]| {
-        let (result, valid) = kernel(&quads(p), &quads(r), Quad::new(x[0], x[1], x[2], x[3]));
-        all = all & valid;
-        for (c, component) in result.iter().enumerate() {
-            for (pair, value) in component.to_array().into_iter().enumerate() {
-                q[4 * pair + c] = value;
-            }
-        }
-    };
-    let (starts4, ends4, parameters4) =
-        (starts.chunks_exact(16), ends.chunks_exact(16), parameters.chunks_exact(4));
-    let (start_rest, end_rest, parameter_rest) =
-        (starts4.remainder(), ends4.remainder(), parameters4.remainder());
-    let mut out4 = out.chunks_exact_mut(16);
-    for (((p, r), x), q) in starts4.zip(ends4).zip(parameters4).zip(&mut out4) {
-        // Every chunk is whole: the conversions cannot fail, and the kernel sees fixed sizes.
-        if let (Ok(p), Ok(r), Ok(x), Ok(q)) =
-            (p.try_into(), r.try_into(), x.try_into(), q.try_into())
-        {
-            run(p, r, x, q);
-        }
-    }
+    let (lanes, width) = (S::LANES, 4 * S::LANES);
+    let mut all = steps(starts, ends, parameters, out, &kernel);
+    let (start_rest, end_rest, parameter_rest) = (
+        starts.chunks_exact(width).remainder(),
+        ends.chunks_exact(width).remainder(),
+        parameters.chunks_exact(lanes).remainder(),
+    );
     let rest = parameter_rest.len();
-    let out_rest = out4.into_remainder();
+    let out_rest = out.chunks_exact_mut(width).into_remainder();
     if rest > 0
         && start_rest.len() == 4 * rest
         && end_rest.len() == 4 * rest
         && out_rest.len() == 4 * rest
     {
-        let pad = |values: &[f64], width: usize| -> [f64; 16] {
+        let pad = |values: &[f64], size: usize| -> [f64; 16] {
             let mut padded = [0.0; 16];
-            for (i, slot) in padded.chunks_exact_mut(width).enumerate() {
-                let from = width * i.min(rest - 1);
-                slot.copy_from_slice(&values[from..from + width]);
+            for (i, slot) in padded.chunks_exact_mut(size).enumerate() {
+                let from = size * i.min(rest - 1);
+                slot.copy_from_slice(&values[from..from + size]);
             }
             padded
         };
         let (p, r, x) = (pad(start_rest, 4), pad(end_rest, 4), pad(parameter_rest, 1));
         let mut q = [0.0; 16];
-        run(&p, &r, &[x[0], x[1], x[2], x[3]], &mut q);
+        all = all & steps(&p[..width], &r[..width], &x[..lanes], &mut q[..width], &kernel);
         out_rest.copy_from_slice(&q[..4 * rest]);
     }
     all.all()
 }
 
-/// Runs `kernel` over the pairs two at a time (an odd last pair fills both lanes) and writes its
-/// results to `out`; returns whether every pair was in the kernel's domain.
-#[inline(always)]
-fn two_pairs_at_a_time(
+/// [`in_steps`]'s loop over the whole steps: quaternions go in and out of the lanes whole, a
+/// transpose in registers each way ([`Simd::load_quaternions`]), and the fixed-size chunks
+/// leave no bounds check in it. Out of line so that the kernel is compiled once for the array
+/// and its padded rest.
+#[inline(never)]
+fn steps<S: Simd>(
     starts: &[f64],
     ends: &[f64],
     parameters: &[f64],
     out: &mut [f64],
-    kernel: impl Fn(&Quats<Lanes>, &Quats<Lanes>, Lanes) -> (Quats<Lanes>, Mask),
-) -> bool {
-    let lanes =
-        |a: &[f64], b: &[f64]| -> Quats<Lanes> { [0, 1, 2, 3].map(|c| Lanes::new(a[c], b[c])) };
-    let mut all = Mask::splat(true);
-    let mut run = |p: &[f64], p2: &[f64], r: &[f64], r2: &[f64], x: Lanes, q: &mut [f64]| {
-        let (result, valid) = kernel(&lanes(p, p2), &lanes(r, r2), x);
+    kernel: &impl Fn(&Quats<S>, &Quats<S>, S) -> (Quats<S>, S::Mask),
+) -> S::Mask {
+    let (lanes, width) = (S::LANES, 4 * S::LANES);
+    let mut all = S::Mask::splat(true);
+    let chunks = starts.chunks_exact(width).zip(ends.chunks_exact(width));
+    for ((p, r), (x, q)) in
+        chunks.zip(parameters.chunks_exact(lanes).zip(out.chunks_exact_mut(width)))
+    {
+        let (result, valid) = kernel(&S::load_quaternions(p), &S::load_quaternions(r), S::load(x));
         all = all & valid;
-        for c in 0..4 {
-            let [first, second] = result[c].to_array();
-            q[c] = first;
-            if q.len() > 4 {
-                q[4 + c] = second;
-            }
-        }
-    };
-    let (starts2, ends2, parameters2) =
-        (starts.chunks_exact(8), ends.chunks_exact(8), parameters.chunks_exact(2));
-    let (start_rest, end_rest, parameter_rest) =
-        (starts2.remainder(), ends2.remainder(), parameters2.remainder());
-    let mut out2 = out.chunks_exact_mut(8);
-    for (((p, r), x), q) in starts2.zip(ends2).zip(parameters2).zip(&mut out2) {
-        run(&p[..4], &p[4..], &r[..4], &r[4..], Lanes::new(x[0], x[1]), q);
+        S::store_quaternions(result, q);
     }
-    if let ([x], 4, 4) = (parameter_rest, start_rest.len(), end_rest.len()) {
-        run(start_rest, start_rest, end_rest, end_rest, Lanes::splat(*x), out2.into_remainder());
-    }
-    all.all()
+    all
 }
 
 /// The KLI closed form for every pair, assuming each is in the common case (unit inputs up to
@@ -194,7 +162,7 @@ fn kli_exact(
     out: &mut [f64],
     shortest_path: bool,
 ) -> bool {
-    two_pairs_at_a_time(starts, ends, t, out, |p, r, t| kli_exact_kernel(p, r, t, shortest_path))
+    in_steps::<Lanes>(starts, ends, t, out, |p, r, t| kli_exact_kernel(p, r, t, shortest_path))
 }
 
 /// [`kli_exact`]'s formula for the pairs of `p` and `r` at `t`, and where they are in its domain.
@@ -263,7 +231,7 @@ fn slerp(
     out: &mut [f64],
     shortest_path: bool,
 ) -> bool {
-    four_pairs_at_a_time(starts, ends, sigma, out, |p, r, sigma| {
+    in_steps::<Quad>(starts, ends, sigma, out, |p, r, sigma| {
         slerp_kernel(p, r, sigma, shortest_path)
     })
 }
@@ -291,7 +259,7 @@ fn slerp_kernel<S: Simd>(
 /// Normalised linear interpolation for every pair, assuming unit inputs up to rounding (as
 /// [`kli_exact`] does, so the baseline is as cheap as it can be); returns whether all were.
 fn nlerp(starts: &[f64], ends: &[f64], s: &[f64], out: &mut [f64]) -> bool {
-    four_pairs_at_a_time(starts, ends, s, out, |p, r, sigma| {
+    in_steps::<Quad>(starts, ends, s, out, |p, r, sigma| {
         // In the frame, p = (s + d)/2 and the target t = (s - d)/2: lerp is s/2 + (1/2 - σ) d.
         let Frame { p, t, d, s: sum, nearly_unit, .. } = Frame::new(p, r, true);
         let half = Quad::splat(0.5);
