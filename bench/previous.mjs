@@ -1,37 +1,47 @@
 // The package as built from earlier commits, for the benchmarks to measure beside the current one
 // in the same run (a speed figure means something only beside its reference). Each commit of
 // bench/previous.json is checked out into a temporary worktree and built with its own Makefile
-// (`make pkg`, using this checkout's node_modules/.bin for wasm-opt); its pkg/ is kept in
-// target/previous/<commit>/, so a commit is built once (about 3 minutes on 2 cores).
+// (`make pkg`, or `make www` for its pages, using this checkout's node packages); its pkg/ or
+// www/ is kept in target/previous/<commit>/, so a commit is built once (about 3 minutes on 2
+// cores).
 //   node bench/previous.mjs            builds what is missing, prints the directories
 //   import { previous, load } from "./previous.mjs"   → [{ name, commit, dir }], an entry of one
 import { execFileSync } from "node:child_process";
-import { existsSync, mkdirSync, readFileSync, writeFileSync, cpSync, rmSync } from "node:fs";
+import { existsSync, mkdirSync, readFileSync, readdirSync, symlinkSync, writeFileSync, cpSync, rmSync } from "node:fs";
 import { join } from "node:path";
 
 const root = new URL("../", import.meta.url).pathname;
 /** The references: the last release before this work, and the commit before the split. */
 export const REFERENCES = JSON.parse(readFileSync(join(root, "bench/previous.json"), "utf8"));
 
-function build(commit) {
+/** Builds `what` ("pkg", the npm package, or "www", the pages with their modules) at `commit`
+ *  once, with the commit's own Makefile, and keeps it in target/previous/<commit>/<what>. */
+function build(commit, what = "pkg") {
   const dir = join(root, "target/previous", commit);
-  if (existsSync(join(dir, "pkg/kli.js"))) return join(dir, "pkg");
+  const kept = join(dir, what);
+  if (existsSync(join(kept, what === "pkg" ? "kli.js" : "pkg/.built"))) return kept;
   const work = join(dir, "src");
   rmSync(work, { recursive: true, force: true });
   mkdirSync(dir, { recursive: true });
   execFileSync("git", ["worktree", "add", "--force", "--detach", work, commit], { cwd: root, stdio: "ignore" });
   try {
-    // Its Makefile would `npm ci` without this stamp; this checkout's tools serve it.
-    mkdirSync(join(work, "node_modules"), { recursive: true });
-    writeFileSync(join(work, "node_modules/.installed"), "");
+    // Its Makefile would `npm ci` without this stamp; this checkout's packages serve it, each
+    // linked into a node_modules of its own (never this checkout's folder itself, which an
+    // `npm ci` there would empty).
+    const modules = join(work, "node_modules");
+    mkdirSync(modules, { recursive: true });
+    for (const name of readdirSync(join(root, "node_modules"))) {
+      if (!name.startsWith(".")) symlinkSync(join(root, "node_modules", name), join(modules, name));
+    }
+    writeFileSync(join(modules, ".installed"), "");
     const env = { ...process.env, PATH: `${join(root, "node_modules/.bin")}:${process.env.PATH}` };
-    console.error(`building the package at ${commit} (once; a few minutes)`);
-    execFileSync("make", ["pkg"], { cwd: work, env, stdio: ["ignore", "ignore", "inherit"] });
-    cpSync(join(work, "pkg"), join(dir, "pkg"), { recursive: true });
+    console.error(`building ${what} at ${commit} (once; a few minutes)`);
+    execFileSync("make", [what], { cwd: work, env, stdio: ["ignore", "ignore", "inherit"] });
+    cpSync(join(work, what), kept, { recursive: true });
   } finally {
     execFileSync("git", ["worktree", "remove", "--force", work], { cwd: root, stdio: "ignore" });
   }
-  return join(dir, "pkg");
+  return kept;
 }
 
 /** An entry (`kli`, `swarm`, `spline`) of the package in `dir`, initialised: its own module
@@ -45,6 +55,12 @@ export async function load(dir, entry, tag = dir) {
 /** Every reference, built if need be: `{ name, commit, dir }`. */
 export function previous() {
   return REFERENCES.map(({ name, commit }) => ({ name, commit, dir: build(commit) }));
+}
+
+/** The first reference (the previous release) with its pages built: `{ name, commit, www }`. */
+export function previousPages() {
+  const [{ name, commit }] = REFERENCES;
+  return { name, commit, www: build(commit, "www") };
 }
 
 if (import.meta.url === `file://${process.argv[1]}`) {
