@@ -199,6 +199,7 @@ bench: pkg www setup-browser
 	node bench/smoothness.mjs
 	node bench/average.mjs
 	node bench/page.mjs
+	node bench/first-paint.mjs
 	node bench/video.mjs
 	node bench/lighthouse.mjs
 	node bench/targets.mjs
