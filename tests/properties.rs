@@ -3,7 +3,7 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use kli::{
-    DQuat, ErrorKind, Integrator, KliOptions, from_wxyz, hopf, kli, kli_exact,
+    DQuat, ErrorKind, Integrator, KliOptions, batch, from_wxyz, hopf, kli, kli_exact,
     kli_to_slerp_parameter, slerp,
 };
 use proptest::prelude::*;
@@ -123,6 +123,39 @@ proptest! {
             }
         }
         prop_assert!(previous < options.tolerance);
+    }
+
+    #[test]
+    fn batches_are_the_single_calls_pair_by_pair(
+        pairs in prop::collection::vec((pair(), 0.0..=1.0_f64, 0.0..40.0_f64), 1..12),
+        shortest in any::<bool>(),
+    ) {
+        // Any count (whole steps of two and four pairs and every padded rest), any mix of the
+        // kernels' common case and the pairs they hand back to the general loop.
+        let flat = |q: DQuat| [q.w, q.x, q.y, q.z];
+        let starts: Vec<f64> = pairs.iter().flat_map(|((p, _, _), _, _)| flat(*p)).collect();
+        let ends: Vec<f64> = pairs.iter().flat_map(|((_, r, _), _, _)| flat(*r)).collect();
+        let s: Vec<f64> = pairs.iter().map(|(_, s, _)| *s).collect();
+        let t: Vec<f64> = pairs.iter().map(|(_, _, t)| *t).collect();
+        let n = pairs.len();
+        let (mut sl, mut kl, mut nl) = (vec![0.0; 4 * n], vec![0.0; 4 * n], vec![0.0; 4 * n]);
+        batch::slerp_batch(&starts, &ends, &s, &mut sl, shortest).unwrap();
+        batch::kli_exact_batch(&starts, &ends, &t, &mut kl, shortest).unwrap();
+        batch::nlerp_batch(&starts, &ends, &s, &mut nl).unwrap();
+        for (i, ((p, r, _), s, t)) in pairs.iter().enumerate() {
+            let near = |batch: &[f64], single: DQuat, what: &str| -> Result<(), TestCaseError> {
+                let single = flat(single);
+                for c in 0..4 {
+                    let error = (batch[4 * i + c] - single[c]).abs();
+                    prop_assert!(error < 2e-15, "{what}, pair {i} of {n}: {error:e}");
+                }
+                Ok(())
+            };
+            near(&sl, slerp(*p, *r, *s, shortest).unwrap(), "slerp")?;
+            near(&kl, kli_exact(*p, *r, *t, shortest).unwrap(), "kli_exact")?;
+            let r = if p.dot(*r) < 0.0 { -*r } else { *r };
+            near(&nl, (*p + (r - *p) * *s).normalize(), "nlerp")?;
+        }
     }
 
     #[test]
