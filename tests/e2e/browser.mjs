@@ -61,10 +61,13 @@ export const address = () => origin;
 
 /**
  * The mean difference of two PNGs (0 to 255 a channel) and the share of pixels that differ by
- * more than 48 in a channel, decoded by the browser; null when their sizes differ.
+ * more than 48 in a channel, decoded by the browser; `{ size }` when their sizes differ. With
+ * `slack`, `b` may sit up to that many pixels off in each direction: the best alignment's figures,
+ * over the pixels both cover (for an image beside a canvas, which the browser snaps to whole
+ * pixels where the image can sit a fraction off).
  */
-export function compare(page, a, b) {
-  return page.evaluate(async ([a, b]) => {
+export function compare(page, a, b, { slack = 0 } = {}) {
+  return page.evaluate(async ([a, b, slack]) => {
     const decode = async (base64) => {
       const bitmap = await createImageBitmap(await (await fetch(`data:image/png;base64,${base64}`)).blob());
       const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
@@ -74,19 +77,33 @@ export function compare(page, a, b) {
     };
     const [x, y] = await Promise.all([decode(a), decode(b)]);
     if (x.width !== y.width || x.height !== y.height) return { size: [x.width, x.height, y.width, y.height] };
-    let sum = 0, far = 0;
-    for (let i = 0; i < x.data.length; i += 4) {
-      let worst = 0;
-      for (let c = 0; c < 3; c++) {
-        const d = Math.abs(x.data[i + c] - y.data[i + c]);
-        sum += d;
-        worst = Math.max(worst, d);
+    const { width, height } = x;
+    const aligned = (dx, dy) => {
+      let sum = 0, far = 0, pixels = 0;
+      for (let row = slack; row < height - slack; row++) {
+        for (let column = slack; column < width - slack; column++) {
+          const [i, j] = [4 * (row * width + column), 4 * ((row + dy) * width + column + dx)];
+          let worst = 0;
+          for (let c = 0; c < 3; c++) {
+            const d = Math.abs(x.data[i + c] - y.data[j + c]);
+            sum += d;
+            worst = Math.max(worst, d);
+          }
+          if (worst > 48) far++;
+          pixels++;
+        }
       }
-      if (worst > 48) far++;
+      return { mean: sum / (3 * pixels), far: far / pixels };
+    };
+    let best = aligned(0, 0);
+    for (let dy = -slack; dy <= slack; dy++) {
+      for (let dx = -slack; dx <= slack; dx++) {
+        const other = aligned(dx, dy);
+        if (other.mean < best.mean) best = other;
+      }
     }
-    const pixels = x.data.length / 4;
-    return { mean: sum / (3 * pixels), far: far / pixels };
-  }, [a.toString("base64"), b.toString("base64")]);
+    return best;
+  }, [a.toString("base64"), b.toString("base64"), slack]);
 }
 
 /** Pixel statistics of a canvas: how many are not white, and how many are near a colour. */

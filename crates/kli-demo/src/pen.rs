@@ -391,19 +391,29 @@ pub fn unknown_view(got: &str, allowed: &'static [&'static str]) -> KliError {
     KliError::new("view", ErrorKind::UnknownName { got: got.into(), allowed })
 }
 
-/// A character's advance in em in a common sans-serif (DejaVu Sans, which Chromium uses for
-/// `system-ui` on Linux, within a few per cent; Segoe UI and San Francisco are a little
-/// narrower): where an SVG is laid out without a font to measure, labels then sit within a
-/// pixel or two of where the live canvas puts them.
+/// A character's advance in em in DejaVu Sans, the font Chromium uses for `system-ui` on Linux
+/// (measured there; Segoe UI and San Francisco are a little narrower): where an SVG is laid
+/// out without a font to measure, labels then sit within a pixel of where the live canvas puts
+/// them. Letters and digits from DejaVu's own advances, other characters by class.
 fn em_width(c: char) -> f64 {
+    const LOWER: [f64; 26] = [
+        0.613, 0.635, 0.550, 0.635, 0.615, 0.352, 0.635, 0.634, 0.278, 0.278, 0.579, 0.278, 0.974,
+        0.634, 0.612, 0.635, 0.635, 0.411, 0.521, 0.392, 0.634, 0.592, 0.818, 0.592, 0.592, 0.525,
+    ];
+    const UPPER: [f64; 26] = [
+        0.684, 0.686, 0.698, 0.770, 0.632, 0.575, 0.775, 0.752, 0.295, 0.295, 0.656, 0.557, 0.863,
+        0.748, 0.787, 0.603, 0.787, 0.695, 0.635, 0.611, 0.732, 0.684, 0.989, 0.685, 0.611, 0.685,
+    ];
     match c {
-        'i' | 'j' | 'l' | 'I' | '.' | ',' | ':' | ';' | '\'' | '!' | '|' => 0.3,
-        ' ' => 0.32,
-        'f' | 'r' | 't' | '(' | ')' | '[' | ']' | '-' | '/' => 0.4,
-        '=' | '+' | '<' | '>' | '−' => 0.84,
-        'm' | 'w' | 'M' | 'W' => 0.9,
-        'A'..='Z' => 0.7,
+        'a'..='z' => LOWER[c as usize - 'a' as usize],
+        'A'..='Z' => UPPER[c as usize - 'A' as usize],
         '0'..='9' => 0.636,
+        '\'' => 0.275,
+        ' ' | '.' | ',' => 0.318,
+        ':' | ';' | '|' | '/' => 0.337,
+        '-' => 0.361,
+        '(' | ')' | '[' | ']' => 0.39,
+        '=' | '+' | '<' | '>' | '−' | '#' => 0.838,
         _ => 0.6,
     }
 }
