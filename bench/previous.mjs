@@ -11,7 +11,7 @@ import { existsSync, mkdirSync, readFileSync, readdirSync, symlinkSync, writeFil
 import { join } from "node:path";
 
 const root = new URL("../", import.meta.url).pathname;
-/** The references: the last release before this work, and the commit before the split. */
+/** The references: the last release (the first entry, which the targets compare against) and the one before it. */
 export const REFERENCES = JSON.parse(readFileSync(join(root, "bench/previous.json"), "utf8"));
 
 /** Builds `what` ("pkg", the npm package, or "www", the pages with their modules) at `commit`
