@@ -1,7 +1,10 @@
 // Where the KLI page's first paint goes: the page's HTML without its scripts, and parts of it,
 // each loaded cold (a fresh context, nothing cached) with Chromium's trace on, alternating; for
 // each, the medians of its first contentful paint and of the main thread's work before it (HTML
-// parsing, style, layout, paint) and of the raster threads' work before it. The variants:
+// parsing, style, layout, paint), of the raster threads' work before it, and of two costs inside
+// those: the synchronous requests for a font's rendering settings, one for each new font face
+// and size ("fonts": in a fresh renderer each is a round trip to the browser's font service),
+// and the setting up of each SVG image as a document of its own ("svg documents"). The variants:
 //   bare          bench/bare/: one canvas drawn by a script (the first-frame baseline)
 //   line          the page's head and style sheet, one line of text
 //   header        the page's head and its header (title, two paragraphs, navigation)
@@ -49,7 +52,7 @@ try {
     for (const name of names) {
       const context = await browser.newContext({ viewport: { width: 1280, height: 900 } });
       const tab = await context.newPage();
-      await browser.startTracing(tab, { categories: ["devtools.timeline", "loading", "disabled-by-default-devtools.timeline"] });
+      await browser.startTracing(tab, { categories: ["devtools.timeline", "loading", "disabled-by-default-devtools.timeline", "blink", "fonts"] });
       await tab.goto(`${server.origin}/${name}.html`);
       const fcp = await tab.evaluate(() => new Promise((resolve) => new PerformanceObserver((list) => {
         const entry = list.getEntries().find((e) => e.name === "first-contentful-paint");
@@ -68,6 +71,8 @@ try {
         layout: before("Layout"),
         paint: before("Paint"),
         raster: before("RasterTask"),
+        fonts: before("WebSandboxSupportLinux::GetWebFontRenderStyleForStrike"),
+        "svg documents": before("IsolatedSVGDocumentHost::IsolatedSVGDocumentHost"),
       });
       await context.close();
     }
@@ -79,7 +84,7 @@ try {
 }
 
 const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
-const columns = ["fcp", "parse", "style", "layout", "paint", "raster"];
+const columns = ["fcp", "parse", "style", "layout", "paint", "raster", "fonts", "svg documents"];
 console.log(`medians of ${loads} cold loads each, alternating, ms (work summed before the first contentful paint)\n`);
 console.log(`| variant | ${columns.join(" | ")} |\n| --- |${" ---: |".repeat(columns.length)}`);
 for (const name of names) {
