@@ -2,7 +2,7 @@
 // page and both examples, served as a static host serves them (gzip, caching): performance,
 // accessibility and best practices, and the cumulative layout shift. Targets (issue 14):
 // performance ≥ 0.95, accessibility 1.0, best practices 1.0, CLS ≤ 0.1.
-//   node bench/lighthouse.mjs [page …]     (every page and example, or the ones named)
+//   node bench/lighthouse.mjs [--runs=3] [page …]     (every page and example, or the ones named)
 // Lighthouse is installed on first use into target/bench-tools (not a dev dependency: it is large
 // and only the benchmark needs it).
 import { record } from "./targets.mjs";
@@ -21,26 +21,38 @@ if (!existsSync(bin)) {
 }
 
 const ALL = ["index.html", "keyframes.html", "swarm.html", "average.html", "examples/figures.html", "examples/three.html"];
-const PAGES = process.argv.length > 2 ? process.argv.slice(2) : ALL;
+const args = process.argv.slice(2);
+// Runs a page: a single run's performance score moves by ±0.05 on this machine (its simulation
+// starts from a trace taken here), so each page's report is the run of median performance.
+const RUNS = Number(args.find((a) => a.startsWith("--runs="))?.slice(7) ?? 3);
+const named = args.filter((a) => !a.startsWith("--"));
+const PAGES = named.length > 0 ? named : ALL;
 const www = await serve(join(root, "www"), { hosted: true });
 try {
   for (const page of PAGES) {
-    const out = join(tools, `lighthouse-${page.replace(/\W/g, "-")}.json`);
-    // Asynchronously: the server answering Lighthouse runs in this process.
-    await promisify(execFile)(bin, [`${www.origin}/${page}`, "--quiet", "--output=json", `--output-path=${out}`,
-      "--only-categories=performance,accessibility,best-practices",
-      "--chrome-flags=--headless --no-sandbox --disable-gpu --disable-background-networking --disable-component-update --disable-sync"],
-    { env: { ...process.env, CHROME_PATH: "/usr/bin/chromium" } });
-    const report = JSON.parse(readFileSync(out, "utf8"));
+    const reports = [];
+    for (let run = 0; run < RUNS; run++) {
+      const out = join(tools, `lighthouse-${page.replace(/\W/g, "-")}-${run}.json`);
+      // Asynchronously: the server answering Lighthouse runs in this process.
+      await promisify(execFile)(bin, [`${www.origin}/${page}`, "--quiet", "--output=json", `--output-path=${out}`,
+        "--only-categories=performance,accessibility,best-practices",
+        "--chrome-flags=--headless --no-sandbox --disable-gpu --disable-background-networking --disable-component-update --disable-sync"],
+      { env: { ...process.env, CHROME_PATH: "/usr/bin/chromium" } });
+      reports.push(JSON.parse(readFileSync(out, "utf8")));
+    }
+    const performances = reports.map((r) => r.categories.performance.score);
+    reports.sort((a, b) => a.categories.performance.score - b.categories.performance.score);
+    const report = reports[Math.floor(reports.length / 2)];
     const score = (name) => report.categories[name].score.toFixed(2);
     const audit = (name) => report.audits[name].displayValue;
     const met = report.categories.performance.score >= 0.95 && report.categories.accessibility.score === 1 &&
       report.categories["best-practices"].score === 1 && report.audits["cumulative-layout-shift"].numericValue <= 0.1;
+    const spread = `performance in ${RUNS} runs: ${performances.map((x) => x.toFixed(2)).join(", ")}`;
     record(`Lighthouse mobile on ${page}: performance ≥ 0.95, accessibility and best practices 1, CLS ≤ 0.1`,
-      `${score("performance")}, ${score("accessibility")}, ${score("best-practices")}, CLS ${audit("cumulative-layout-shift")}`, "", met);
+      `${score("performance")}, ${score("accessibility")}, ${score("best-practices")}, CLS ${audit("cumulative-layout-shift")} (median of ${RUNS})`, "", met);
     console.log(`lighthouse ${page}: performance ${score("performance")}, accessibility ${score("accessibility")}, ` +
       `best practices ${score("best-practices")}, CLS ${audit("cumulative-layout-shift")} ` +
-      `(FCP ${audit("first-contentful-paint")}, LCP ${audit("largest-contentful-paint")}, TBT ${audit("total-blocking-time")}): ` +
+      `(FCP ${audit("first-contentful-paint")}, LCP ${audit("largest-contentful-paint")}, TBT ${audit("total-blocking-time")}; ${spread}): ` +
       `${met ? "met" : "MISSED"} (targets ≥ 0.95, 1, 1, ≤ 0.1)`);
   }
 } finally {

@@ -27,14 +27,17 @@ test("three.js example: kli turns the scene's objects, THREE.Quaternion in, [x, 
     const T = Number(await time.getAttribute("max"));
     assert.ok(Math.abs(T - 11.66) < 1e-9, `T = ${T}`);
     slerpXyzw([0, 0, 1, 0], [0.5, 0.5, 0.5, 0.5], 1.8 / T).forEach((c, i) => assert.ok(Math.abs(c - slerp[i]) < 6e-5, `${slerp} vs ${c}`));
-    // Both objects are drawn: their colours are on the WebGL canvas.
-    const seen = await page.evaluate(() => {
-      const canvas = document.querySelector("#scene");
+    // Both objects are drawn: their colours are on the screen, where the WebGL canvas shows
+    // them (its drawing buffer is not kept between frames, so the test reads the screen).
+    const shot = (await page.locator("#scene").screenshot()).toString("base64");
+    const seen = await page.evaluate(async (png) => {
+      const bytes = Uint8Array.from(atob(png), (c) => c.charCodeAt(0));
+      const image = await createImageBitmap(new Blob([bytes], { type: "image/png" }));
       const copy = document.createElement("canvas");
-      copy.width = canvas.width;
-      copy.height = canvas.height;
+      copy.width = image.width;
+      copy.height = image.height;
       const ctx = copy.getContext("2d");
-      ctx.drawImage(canvas, 0, 0);
+      ctx.drawImage(image, 0, 0);
       const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
       let kli = 0, slerp = 0;
       for (let i = 0; i < data.length; i += 4) {
@@ -43,7 +46,7 @@ test("three.js example: kli turns the scene's objects, THREE.Quaternion in, [x, 
         if (r > 70 && r < 170 && g < 120 && b > 180) slerp++;
       }
       return { kli, slerp };
-    });
+    }, shot);
     assert.ok(seen.kli > 500 && seen.slerp > 500, JSON.stringify(seen));
     assert.deepEqual(await axeViolations(page), []);
     assert.deepEqual(problems, []);

@@ -23,7 +23,8 @@ const smooth = smoothInterpolation(linear);
 const end = times[times.length - 1];
 time.max = String(end);
 
-const { left, right, renderer, render } = twoAircraft(canvas, status, 0x7048e8, 0xc2410c);
+const { left, right, renderer, render, compiled } = twoAircraft(canvas, status, 0x7048e8, 0xc2410c);
+await compiled;
 
 // One mixer an object, each playing its track; the page sets their time.
 const mixers = [[left, linear], [right, smooth]].map(([object, track]) => {
