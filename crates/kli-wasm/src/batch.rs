@@ -99,9 +99,13 @@ struct Scratch {
 
 impl Scratch {
     fn beside(array: &F64Array, length: usize) -> Scratch {
-        let data = vec![0.0; length + 512];
+        // Room to start anywhere in a page; only what is used is written (a call of one pair
+        // should not zero 16 KB of scratch).
+        let mut data = Vec::with_capacity(length + 511);
         let (_, offset, _) = array.range();
         let start = half_page_apart(data.as_ptr() as usize, offset);
+        // Within the capacity: the allocation, and so `start`, stays where it is.
+        data.resize(start + length, 0.0);
         Scratch { data, start }
     }
 
