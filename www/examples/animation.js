@@ -23,8 +23,7 @@ const smooth = smoothInterpolation(linear);
 const end = times[times.length - 1];
 time.max = String(end);
 
-const { left, right, renderer, render, compiled } = twoAircraft(canvas, status, 0x7048e8, 0xc2410c);
-await compiled;
+const { left, right, renderer, render } = await twoAircraft(canvas, status, 0x7048e8, 0xc2410c);
 
 // One mixer an object, each playing its track; the page sets their time.
 const mixers = [[left, linear], [right, smooth]].map(([object, track]) => {

@@ -20,14 +20,13 @@ function aircraft(colour) {
 }
 
 /**
- * Two aircraft of the given colours on `canvas`: `{ left, right, render, compiled }`, where
- * `render()` fits the renderer to the canvas's size and draws, and `compiled` settles once the
- * scene's shaders are compiled: off the main thread where the browser can
- * (`KHR_parallel_shader_compile`), so the first frame, awaited after it, does not compile them in
- * one long task (Lighthouse's total blocking time counted it). If the browser cannot draw WebGL,
- * `status` says so and this throws.
+ * Two aircraft of the given colours on `canvas`: resolves to `{ left, right, renderer, render }`,
+ * where `render()` fits the renderer to the canvas's size and draws, once the scene's shaders
+ * are compiled (off the main thread where the browser can, `KHR_parallel_shader_compile`), so
+ * the first frame does not compile them in one long task (Lighthouse's total blocking time
+ * counted it). If the browser cannot draw WebGL, `status` says so and this rejects.
  */
-export function twoAircraft(canvas, status, leftColour, rightColour) {
+export async function twoAircraft(canvas, status, leftColour, rightColour) {
   const scene = new THREE.Scene();
   scene.background = new THREE.Color(0xffffff);
   scene.add(new THREE.AmbientLight(0xffffff, 1.6));
@@ -45,7 +44,7 @@ export function twoAircraft(canvas, status, leftColour, rightColour) {
   let renderer;
   try {
     // The drawing buffer is not preserved between frames (three.js's default): keeping it cost
-    // a copy of every frame, and Lighthouse's mobile score 0.94 against 0.97 (docs/performance.md).
+    // a copy of every frame (docs/performance.md, Lighthouse).
     renderer = new THREE.WebGLRenderer({ canvas, antialias: true });
   } catch (error) {
     status.textContent = `This browser cannot draw WebGL: ${error.message}`;
@@ -62,8 +61,9 @@ export function twoAircraft(canvas, status, leftColour, rightColour) {
     renderer.render(scene, camera);
   };
   // In a task of its own: creating the WebGL context is long enough already.
-  const compiled = new Promise((resolve) => setTimeout(resolve)).then(() => renderer.compileAsync(scene, camera));
-  return { left, right, renderer, render, compiled };
+  await new Promise((resolve) => setTimeout(resolve));
+  await renderer.compileAsync(scene, camera);
+  return { left, right, renderer, render };
 }
 
 /**

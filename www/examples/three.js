@@ -18,8 +18,7 @@ const r = new THREE.Quaternion(0.5, 0.5, 0.5, 0.5);
 const T = kli(p, r).finalTime;
 time.max = String(T);
 
-const { left: kliMesh, right: slerpMesh, renderer, render, compiled } = twoAircraft(canvas, status, 0xc2410c, 0x7048e8);
-await compiled;
+const { left: kliMesh, right: slerpMesh, renderer, render } = await twoAircraft(canvas, status, 0xc2410c, 0x7048e8);
 
 const clock = transport(play, time);
 const fmt = (q) => `(${q.toArray().map((c) => c.toFixed(4)).join(", ")})`;

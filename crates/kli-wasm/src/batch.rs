@@ -87,7 +87,7 @@ fn run_arrays(
 /// A chunk's scratch space in the module's memory for one of the caller's arrays, placed half
 /// a page away from it: at an address that differs from the array's byte offset by 2048 modulo
 /// 4096. Each chunk is copied between the two by one `memmove`, and glibc's (Node on x86-64)
-/// runs about 6× slower when source and destination lie a multiple of 4 KiB apart to within 16
+/// runs about 7× slower when source and destination lie a multiple of 4 KiB apart to within 16
 /// bytes ("4K aliasing"), as they do when both start near a page boundary: large ArrayBuffers
 /// do, and so did this scratch (`node bench/batch.mjs`: copying 10⁶ results out took 12.5 ms
 /// where it takes 1.8, docs/performance.md). Half a page away keeps clear of it for any
