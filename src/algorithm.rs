@@ -74,11 +74,12 @@ pub struct KliPath {
 /// `tolerance` of the target, or the call fails: it never returns a path that falls short.
 pub fn kli(p: DQuat, r: DQuat, options: &KliOptions) -> Result<KliPath, KliError> {
     options.validate()?;
-    let arc = closed_form::arc(p, r, options.shortest_path)?;
+    let arc = GreatArc::between(p, r, options.shortest_path)?;
     let KliOptions { tolerance, step, integrator, .. } = *options;
     let last = options.steps_allowed().min((MAX_SAMPLES - 1) as f64) as usize;
     let predicted = closed_form::reach_time(&arc, tolerance);
-    let capacity = ((predicted / step).ceil() as usize + 2).min(last + 1);
+    // In floats: with a subnormal step the quotient is ∞, which `as usize` saturates.
+    let capacity = ((predicted / step).ceil() + 2.0).min((last + 1) as f64) as usize;
     let mut path = KliPath {
         times: Vec::with_capacity(capacity),
         quaternions: Vec::with_capacity(capacity),

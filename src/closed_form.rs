@@ -13,9 +13,9 @@ use glam::DQuat;
 
 use crate::error::{KliError, Requirement, require};
 use crate::great_arc::GreatArc;
-use crate::quaternion::unit;
 
-/// `q(t)` on `arc` for `t ≥ 0` (not checked here); `q(0)` is the start, exactly.
+/// `q(t)` on `arc` for `t ≥ 0`; `q(0)` is the start, exactly. Total: `t` is not checked (NaN
+/// gives NaN); [`kli_exact`] is the checked call.
 #[inline]
 pub fn point_at(arc: &GreatArc, t: f64) -> DQuat {
     if t == 0.0 {
@@ -66,7 +66,7 @@ pub fn reach_time(arc: &GreatArc, tolerance: f64) -> f64 {
 /// `p·r < 0`); inputs are normalised.
 pub fn kli_exact(p: DQuat, r: DQuat, t: f64, shortest_path: bool) -> Result<DQuat, KliError> {
     let t = require("t", t, Requirement::NonNegative)?;
-    Ok(point_at(&arc(p, r, shortest_path)?, t))
+    Ok(point_at(&GreatArc::between(p, r, shortest_path)?, t))
 }
 
 /// The SLERP parameter `s(t)` at KLI time `t`: `kli_exact(p, r, t) = slerp(p, r, s(t))`.
@@ -77,7 +77,7 @@ pub fn kli_to_slerp_parameter(
     shortest_path: bool,
 ) -> Result<f64, KliError> {
     let t = require("t", t, Requirement::NonNegative)?;
-    Ok(time_warp(&arc(p, r, shortest_path)?, t))
+    Ok(time_warp(&GreatArc::between(p, r, shortest_path)?, t))
 }
 
 /// The predicted reach time `T*` for `tolerance` (see [`reach_time`]).
@@ -88,11 +88,7 @@ pub fn kli_reach_time(
     shortest_path: bool,
 ) -> Result<f64, KliError> {
     let tolerance = require("tolerance", tolerance, Requirement::Positive)?;
-    Ok(reach_time(&arc(p, r, shortest_path)?, tolerance))
-}
-
-pub(crate) fn arc(p: DQuat, r: DQuat, shortest_path: bool) -> Result<GreatArc, KliError> {
-    GreatArc::new(unit("p", p)?, unit("r", r)?, shortest_path)
+    Ok(reach_time(&GreatArc::between(p, r, shortest_path)?, tolerance))
 }
 
 #[cfg(test)]
@@ -132,7 +128,7 @@ mod tests {
     #[test]
     fn warp_maps_onto_slerp_angle() {
         let (p, r) = paper();
-        let a = arc(p, r, true).unwrap();
+        let a = GreatArc::between(p, r, true).unwrap();
         assert_eq!(time_warp(&a, 0.0), 0.0);
         for t in [0.2, 1.0, 5.0] {
             let s = time_warp(&a, t);

@@ -8,6 +8,7 @@
 use glam::DQuat;
 
 use crate::error::{ErrorKind, KliError};
+use crate::quaternion::unit;
 
 /// Below this length, `p - target` or `p + target` is rounding noise of the normalised inputs
 /// (each component is within 2 ulp), not a direction.
@@ -63,6 +64,13 @@ impl GreatArc {
             angle: 2.0 * d.atan2(s),
             half_angle_tan: d / s,
         })
+    }
+
+    /// The arc from `p` to `r` as given by a caller: both normalised first, an Error naming `p`
+    /// or `r` when one is not a quaternion (see [`unit()`]), then [`GreatArc::new`]. KLI, its
+    /// closed form and SLERP all start here.
+    pub fn between(p: DQuat, r: DQuat, shortest_path: bool) -> Result<Self, KliError> {
+        Self::new(unit("p", p)?, unit("r", r)?, shortest_path)
     }
 
     /// The arc of no length at `p` (every point of it is `p`).

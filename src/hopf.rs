@@ -9,7 +9,8 @@
 
 use glam::{DQuat, DVec3};
 
-/// `h(q)` for a unit quaternion `q`.
+/// `h(q)` for a unit quaternion `q`. Total: unchecked, so any `q` gives `|q|²` times a point of
+/// S² (NaN for NaN); normalise a caller's quaternion first ([`unit()`](crate::quaternion::unit)).
 #[inline]
 pub fn hopf(q: DQuat) -> DVec3 {
     let (a, b, c, d) = (q.w, q.x, q.y, q.z);

@@ -12,8 +12,12 @@
 //! `tan(φ(t)/2) = tan(φ0/2) e^(-t)`.
 //!
 //! Quaternions are [`glam::DQuat`] (f64). The paper, and the JavaScript API, write them scalar
-//! first, `[w, x, y, z]`: see [`from_wxyz`] and [`to_wxyz`]. Every function normalises its inputs
-//! and returns a [`KliError`] naming the bad argument rather than panicking.
+//! first, `[w, x, y, z]`: see [`from_wxyz`] and [`to_wxyz`]. Every public function either checks its
+//! inputs and returns a [`KliError`] naming the bad argument, or is *total*: it answers any input
+//! (NaN in, NaN out) and says so, as the building blocks that take a checked arc or unit
+//! quaternion do ([`hopf()`], [`slerp::point_at`], [`closed_form::point_at`]). None panics and
+//! none runs unbounded: `tests/hostile.rs` calls each with NaN, ±∞, ±0, negatives, 1e308 and
+//! subnormals under a time bound.
 //!
 //! ```
 //! use kli::{kli, from_wxyz, KliOptions};
@@ -30,8 +34,9 @@
 //! Karcher, median), [`model`] (the vector field), [`integrator`] (RK4, Euler, geodesic),
 //! [`algorithm`] (Algorithm 1), [`great_arc`] (the circle from `p` to the target),
 //! [`closed_form`] (the exact solution), [`slerp`](mod@slerp), [`hopf`](mod@hopf),
-//! [`axis_angle`](mod@axis_angle) (polar form), [`batch`] (many pairs at once), [`swarm`] (the
-//! many-oscillator model the paper is named after), [`error`].
+//! [`axis_angle`](mod@axis_angle) (polar form), [`batch`] (many pairs at once), [`spline`]
+//! (curves through keyframes: the Kuramoto–Lohe chain), [`swarm`] (the many-oscillator model the
+//! paper is named after), [`error`].
 //!
 //! This crate knows nothing of WebAssembly: the JavaScript package is the `kli-wasm` crate beside
 //! it, and the demo page's renderer the `kli-demo` crate.

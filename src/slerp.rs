@@ -6,7 +6,6 @@
 
 use glam::DQuat;
 
-use crate::closed_form::arc;
 use crate::error::{KliError, Requirement, require};
 use crate::great_arc::GreatArc;
 
@@ -19,10 +18,11 @@ pub const MAX_PARAMETER: f64 = 1e6;
 /// `|s| ≤` [`MAX_PARAMETER`]. At `s = 0` and `s = 1` the (normalised) ends come back exactly.
 pub fn slerp(p: DQuat, r: DQuat, s: f64, shortest_path: bool) -> Result<DQuat, KliError> {
     let s = require("s", s, Requirement::AtMost(MAX_PARAMETER))?;
-    Ok(point_at(&arc(p, r, shortest_path)?, s))
+    Ok(point_at(&GreatArc::between(p, r, shortest_path)?, s))
 }
 
-/// The SLERP point of `arc` at parameter `s`.
+/// The SLERP point of `arc` at parameter `s`. Total: `s` is not checked (a non-finite `s`
+/// gives NaN); [`slerp()`] is the checked call.
 #[inline]
 pub fn point_at(arc: &GreatArc, s: f64) -> DQuat {
     if s == 0.0 {

@@ -67,7 +67,8 @@ pub fn check_lengths(
     out: usize,
     parameter_name: &str,
 ) -> Result<(), KliError> {
-    let expected = 4 * parameters;
+    // Saturated, so a count no array can hold four times over is refused, not wrapped.
+    let expected = parameters.saturating_mul(4);
     for (name, got) in [("starts", starts), ("ends", ends), ("out", out)] {
         if got != expected {
             let kind = ErrorKind::WrongLength { expected, got, per: parameter_name.into() };

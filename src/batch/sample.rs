@@ -6,7 +6,6 @@ use glam::DQuat;
 use crate::closed_form::point_from_half_angle_tan;
 use crate::error::{ErrorKind, KliError, Requirement, require};
 use crate::great_arc::GreatArc;
-use crate::quaternion::unit;
 
 /// The step of times sampled evenly, when every `times[k]` is `times[0] + k·step` to rounding.
 fn even_steps(times: &[f64]) -> Option<f64> {
@@ -45,7 +44,7 @@ pub fn kli_sample_into(
     for (k, &t) in times.iter().enumerate() {
         require("t", t, Requirement::NonNegative).map_err(|e| e.renamed(format!("times[{k}]")))?;
     }
-    let arc = GreatArc::new(unit("p", p)?, unit("r", r)?, shortest_path)?;
+    let arc = GreatArc::between(p, r, shortest_path)?;
     let u0 = arc.half_angle_tan();
     match even_steps(times) {
         Some(step) => {

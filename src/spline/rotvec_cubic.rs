@@ -181,11 +181,14 @@ fn solve_block_tridiagonal(
 
 impl RotvecCubic {
     /// The cubic through `samples` at `times` (at least two; times increasing; consecutive
-    /// samples less than a half turn apart, which the chain's are by far). Errs only if the
-    /// rates do not settle, which needs consecutive samples near a half turn apart.
+    /// samples less than a half turn apart, which the chain's are by far). Errs when the input
+    /// is not that (the samples and times checked as [`Keys`](super::Keys) checks keys: errors
+    /// name `keys[i]` or `times[i]`), or when the rates do not settle, which needs consecutive
+    /// samples near a half turn apart or spans too short to square.
     pub fn new(samples: &[DQuat], times: &[f64]) -> Result<Self, KliError> {
+        let checked = super::Keys::unchecked_spans(samples, Some(times))?;
+        let (samples, times) = (checked.quaternions(), checked.times());
         let n = samples.len();
-        debug_assert!(n >= 2 && times.len() == n);
         let h: Vec<f64> = times.windows(2).map(|w| w[1] - w[0]).collect();
         let delta: Vec<DVec3> = samples
             .windows(2)

@@ -92,6 +92,9 @@ pub const MAX_START_SPREAD: f64 = 1000.0;
 /// The largest time step `dt`.
 pub const MAX_STEP: f64 = 100.0;
 
+/// The most steps one [`Swarm::step`] call takes (the JavaScript API's bound too).
+pub const MAX_STEPS: usize = 1_000_000;
+
 /// How to build a [`Swarm`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SwarmOptions {
@@ -228,10 +231,16 @@ impl Swarm {
         Ok(())
     }
 
-    /// `steps` geodesic RK4 steps of `dt` (finite, > 0).
+    /// `steps` geodesic RK4 steps of `dt` (finite, > 0, at most [`MAX_STEP`]); `steps` at most
+    /// [`MAX_STEPS`], so a call's work is bounded (`O(N · steps)`).
     pub fn step(&mut self, dt: f64, steps: usize) -> Result<(), KliError> {
         let dt = require("dt", dt, Requirement::Positive)?;
         require("dt", dt, Requirement::AtMost(MAX_STEP))?;
+        if steps > MAX_STEPS {
+            let requirement = Requirement::Between(0.0, MAX_STEPS as f64);
+            let kind = ErrorKind::OutOfRange { value: steps as f64, requirement };
+            return Err(KliError::new("steps", kind));
+        }
         for _ in 0..steps {
             self.rk4_step(dt);
         }
