@@ -298,3 +298,62 @@ fn far_apart_keys_at_uneven_times_give_a_unit_curve_through_the_keys() {
     // Measured: 11 of the 200 (all with spans 10⁵ times apart beside each other).
     assert!((1..=20).contains(&c1), "{c1} of 200 are C¹");
 }
+
+/// MATH.md's chain energy for samples `x` at `times`, written from its formula:
+/// `(α/2) Σ |x_{j+1} − x_j|²/h_j` and `(β/2) Σ w_j |D²x_j|²` with
+/// `D²x_j = [(x_{j+1} − x_j)/h_j − (x_j − x_{j−1})/h_{j−1}] / w_j`, `w_j = (h_{j−1} + h_j)/2`, as
+/// the two terms apart.
+fn chain_energy(x: &[DQuat], times: &[f64], alpha: f64, beta: f64) -> (f64, f64) {
+    let n = x.len();
+    let h = |j: usize| times[j + 1] - times[j];
+    let neighbours: f64 =
+        (0..n - 1).map(|j| (x[j + 1] - x[j]).length_squared() / h(j)).sum::<f64>() * alpha / 2.0;
+    let bending: f64 = (1..n - 1)
+        .map(|j| {
+            let w = (h(j - 1) + h(j)) / 2.0;
+            let second = ((x[j + 1] - x[j]) / h(j) - (x[j] - x[j - 1]) / h(j - 1)) / w;
+            w * second.length_squared()
+        })
+        .sum::<f64>()
+        * beta
+        / 2.0;
+    (neighbours, bending)
+}
+
+/// The chain's samples are an equilibrium of MATH.md's energy on uneven spacing: moving any free
+/// sample along S³ changes `E` only to second order. By central differences of the energy
+/// written above (not the code's matrix), each derivative is below 1e-7 of the largest that the
+/// two terms contribute apart (they balance; an equilibrium of another energy leaves percents).
+#[test]
+fn the_chain_is_stationary_for_the_energy_on_uneven_times() {
+    let quaternions = random_keys(7, 4, 2.0);
+    let times = [0.0, 1.0, 3.5, 4.0];
+    let smoothness = 0.7;
+    let per = 8;
+    let options = ChainOptions { smoothness, samples_per_segment: per };
+    let curve = KliSpline::new(keys(&quaternions, Some(&times)), &options).unwrap();
+    let (x, t) = (curve.samples().quaternions().to_vec(), curve.samples().times().to_vec());
+    assert_eq!(x.len(), 3 * per + 1);
+    let (alpha, beta) = (1.0 - smoothness, smoothness);
+    let s = 1e-5;
+    let (mut worst, mut scale): (f64, f64) = (0.0, 0.0);
+    for j in (0..x.len()).filter(|j| j % per != 0) {
+        for e in [
+            DQuat::from_xyzw(1.0, 0.0, 0.0, 0.0),
+            DQuat::from_xyzw(0.0, 1.0, 0.0, 0.0),
+            DQuat::from_xyzw(0.0, 0.0, 1.0, 0.0),
+        ] {
+            let moved = |s: f64| {
+                let mut y = x.clone();
+                y[j] = (x[j] + x[j] * e * s).normalize();
+                chain_energy(&y, &t, alpha, beta)
+            };
+            let ((a_plus, b_plus), (a_minus, b_minus)) = (moved(s), moved(-s));
+            let (da, db) = ((a_plus - a_minus) / (2.0 * s), (b_plus - b_minus) / (2.0 * s));
+            worst = worst.max((da + db).abs());
+            scale = scale.max(da.abs() + db.abs());
+        }
+    }
+    assert!(scale > 0.1, "the terms' derivatives: {scale}");
+    assert!(worst < 1e-7 * scale, "not stationary: a derivative {worst:e} against {scale:e}");
+}
