@@ -15,7 +15,7 @@ WASM_FEATURES := --enable-bulk-memory --enable-nontrapping-float-to-int --enable
                  --enable-mutable-globals --enable-reference-types --enable-multivalue --enable-simd
 RELEASE := target/$(TARGET)/release
 
-.PHONY: fixtures help setup setup-rust setup-node setup-browser pkg www single demo serve test lint publish-check \
+.PHONY: mutants fixtures help setup setup-rust setup-node setup-browser pkg www single demo serve test lint publish-check \
         test-native test-wasm-node test-wasm-portable test-wasm-browser test-package test-page bench clean
 
 help:
@@ -25,6 +25,7 @@ help:
 	@echo "make www    build the page's module into www/pkg/"
 	@echo "make single each page as one self-contained HTML file in dist/single/ (works from file://)"
 	@echo "make bench  run the benchmarks"
+	@echo "make mutants   mutation testing of the core crate (long; MUTANTS_ARGS=\"-f FILE\" for one file)"
 	@echo "make fixtures  recompute the reference means from SciPy (tests/fixtures)"
 
 setup: setup-rust setup-node setup-browser
@@ -103,7 +104,7 @@ www/pkg/first/.built: www/pkg/.built www/first-pictures.json scripts/first-pictu
 
 # The pages' modules, one a page (the pages are listed in www/pages.js): a build of
 # crates/kli-demo with the page's feature `<page>-page`, bound to www/pkg/<page>_demo.js. One
-# target directory serves all three (cargo keeps each feature set's artifacts); each build is
+# target directory serves every page (cargo keeps each feature set's artifacts); each build is
 # bound right after it, before the next overwrites the .wasm.
 www/pkg/.built: $(WWW_SOURCES) pkg/.built
 	@test -n "$(PAGES)" || { echo "no pages: node scripts/pages.mjs names printed nothing"; exit 1; }
@@ -139,7 +140,7 @@ www/examples/vendor/.built: pkg/.built node_modules/.installed
 	@touch $@
 
 # Each page as one self-contained HTML file (scripts, style sheet and .wasm inlined) that works
-# opened from file:// with no server and no network: dist/single/{index,swarm,keyframes}.html.
+# opened from file:// with no server and no network: dist/single/<page>.html for every page.
 single: www
 	node scripts/single.mjs
 
@@ -203,6 +204,15 @@ bench: pkg www setup-browser
 	node bench/video.mjs
 	node bench/lighthouse.mjs
 	node bench/targets.mjs
+
+# Mutation testing of the core crate (cargo-mutants; not in `make test`: some 2,200 mutants at
+# about 10 s each here). MUTANTS_ARGS passes its flags: `-f src/average/median.rs` for a file,
+# `--in-diff change.diff` for a change (`git diff main > change.diff`), `--shard 3/8` for a share.
+# Results in mutants.out/; docs/testing.md keeps the survivors and why each cannot change a result.
+MUTANTS_ARGS ?=
+mutants: setup-rust
+	@command -v cargo-mutants >/dev/null || cargo install cargo-mutants --version '^27'
+	cargo mutants -p kli-rotations $(MUTANTS_ARGS)
 
 # The reference means tests/js/average.test.mjs checks against, from SciPy (once, committed).
 fixtures:

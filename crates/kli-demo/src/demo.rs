@@ -143,7 +143,7 @@ impl Demo {
 
 crate::clock::clocked!(Demo);
 
-crate::figure_class!(Demo, "KliSummary");
+crate::figure::figure_class!(Demo, "KliSummary");
 
 /// The KLI page's views: Fig. 2 live (the object), Fig. 1 (the Hopf curves), the filmstrip of
 /// Fig. 2, and the plots; its time, the flow's from 0 to T; its data, the path.

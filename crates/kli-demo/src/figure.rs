@@ -1,8 +1,8 @@
-//! The one run contract: every page class ([`crate::Demo`], [`crate::SwarmDemo`],
-//! [`crate::KeyframesDemo`]) is a [`Figure`]. It says what it shows (its [`View`]s, each with a
+//! The one run contract: every page class (one a page: the pages are listed once, in
+//! `www/pages.js`) is a [`Figure`]. It says what it shows (its [`View`]s, each with a
 //! name, a title and a [`Motion`]), owns its time (its span, the time on show, `seek` and
 //! `advance` with its own bound on work), sums itself up in named fields, and paints any view
-//! with any [`Pen`] at a [`Frame`]. [`figure_class!`](crate::figure_class) gives each class the
+//! with any [`Pen`] at a [`Frame`]. [`figure_class!`] gives each class the
 //! same JavaScript members from it: `views`, `span`, `time`, `seek(t)`, `advance(seconds)`,
 //! `summary`, `draw(view, ctx, frame, layer?)`, `toSvg(view, frame)` and `export(kind, format)`.
 //! The pages, `<kli-figure>` and the video recorder all drive a run through these alone
@@ -46,7 +46,7 @@ impl Frame {
                 .and_then(|v| v.as_f64())
                 .filter(|v| v.is_finite())
         };
-        let [azimuth, elevation] = crate::default_angles();
+        let [azimuth, elevation] = crate::sphere_view::default_angles();
         Frame {
             width: size(field(0).unwrap_or(1.0)),
             height: size(field(1).unwrap_or(1.0)),
@@ -196,7 +196,7 @@ impl Record {
     }
 }
 
-/// `views`, for [`figure_class!`](crate::figure_class): `[{ name, title, kind }]`.
+/// `views`, for [`figure_class!`]: `[{ name, title, kind }]`.
 pub(crate) fn views<F: Figure>() -> JsValue {
     F::VIEWS
         .iter()
@@ -211,7 +211,7 @@ pub(crate) fn views<F: Figure>() -> JsValue {
         .into()
 }
 
-/// `span`, for [`figure_class!`](crate::figure_class): `[start, end]`.
+/// `span`, for [`figure_class!`]: `[start, end]`.
 pub(crate) fn span<F: Figure>(figure: &F) -> Vec<f64> {
     let (start, end) = figure.span();
     vec![start, end]
@@ -229,7 +229,7 @@ pub(crate) const fn names<const N: usize>(views: &[View]) -> [&'static str; N] {
     names
 }
 
-/// `draw(view, ctx, frame, layer?)`, for [`figure_class!`](crate::figure_class).
+/// `draw(view, ctx, frame, layer?)`, for [`figure_class!`].
 pub(crate) fn draw<F: Figure>(
     figure: &F,
     view: &str,
@@ -249,7 +249,7 @@ pub(crate) fn draw<F: Figure>(
     Ok(())
 }
 
-/// `toSvg(view, frame)`, for [`figure_class!`](crate::figure_class).
+/// `toSvg(view, frame)`, for [`figure_class!`].
 pub(crate) fn to_svg<F: Figure>(figure: &F, view: &str, frame: &JsValue) -> JsResult<String> {
     let view = F::view(view)?;
     let frame = Frame::read(frame);
@@ -260,7 +260,7 @@ pub(crate) fn to_svg<F: Figure>(figure: &F, view: &str, frame: &JsValue) -> JsRe
     Ok(svg_document(frame.width, frame.height, F::VIEWS[view].title, &paint))
 }
 
-/// `export(kind, format)`, for [`figure_class!`](crate::figure_class).
+/// `export(kind, format)`, for [`figure_class!`].
 pub(crate) fn export<F: Figure>(figure: &F, kind: &str, format: &str) -> JsResult<String> {
     if kind != F::EXPORT {
         let allowed = std::slice::from_ref(&F::EXPORT);
@@ -286,7 +286,6 @@ pub(crate) fn finite(t: f64) -> f64 {
 
 /// The JavaScript members every page class has, written once: the run contract (module docs).
 /// `$summary` is the TypeScript type of the class's `summary`.
-#[macro_export]
 macro_rules! figure_class {
     ($class:ident, $summary:literal) => {
         #[wasm_bindgen::prelude::wasm_bindgen]
@@ -361,6 +360,7 @@ macro_rules! figure_class {
         }
     };
 }
+pub(crate) use figure_class;
 
 #[wasm_bindgen(typescript_custom_section)]
 const TYPES: &'static str = r#"

@@ -54,10 +54,5 @@ use wasm_bindgen::prelude::*;
 /// curve in front.
 #[wasm_bindgen(js_name = defaultCamera)]
 pub fn default_camera() -> Vec<f64> {
-    default_angles().to_vec()
-}
-
-fn default_angles() -> [f64; 2] {
-    let d = sphere_view::sphere_camera().toward_viewer();
-    [d.y.atan2(d.x), d.z.asin()]
+    sphere_view::default_angles().to_vec()
 }

@@ -203,3 +203,10 @@ pub fn draw_sphere_cursor(pen: &Pen, viewport: &Viewport, camera: &Camera, scene
         "left",
     );
 }
+
+/// The sphere views' default camera, `[azimuth, elevation]` in radians (see
+/// [`crate::default_camera`]).
+pub fn default_angles() -> [f64; 2] {
+    let d = sphere_camera().toward_viewer();
+    [d.y.atan2(d.x), d.z.asin()]
+}

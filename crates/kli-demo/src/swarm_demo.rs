@@ -114,7 +114,7 @@ impl SwarmDemo {
     }
 }
 
-crate::figure_class!(SwarmDemo, "SwarmSummary");
+crate::figure::figure_class!(SwarmDemo, "SwarmSummary");
 
 /// The swarm's time: the model's, with no end.
 impl Timed for SwarmDemo {

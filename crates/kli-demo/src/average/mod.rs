@@ -272,7 +272,7 @@ impl AverageDemo {
 
 crate::clock::clocked!(AverageDemo);
 
-crate::figure_class!(AverageDemo, "AverageSummary");
+crate::figure::figure_class!(AverageDemo, "AverageSummary");
 
 /// The averaging page's views: the measurements and the means on the Hopf sphere with the
 /// follower's flow, the follower beside the truth, and the means' errors; its time, the flow's;

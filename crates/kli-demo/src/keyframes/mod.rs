@@ -174,7 +174,7 @@ impl KeyframesDemo {
 
 crate::clock::clocked!(KeyframesDemo);
 
-crate::figure_class!(KeyframesDemo, "KeyframesSummary");
+crate::figure::figure_class!(KeyframesDemo, "KeyframesSummary");
 
 /// The keyframes page's views: the object under each curve, the three Hopf curves through the
 /// keys, and |ω|, |ω̇| plotted; its time, the keys' span; its data, the three curves sampled.
