@@ -301,6 +301,9 @@ fn the_median_on_a_line_follows_vardi_and_zhang() {
         (vec![-0.2, 0.0, 0.3, 0.5], vec![0.2, 1.0, 1.0, 1.5], 1),
         (vec![-0.4, 0.0, 0.25], vec![0.5, 2.0, 1.0], 1),
         (vec![-0.3, 0.1, 0.2, 0.6], vec![1.0, 1.0, 1.0, 1.0], 0),
+        // 4. The datum at 0 holds the rest by a hair (1 against 0.99): Weiszfeld creeps to it and
+        //    runs out of its 1000 steps first.
+        (vec![-0.2, 0.0, 0.3], vec![0.01, 1.0, 1.0], 2),
     ] {
         let w = weights_of(&w);
         let data =

@@ -1,0 +1,161 @@
+// @ts-check
+// The averaging page: a descriptor for the page runtime (runtime.js), dragging a measurement on
+// the sphere, the means' table and the outlier sweep. The measurements, the means, the flow and
+// all drawing are the module's (crates/kli-demo/src/average/).
+import * as average from "../pkg/average_demo.js";
+import { AverageDemo } from "../pkg/average_demo.js";
+import { $ } from "../runtime/dom.js";
+import { timeTag } from "../runtime/exports.js";
+import { page as registered } from "../pages.js";
+import { Page } from "../runtime/runtime.js";
+import { AVERAGE } from "./state.js";
+
+/** @typedef {{ count: number, noise: number, outliers: number, seed: number, moved: number[][] }} AverageState */
+
+/** The shares the sweep visits. */
+const SHARES = Array.from({ length: 11 }, (_, i) => i / 20);
+/** The sweep's points so far (4 errors a share, radians), and the share on show (marked on it). */
+const sweep = { shares: /** @type {number[]} */ ([]), errors: /** @type {number[]} */ ([]), share: 0.2, timer: 0 };
+const sweepPoints = () => /** @type {const} */ ([new Float64Array(sweep.shares), new Float64Array(sweep.errors), sweep.share]);
+/** The views' names in file names. */
+const FILE_NAMES = /** @type {Record<string, string>} */ ({ hopf: "hopf", objects: "objects", means: "means", sweep: "outlier-sweep" });
+const degrees = (/** @type {number} */ radians) => (radians * 180) / Math.PI;
+
+/** @type {Page<AverageState, AverageDemo>} */
+const page = new Page({
+  entry: registered("average"),
+  module: average,
+  own: {
+    sweep: {
+      draw: (ctx, frame) => AverageDemo.drawSweep(ctx, frame, ...sweepPoints()),
+      svg: (frame) => AverageDemo.sweepSvg(frame, ...sweepPoints()),
+    },
+  },
+  form: "#average-inputs",
+  schema: AVERAGE.schema,
+  presets: AVERAGE.presets,
+  defaults: AVERAGE.defaults,
+  create: (state) => AVERAGE.create(average, state),
+  keyOf: AVERAGE.keyOf,
+  readout: (run, t) => {
+    const chordal = run.summary.means[0];
+    return `t = ${t.toFixed(2)} / ${run.span[1].toFixed(2)}   the chordal mean: ${chordal.errorDegrees.toFixed(2)}° from the truth`;
+  },
+  note: (run) => {
+    const { count, wild, marked, means } = run.summary;
+    const median = means[3];
+    return `${count} measurements, ${wild} wild; the median weighs ${marked} of them least and lies ${median.errorDegrees.toFixed(2)}° from the truth.`;
+  },
+  data: { file: (run) => `kli-average-${run.summary.count}-measurements` },
+  file: (run, view, t) => `kli-average-${FILE_NAMES[view]}-${run.summary.count}${view === "hopf" || view === "objects" ? `-${timeTag(t)}` : ""}`,
+  video: {
+    views: ["hopf", "objects"],
+    title: (run) => `The follower settles on the mean of ${run.summary.count} measured rotations`,
+    file: (run) => `kli-average-${run.summary.count}-measurements`,
+  },
+  shown: (host, run, state) => {
+    sweep.share = state.outliers;
+    showValues(host);
+    fillMeans(run);
+    $("#unmove", HTMLButtonElement).disabled = state.moved.length === 0;
+    host.redraw(["sweep"]);
+  },
+  input: (host) => {
+    showValues(host);
+    return false;
+  },
+  wire: (host) => {
+    $("#reseed", HTMLButtonElement).addEventListener("click", () => {
+      host.apply({ ...host.state, seed: (host.state.seed + 1) % 1e9, moved: [] });
+    });
+    $("#unmove", HTMLButtonElement).addEventListener("click", () => host.apply({ ...host.state, moved: [] }));
+    $("#sweep", HTMLButtonElement).addEventListener("click", () => runSweep(host));
+  },
+  grab: grabMeasurement,
+});
+
+/** @typedef {import("../runtime/runtime.js").Host<AverageState, AverageDemo>} Host */
+
+/** The sliders' values beside them. */
+function showValues(/** @type {Host} */ host) {
+  for (const name of ["count", "noise", "outliers"]) $(`#${name}-value`, HTMLOutputElement).textContent = host.field(name).value;
+}
+
+/** The means' table: each mean's angle to the truth, its dispersion and its iterations. */
+function fillMeans(/** @type {AverageDemo} */ run) {
+  const body = $("#means tbody", HTMLTableSectionElement);
+  body.replaceChildren();
+  for (const mean of run.summary.means) {
+    const row = body.insertRow();
+    for (const text of [mean.name, mean.errorDegrees.toFixed(2), mean.dispersionDegrees.toFixed(2), String(mean.iterations)]) {
+      row.insertCell().textContent = text;
+    }
+  }
+}
+
+/**
+ * A measurement's dot under the pointer (the nearest in front within 12 px) is grabbed: moving
+ * the pointer then turns it so that its Hopf point follows (once a frame), and it counts as wild.
+ * @param {Host} host
+ * @param {number} x
+ * @param {number} y
+ */
+function grabMeasurement(host, x, y) {
+  const run = host.run;
+  const frame = host.frame("hopf");
+  if (!run || !frame) return null;
+  const points = run.measurementPoints(frame);
+  let index = -1;
+  let nearest = 12;
+  for (let i = 0; i < points.length / 3; i++) {
+    const distance = Math.hypot(points[3 * i] - x, points[3 * i + 1] - y);
+    if (points[3 * i + 2] === 1 && distance < nearest) [index, nearest] = [i, distance];
+  }
+  if (index < 0) return null;
+  let pending = false;
+  let to = { x, y };
+  return (/** @type {number} */ x, /** @type {number} */ y) => {
+    to = { x, y };
+    if (pending) return;
+    pending = true;
+    requestAnimationFrame(() => {
+      pending = false;
+      const run = host.run;
+      const frame = host.frame("hopf");
+      if (!run || !frame) return;
+      const entry = run.movedTo(index, frame, to.x, to.y);
+      if (!entry.length) return;
+      const moved = host.state.moved.filter((m) => m[0] !== index);
+      host.apply({ ...host.state, moved: [...moved, Array.from(entry, (c) => Number(c.toPrecision(8)))] });
+    });
+  };
+}
+
+/** One share of the sweep per task, so the page stays responsive. */
+function runSweep(/** @type {Host} */ host) {
+  clearTimeout(sweep.timer);
+  sweep.shares = [];
+  sweep.errors = [];
+  const table = $("#sweep-table tbody", HTMLTableSectionElement);
+  const status = $("#sweep-status", HTMLOutputElement);
+  table.replaceChildren();
+  const { count, noise, seed } = host.state;
+  const next = (/** @type {number} */ i) => {
+    if (i === SHARES.length) {
+      status.textContent = `Done: ${SHARES.length} shares, 15 sets each.`;
+      return;
+    }
+    const errors = AverageDemo.sweepPoint({ count, noise, seed }, SHARES[i]);
+    sweep.shares.push(SHARES[i]);
+    sweep.errors.push(...errors);
+    const row = table.insertRow();
+    row.insertCell().textContent = String(SHARES[i]);
+    for (const e of errors) row.insertCell().textContent = Number.isFinite(e) ? degrees(e).toFixed(2) : "—";
+    status.textContent = `Sweeping: ${i + 1} of ${SHARES.length}`;
+    host.redraw(["sweep"]);
+    sweep.timer = setTimeout(() => next(i + 1));
+  };
+  next(0);
+}
+
+page.start();

@@ -1,0 +1,111 @@
+// @ts-check
+// The swarm page: a descriptor for the page runtime (runtime.js), and the K sweep. The model, its
+// checks and all drawing are the module's (crates/kli-demo/src/swarm_demo.rs).
+import * as swarm from "../pkg/swarm_demo.js";
+import { SwarmDemo } from "../pkg/swarm_demo.js";
+import { $ } from "../runtime/dom.js";
+import { timeTag } from "../runtime/exports.js";
+import { page as registered } from "../pages.js";
+import { Page } from "../runtime/runtime.js";
+import { SWARM } from "./state.js";
+
+/** @typedef {import("./state.js").SwarmState} SwarmState */
+
+/** How far the Step button moves the swarm on (model time). */
+const STEP = 0.2;
+const SWEEP = Array.from({ length: 19 }, (_, i) => -1 + i / 2);
+/** The sweep's points so far, and the coupling on show (marked on it). */
+const sweep = { couplings: /** @type {number[]} */ ([]), orders: /** @type {number[]} */ ([]), coupling: 1, timer: 0 };
+/** The sweep's points, for the module's drawing. */
+const sweepPoints = () => /** @type {const} */ ([new Float64Array(sweep.couplings), new Float64Array(sweep.orders), sweep.coupling]);
+/** The views' names in file names. */
+const FILE_NAMES = /** @type {Record<string, string>} */ ({ hopf: "hopf", objects: "objects", plots: "order-plots", sweep: "coupling-sweep" });
+
+/** @type {Page<SwarmState, SwarmDemo>} */
+const page = new Page({
+  entry: registered("swarm"),
+  module: swarm,
+  own: {
+    sweep: {
+      draw: (ctx, frame) => SwarmDemo.drawSweep(ctx, frame, ...sweepPoints()),
+      svg: (frame) => SwarmDemo.sweepSvg(frame, ...sweepPoints()),
+    },
+  },
+  form: "#swarm-inputs",
+  schema: SWARM.schema,
+  presets: SWARM.presets,
+  defaults: SWARM.defaults,
+  create: (state) => SWARM.create(swarm, state),
+  keyOf: SWARM.keyOf,
+  readout: (run, t) => {
+    const s = run.summary;
+    return `t = ${t.toFixed(2)}   R = ${s.orderParameter.toFixed(3)}   λmax = ${s.rotationOrder.toFixed(3)}` +
+      (s.kli ? `   τ = Kt/2 = ${s.kliTime.toFixed(2)}` : "");
+  },
+  note: (run) => (run.summary.kli
+    ? "One pinned leader and one follower: the follower obeys q′ = (K/2)(r − (q·r) q), the KLI flow at the clock τ = Kt/2."
+    : ""),
+  data: { file: (run, t) => `kli-swarm-${run.summary.count}-oscillators-${timeTag(t)}` },
+  file: (_, view, t) => `kli-swarm-${FILE_NAMES[view]}${view === "sweep" ? "" : `-${timeTag(t)}`}`,
+  video: {
+    views: ["hopf", "objects"],
+    title: (run) => `A Lohe swarm of ${run.summary.count} oscillators on S³, through the Hopf map`,
+    file: (run) => `kli-swarm-${run.summary.count}-oscillators`,
+  },
+  shown: (host, _, state) => {
+    sweep.coupling = state.coupling;
+    showValues(host);
+    host.redraw(["sweep"]); // its marker follows K; otherwise it changes only while a sweep runs
+  },
+  input: (host, name) => {
+    showValues(host);
+    if (name === "uniform") host.rebuild(host.read());
+    return name === "uniform";
+  },
+  wire: (host) => {
+    $("#step", HTMLButtonElement).addEventListener("click", () => host.seek(host.t + STEP));
+    $("#reseed", HTMLButtonElement).addEventListener("click", () => {
+      host.field("seed").value = String((host.state.seed + 1) % 1e9);
+      host.rebuild(host.read());
+    });
+    $("#sweep", HTMLButtonElement).addEventListener("click", () => runSweep(host));
+  },
+});
+
+/** @typedef {import("../runtime/runtime.js").Host<SwarmState, SwarmDemo>} Host */
+
+/** The sliders' values beside them. */
+function showValues(/** @type {Host} */ host) {
+  for (const name of ["coupling", "count", "frequencySpread", "startSpread"]) {
+    $(`#${name}-value`, HTMLOutputElement).textContent = host.field(name).value;
+  }
+  host.field("startSpread").disabled = /** @type {HTMLInputElement} */ (host.field("uniform")).checked;
+}
+
+/** One sweep point per task, so the page stays responsive. */
+function runSweep(/** @type {Host} */ host) {
+  clearTimeout(sweep.timer);
+  sweep.couplings = [];
+  sweep.orders = [];
+  const table = $("#sweep-table tbody", HTMLTableSectionElement);
+  const status = $("#sweep-status", HTMLOutputElement);
+  table.replaceChildren();
+  const options = { ...host.state, count: Math.min(host.state.count, 200) };
+  const next = (/** @type {number} */ i) => {
+    if (i === SWEEP.length) {
+      status.textContent = `Done: R at t = 30 for ${SWEEP.length} couplings.`;
+      return;
+    }
+    sweep.couplings.push(SWEEP[i]);
+    sweep.orders.push(SwarmDemo.sweepOrder(options, SWEEP[i], 30));
+    const row = table.insertRow();
+    row.insertCell().textContent = String(Number(SWEEP[i].toFixed(4)));
+    row.insertCell().textContent = sweep.orders[i].toFixed(3);
+    status.textContent = `Sweeping: ${i + 1} of ${SWEEP.length}`;
+    host.redraw(["sweep"]);
+    sweep.timer = setTimeout(() => next(i + 1));
+  };
+  next(0);
+}
+
+page.start();
