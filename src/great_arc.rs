@@ -192,4 +192,22 @@ mod tests {
         // Tangent at r towards p: -j, tilted by e towards 1.
         assert!((a.tangent() - from_wxyz([e, 0.0, -1.0, 0.0])).length() < 1e-15);
     }
+
+    /// `‖target − p‖ = 2 sin(φ0/2)`, from the chord of each angle; and at `p·r = 0` exactly the
+    /// target stays `r` (the rule flips only for `p·r < 0`).
+    #[test]
+    fn start_distance_is_the_chord_and_a_right_angle_keeps_r() {
+        for phi in [1e-9_f64, 0.3, 1.0, 2.0, 3.1] {
+            let (p, r) = ([1.0, 0.0, 0.0, 0.0], [phi.cos(), 0.0, phi.sin(), 0.0]);
+            let a = arc(p, r, false);
+            assert!((a.start_distance() - 2.0 * (phi / 2.0).sin()).abs() < 1e-15, "φ0 = {phi}");
+        }
+        let (p, r) = (from_wxyz([1.0, 0.0, 0.0, 0.0]), from_wxyz([0.0, 1.0, 0.0, 0.0]));
+        assert_eq!(choose_target(p, r, true), r);
+        assert_eq!(choose_target(p, -r, true), -r);
+        assert_eq!(
+            choose_target(p, from_wxyz([-0.1, 1.0, 0.0, 0.0]), true),
+            from_wxyz([0.1, -1.0, 0.0, 0.0])
+        );
+    }
 }
