@@ -98,11 +98,11 @@ www: setup-rust setup-node pkg www/pkg/.built www/pkg/first/.built www/vendor/co
 # Each page's first picture, drawn by its module in Node at the size of each canvas in each
 # layout (www/first-pictures.json; `node scripts/first-pictures.mjs --measure` after a change of
 # the pages' layout), shown by the HTML before any script runs.
-www/pkg/first/.built: www/pkg/.built www/first-pictures.json scripts/first-pictures.mjs www/states.js www/presets.js www/pages.js $(wildcard www/*.html)
+www/pkg/first/.built: www/pkg/.built www/first-pictures.json scripts/first-pictures.mjs www/pages.js $(wildcard www/*/state.js) $(wildcard www/*.html)
 	node scripts/first-pictures.mjs
 	@touch $@
 
-# The pages' modules, one a page (the pages are listed in www/pages.js): a build of
+# The pages' modules, one a page (the pages are listed in www/pages.js, the registry): a build of
 # crates/kli-demo with the page's feature `<page>-page`, bound to www/pkg/<page>_demo.js. One
 # target directory serves every page (cargo keeps each feature set's artifacts); each build is
 # bound right after it, before the next overwrites the .wasm.
@@ -118,10 +118,10 @@ www/pkg/.built: $(WWW_SOURCES) pkg/.built
 	done
 	@touch $@
 
-# Saving a video (www/video/): mediabunny and gifenc, tree-shaken into one module, loaded only
+# Saving a video (www/runtime/video/): mediabunny and gifenc, tree-shaken into one module, loaded only
 # when a video is saved.
-www/vendor/codecs.js: www/video/codecs.js node_modules/.installed
-	esbuild www/video/codecs.js --bundle --format=esm --minify --log-level=warning '--banner:js=// @ts-nocheck' \
+www/vendor/codecs.js: www/runtime/video/codecs.js node_modules/.installed
+	esbuild www/runtime/video/codecs.js --bundle --format=esm --minify --log-level=warning '--banner:js=// @ts-nocheck' \
 	  --outfile=$@
 
 # What the examples import by name through their import map, served locally: the package's

@@ -10,7 +10,6 @@
 //                                              www/first-pictures.json (after a change of style.css)
 import { mkdirSync, readFileSync, writeFileSync } from "node:fs";
 import { PAGES } from "../www/pages.js";
-import { STATES } from "../www/states.js";
 
 const at = (path) => new URL(`../${path}`, import.meta.url);
 /** The layouts a page has a picture for: a wide screen (two columns of views, the widths fixed by
@@ -80,8 +79,8 @@ async function draw() {
   for (const page of PAGES) {
     const module = await import(at(`www/pkg/${page.name}_demo.js`).href);
     module.initSync({ module: readFileSync(at(`www/pkg/${page.name}_demo_bg.wasm`)) });
-    const state = STATES[/** @type {keyof typeof STATES} */ (page.name)];
-    const run = state.create(module, /** @type {any} */ (state.defaults));
+    const state = page.state;
+    const run = state.create(module, state.defaults);
     const [azimuth, elevation] = module.defaultCamera();
     const html = readFileSync(at(`www/${page.html}`), "utf8");
     for (const [view, id] of drawn(page, run)) {

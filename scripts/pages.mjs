@@ -1,18 +1,47 @@
-// What follows from the page list (www/pages.js):
+// What follows from the pages' registry (www/pages.js):
 //   node scripts/pages.mjs names   the pages' names, for the Makefile
-//   node scripts/pages.mjs write   each page's bundle (its script and every module it imports,
+//   node scripts/pages.mjs write   in each page's HTML: the pages' navigation, its Save list and its
+//                                  script tag pointing at its bundle; each page's bundle (its
+//                                  descriptor, www/<name>/page.js, and every module it imports,
 //                                  minified: one request beside the .wasm module's glue instead of
-//                                  a dozen) into www/pkg/<name>-page.js, the
-//                                  page's script tag pointing at it, and www/pkg/build.js, the
+//                                  a dozen) into www/pkg/<name>-page.js; and www/pkg/build.js, the
 //                                  service worker's file list and cache name (a hash of those files)
-//   node scripts/pages.mjs check   exits 1 when a page's script tag is not its bundle
+//   node scripts/pages.mjs check   exits 1 when a page's HTML is not what `write` makes of it
 import { createHash } from "node:crypto";
 import { existsSync, readFileSync, writeFileSync } from "node:fs";
 import { join, relative, resolve } from "node:path";
-import { PAGES, bundle } from "../www/pages.js";
+import { MORE_LINKS, PAGES, bundle, script } from "../www/pages.js";
 
 const www = new URL("../www/", import.meta.url).pathname;
 const SCRIPT = /<script type="module" src="[^"]*"><\/script>/;
+
+const NAV = /<nav aria-label="Pages">.*<\/nav>/;
+const SAVE_LIST = /(<section id="save"[^]*?<ul>\n)[^]*?(    <\/ul>)/;
+
+/** The pages' navigation as `page` shows it: every page of the registry, then the examples. */
+function navigation(page) {
+  const links = PAGES.map((other) =>
+    `<a href="${other.html}"${other === page ? ' aria-current="page"' : ""}>${other.title}</a>`);
+  links.push(...MORE_LINKS.map((link) => `<a href="${link.href}">${link.title}</a>`));
+  return `<nav aria-label="Pages">${links.join(" · ")}</nav>`;
+}
+
+/** The page's Save list: each view as PNG and SVG, its data as CSV and JSON (the registry's `save`). */
+function saveList(page) {
+  return Object.entries(page.save).map(([what, [label, noun]]) => {
+    const formats = Object.hasOwn(page.canvases, what) ? ["png", "svg"] : ["csv", "json"];
+    const [first, second] = formats.map((format) =>
+      `<button type="button" data-save="${what}" data-format="${format}" aria-label="${noun} as ${format.toUpperCase()}">${format.toUpperCase()}</button>`);
+    return `      <li>${label} ${first}\n        ${second}</li>\n`;
+  }).join("");
+}
+
+/** The page's HTML with the registry's navigation and Save list. */
+function withRegistry(html, page) {
+  if (!NAV.test(html)) throw new Error(`${page.html}: no <nav aria-label="Pages"> on one line to fill`);
+  if (!SAVE_LIST.test(html)) throw new Error(`${page.html}: no <section id="save"> with a <ul> to fill`);
+  return html.replace(NAV, navigation(page)).replace(SAVE_LIST, (_, start, end) => start + saveList(page) + end);
+}
 
 /** The page's HTML loading its bundle, and its .wasm from the start (the bundle asks for it
  *  only once it runs). */
@@ -68,19 +97,19 @@ if (command === "names") {
   for (const page of PAGES) {
     const path = join(www, page.html);
     const html = readFileSync(path, "utf8");
-    const wanted = withBundle(html, page);
+    const wanted = withBundle(withRegistry(html, page), page);
     if (wanted === html) continue;
     if (command === "write") writeFileSync(path, wanted);
     stale.push(page.html);
   }
   if (command === "check") {
     if (stale.length) {
-      console.error(`not loading their bundle: ${stale.join(", ")}: run node scripts/pages.mjs write`);
+      console.error(`not as the registry makes them (navigation, Save list, bundle): ${stale.join(", ")}: run node scripts/pages.mjs write`);
       process.exit(1);
     }
   } else {
     await Promise.all(PAGES.map((page) => build({
-      entryPoints: [join(www, page.script)],
+      entryPoints: [join(www, script(page))],
       bundle: true,
       format: "esm",
       minify: true,
@@ -100,7 +129,7 @@ self.KLI_BUILD = ${JSON.stringify({ cache: `kli-${hash.digest("hex").slice(0, 12
 `;
     const out = join(www, "pkg/build.js");
     if (!existsSync(out) || readFileSync(out, "utf8") !== build_) writeFileSync(out, build_);
-    if (stale.length) console.log(`script tags pointed at the bundles in ${stale.join(", ")}`);
+    if (stale.length) console.log(`navigation, Save lists and script tags written from the registry in ${stale.join(", ")}`);
   }
 } else {
   console.error("usage: node scripts/pages.mjs names | write | check");

@@ -6,7 +6,7 @@ import { readFileSync, writeFileSync } from "node:fs";
 const at = (path) => new URL(`../${path}`, import.meta.url);
 const kli = await import(at("www/pkg/kli_demo.js").href);
 kli.initSync({ module: readFileSync(at("www/pkg/kli_demo_bg.wasm")) });
-const run = new kli.Demo([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]);
+const run = new kli.KliDemo([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]);
 const [azimuth, elevation] = kli.defaultCamera();
 for (const [view, width, height] of [["object", 480, 300], ["hopf", 400, 300]]) {
   const svg = run.toSvg(view, { width, height, t: 1.8, azimuth, elevation });

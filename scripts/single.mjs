@@ -6,7 +6,7 @@
 import { build } from "esbuild";
 import { mkdir, readFile, writeFile } from "node:fs/promises";
 import { join } from "node:path";
-import { PAGES, bundle as bundleOf } from "../www/pages.js";
+import { PAGES, bundle as bundleOf, script as scriptOf } from "../www/pages.js";
 
 const root = new URL("../", import.meta.url).pathname;
 const www = join(root, "www");
@@ -32,8 +32,18 @@ const inlineWasm = {
   },
 };
 
+/** A page's own module is inside it; the registry's loaders of the other pages' modules (for
+ *  <kli-figure>) stay as they are, never called on the page. */
+const otherPages = {
+  name: "other-pages",
+  setup(build) {
+    build.onResolve({ filter: /\/pkg\/\w+_demo\.js$/ }, (args) => (args.kind === "dynamic-import" ? { path: args.path, external: true } : undefined));
+  },
+};
+
 /** The page's HTML with its style sheet and bundled script inside, and nothing to fetch. */
-async function single({ html: page, script, ...rest }) {
+async function single(entry) {
+  const [page, script] = [entry.html, scriptOf(entry)];
   const bundle = await build({
     entryPoints: [join(www, script)],
     bundle: true,
@@ -41,7 +51,7 @@ async function single({ html: page, script, ...rest }) {
     minify: true,
     write: false,
     loader: { ".wasm": "binary" },
-    plugins: [inlineWasm],
+    plugins: [otherPages, inlineWasm],
     logLevel: "silent",
   });
   const code = bundle.outputFiles[0].text;
@@ -55,7 +65,7 @@ async function single({ html: page, script, ...rest }) {
   };
   replace(/^<link rel="(modulepreload|preload)"[^>]*>\n/gm, "");
   replace('<link rel="stylesheet" href="style.css">', () => `<style>\n${css}</style>`);
-  replace(`<script type="module" src="${bundleOf({ html: page, script, ...rest })}"></script>`, () => `<script type="module">\n${code}</script>`);
+  replace(`<script type="module" src="${bundleOf(entry)}"></script>`, () => `<script type="module">\n${code}</script>`);
   // The examples need the site's import map and vendored files: not part of the one-file pages.
   replace(/ · <a href="examples\/three\.html">With three\.js<\/a>/, "");
   // The first pictures (scripts/first-pictures.mjs) inside, as data: addresses.
@@ -74,7 +84,7 @@ for (const page of PAGES) {
   console.log(`dist/single/${page.html}: ${bytes} bytes`);
 }
 
-// <kli-figure> as one classic script with all three modules inside: `<script src="kli-figure.js">`
+// <kli-figure> as one classic script with every page's module inside: `<script src="kli-figure.js">`
 // works in documentation sites and slide decks, and from file:// (where module scripts do not).
 const element = await build({
   entryPoints: [join(www, "kli-figure.js")],

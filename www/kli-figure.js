@@ -4,56 +4,41 @@
 //   <script type="module" src="kli-figure.js"></script>
 //   <kli-figure view="hopf" p="0,0,0,1" r="0.5,0.5,0.5,0.5" autoplay></kli-figure>
 //
-// Views: "object", "hopf", "plots", "filmstrip" (KLI from p to r), "keyframes" (the three curves
-// through `keys`), "swarm" (a LoheSwarm's Hopf points). Each page module is loaded once, when the
+// Views: each page's in the registry (pages.js: "object", "hopf", "plots", "filmstrip" of the KLI
+// page, "keyframes", "swarm", "average"). Each page module is loaded once, when the
 // first figure that needs it appears, and shared by every figure on the page. Every attribute is
 // live: change one and the figure is rebuilt. Computing, checking and drawing are the modules'.
 
-import { Camera } from "./camera.js";
-import { Figures } from "./figures.js";
-import { parseNumber } from "./numbers.js";
-import { Player } from "./player.js";
-import { outOfRange, parseText } from "./schema.js";
-import { STATES } from "./states.js";
+import { Camera } from "./runtime/camera.js";
+import { Figures } from "./runtime/figures.js";
+import { parseNumber } from "./runtime/numbers.js";
+import { Player } from "./runtime/player.js";
+import { outOfRange, parseText } from "./runtime/schema.js";
 import { PAGES, pageOfView } from "./pages.js";
-import { wirePrinting } from "./print.js";
-import { record } from "./video/panel.js";
+import { wirePrinting } from "./runtime/print.js";
+import { record } from "./runtime/video/panel.js";
 
 const VIEWS = PAGES.flatMap((page) => Object.keys(page.views));
 /** A state key as an attribute: `shortestPath` → `shortest-path`. */
 const attributeName = (/** @type {string} */ key) => key.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`);
-/** The figure's own attributes, then each page state's keys (states.js), read as the pages read
- *  their URL (schema.js). */
+/** The figure's own attributes, then each page's state keys (its state.js), read as the pages
+ *  read their URL (runtime/schema.js). */
 const ATTRIBUTES = ["view", "t", "autoplay", "speed", "label", "text-scale", "print-t",
-  ...new Set(Object.values(STATES).flatMap((state) => state.schema.map((entry) => attributeName(entry.key))))];
-/** What a figure shows when its attributes do not say. */
-const DEFAULTS = {
-  kli: STATES.kli.defaults,
-  keyframes: { keys: [[1, 0, 0, 0], [0.8, 0.6, 0, 0], [0.6, 0, 0.8, 0], [0, 0, 0.6, 0.8]], times: [], smoothness: 1 },
-  swarm: { count: 200, coupling: 1, seed: 1 },
-  average: STATES.average.defaults,
-};
+  ...new Set(PAGES.flatMap((page) => page.state.schema.map((entry) => attributeName(entry.key))))];
 /** The largest `t` and `speed` a figure takes. */
 const MAX_T = 1e6, MAX_SPEED = 1000;
 
-/** Each page's module, loaded when the first figure that needs it appears: one static import
- *  each, so that bundlers (`make single`) find them; one a page of pages.js. */
-const MODULES = {
-  kli: () => import("./pkg/kli_demo.js"),
-  keyframes: () => import("./pkg/keyframes_demo.js"),
-  swarm: () => import("./pkg/swarm_demo.js"),
-  average: () => import("./pkg/average_demo.js"),
-};
-/** @type {Map<string, Promise<any>>} each page module, initialised once for the whole page */
+/** @type {Map<string, Promise<any>>} each page module (the registry's `module`), loaded when the
+ *  first figure that needs it appears and initialised once for the whole page */
 const loaded = new Map();
-function load(/** @type {keyof typeof MODULES} */ name) {
-  let module = loaded.get(name);
+function load(/** @type {import("./pages.js").Page} */ page) {
+  let module = loaded.get(page.name);
   if (!module) {
-    module = MODULES[name]().then(async (m) => {
+    module = page.module().then(async (m) => {
       await m.default();
       return m;
     });
-    loaded.set(name, module);
+    loaded.set(page.name, module);
   }
   return module;
 }
@@ -82,7 +67,7 @@ export class KliFigure extends HTMLElement {
     this.message.setAttribute("role", "status");
     root.append(style, this.canvas, this.message);
     this.root = root;
-    /** @type {any} the module's run: a Demo, KeyframesDemo or SwarmDemo */
+    /** @type {any} the module's run: a KliDemo, KeyframesDemo, SwarmDemo or AverageDemo */
     this.run = null;
     /** The module's name for this figure's view. */
     this.view = "";
@@ -134,7 +119,7 @@ export class KliFigure extends HTMLElement {
     if (!page) return this.fail(`view must be one of ${VIEWS.join(", ")} (got "${this.kind}")`);
     let module;
     try {
-      module = await load(/** @type {keyof typeof MODULES} */ (page.name));
+      module = await load(page);
     } catch (error) {
       return this.fail(`the WebAssembly module could not be loaded: ${error instanceof Error ? error.message : error}`);
     }
@@ -145,7 +130,7 @@ export class KliFigure extends HTMLElement {
     if (!(pace >= 0 && pace <= MAX_SPEED)) return this.fail(`speed must be a number from 0 to ${MAX_SPEED} (got "${speed}")`);
     let run;
     try {
-      run = this.create(module, /** @type {keyof typeof STATES} */ (page.name));
+      run = this.create(module, page);
     } catch (error) {
       return this.fail(error instanceof Error ? error.message : String(error));
     }
@@ -191,19 +176,19 @@ export class KliFigure extends HTMLElement {
 
   /** The module's run for the page `name`, from the attributes over the defaults, read as the
    *  pages read their URL, within the bounds of the pages' fields (its constructor checks the rest). */
-  create(/** @type {any} */ module, /** @type {keyof typeof STATES} */ name) {
+  create(/** @type {any} */ module, /** @type {import("./pages.js").Page} */ page) {
     /** @type {Record<string, any>} */
-    const state = { ...DEFAULTS[name] };
-    for (const { key, kind } of STATES[name].schema) {
+    const state = { ...page.figure };
+    for (const { key, kind } of page.state.schema) {
       const text = this.getAttribute(attributeName(key));
       if (text !== null) state[key] = parseText(kind, text);
     }
-    const [beyond] = outOfRange(STATES[name].schema, state);
+    const [beyond] = outOfRange(page.state.schema, state);
     if (beyond) {
       const { key, min, max, value } = beyond;
       throw new Error(`${attributeName(key)} must be from ${min} to ${max}, as on its page (got ${value})`);
     }
-    return STATES[name].create(module, /** @type {any} */ (state));
+    return page.state.create(module, state);
   }
 
   fail(/** @type {string} */ text) {

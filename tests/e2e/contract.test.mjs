@@ -4,6 +4,7 @@ import { test } from "node:test";
 import assert from "node:assert/strict";
 import { execFileSync } from "node:child_process";
 import { setup, open, root } from "./browser.mjs";
+import { PAGES } from "../../www/pages.js";
 
 setup();
 
@@ -75,7 +76,8 @@ async function swipeUp(cdp, x, y) {
 }
 
 test("touch-action: none only on the canvases that can be dragged, so a swipe elsewhere scrolls", async () => {
-  for (const [url, draggable] of [["index.html", ["hopf-canvas"]], ["keyframes.html", ["keyframes-hopf"]], ["swarm.html", ["swarm-hopf"]], ["average.html", ["average-hopf"]]]) {
+  // On every page the Hopf sphere turns under a finger (and a point on it may be dragged).
+  for (const [url, draggable] of PAGES.map((page) => [page.html, [page.canvases.hopf.slice(1)]])) {
     const { page, context, problems } = await open(url, { viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true });
     try {
       const actions = await page.evaluate(() => Array.from(document.querySelectorAll("canvas"), (c) => [c.id, getComputedStyle(c).touchAction]));
@@ -128,13 +130,15 @@ test("make: nothing to build when nothing changed, so make demo serves at once",
 });
 
 test("every page shows every refused URL value beside its field at once, and runs on valid values", async () => {
-  const cases = [
-    ["index.html?eps=-1&step=0", { tolerance: /tolerance/, step: /step/ }],
-    ["swarm.html?K=abc&n=0", { coupling: /coupling/, count: /count/ }],
-    ["average.html?n=1&noise=abc", { count: /count/, noise: /noise/ }],
-    ["keyframes.html?keys=1,0,0,0;nan,0,0,1;0,1,0,0&s=5", { keys: /keys\[1\]/, smoothness: /smoothness/ }],
-  ];
-  for (const [url, refused] of cases) {
+  /** Each page's refused query, and the message each of its fields shows. */
+  const REFUSED = {
+    kli: ["?eps=-1&step=0", { tolerance: /tolerance/, step: /step/ }],
+    swarm: ["?K=abc&n=0", { coupling: /coupling/, count: /count/ }],
+    average: ["?n=1&noise=abc", { count: /count/, noise: /noise/ }],
+    keyframes: ["?keys=1,0,0,0;nan,0,0,1;0,1,0,0&s=5", { keys: /keys\[1\]/, smoothness: /smoothness/ }],
+  };
+  assert.deepEqual(Object.keys(REFUSED).sort(), PAGES.map((page) => page.name).sort(), "a refused query for every page of the registry");
+  for (const [url, refused] of PAGES.map((page) => [page.html + REFUSED[page.name][0], REFUSED[page.name][1]])) {
     const { page, context, problems } = await open(url, { reducedMotion: "reduce" });
     try {
       const marked = await page.evaluate(() => Array.from(document.querySelectorAll("[aria-invalid=true]"), (f) => f.getAttribute("name")));
@@ -161,8 +165,8 @@ test("two SLERP parameters, two names: SLERP's clock u = t/T in the object view,
   const { page, context, problems } = await open("index.html?t=1.8", { reducedMotion: "reduce" });
   try {
     const svgs = await page.evaluate(async () => {
-      const { Demo } = await import("./pkg/kli_demo.js");
-      const demo = new Demo([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]);
+      const { KliDemo } = await import("./pkg/kli_demo.js");
+      const demo = new KliDemo([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]);
       const frame = { width: 600, height: 300, t: 1.8 };
       const result = { object: demo.toSvg("object", frame), plots: demo.toSvg("plots", frame), csv: demo.export("path", "csv") };
       demo.free();
@@ -212,7 +216,7 @@ test("the figure interface under hostile input: every call draws with defaults o
       await modules.swarm.default();
       await modules.average.default();
       const figures = [
-        [new modules.kli.Demo([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]), ["object", "hopf", "filmstrip", "plots"], "path"],
+        [new modules.kli.KliDemo([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]), ["object", "hopf", "filmstrip", "plots"], "path"],
         [new modules.keyframes.KeyframesDemo(new Float64Array([1, 0, 0, 0, 0.8, 0.6, 0, 0, 0.6, 0, 0.8, 0]), new Float64Array(0), 1), ["objects", "hopf", "plots"], "curves"],
         [new modules.swarm.SwarmDemo({ count: 20 }), ["hopf", "objects", "plots"], "swarm"],
         [new modules.average.AverageDemo({ count: 20 }), ["hopf", "objects", "means"], "measurements"],

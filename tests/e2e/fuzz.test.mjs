@@ -5,14 +5,13 @@
 import { test } from "node:test";
 import assert from "node:assert/strict";
 import { setup, openWithinBudget, longTaskBudget } from "./browser.mjs";
-import { STATES } from "../../www/states.js";
+import { PAGES } from "../../www/pages.js";
 
 setup();
 
 const HOSTILE = ["NaN", "Infinity", "-Infinity", "1e308", "-1e308", "0", "-0", "1e-320", "abc", "", "0x10", "1,2",
   ";;;", "1,0,0,0;", "%00", "<img src=x onerror=window.__pwned=1>", "1".repeat(400), "9".repeat(20), "-1", "2.5",
   "1e9", "0,0,0,0", "1,0,0,0;0,0,0,0", "1,0,0,0;1,0,0,0;1,0,0,0", "0,1,1,2", "5,4,3"];
-const PAGES = { kli: "index.html", keyframes: "keyframes.html", swarm: "swarm.html", average: "average.html" };
 
 function random(seed) {
   let x = seed >>> 0 || 1;
@@ -23,11 +22,11 @@ function random(seed) {
 }
 
 
-for (const [name, html] of Object.entries(PAGES)) {
+for (const { name, html, state } of PAGES) {
   test(`${html}: 10 seeded hostile URLs, each shown or refused by name, nothing else`, async () => {
     const next = random(name.length * 7919);
     // The page's state keys, and the runtime's own: the time, the text size, the printed time.
-    const keys = [...STATES[name].schema.map((entry) => entry.url), "t", "text", "print"];
+    const keys = [...state.schema.map((entry) => entry.url), "t", "text", "print"];
     const budget = await longTaskBudget(html);
     for (let k = 0; k < 10; k++) {
       const params = new URLSearchParams();

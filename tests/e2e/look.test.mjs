@@ -8,6 +8,7 @@ import assert from "node:assert/strict";
 import { readFile, writeFile, mkdir } from "node:fs/promises";
 import { join } from "node:path";
 import { artifacts, compare, open, root, setup } from "./browser.mjs";
+import { PAGES } from "../../www/pages.js";
 
 setup();
 
@@ -15,7 +16,7 @@ const LOOK = join(root, "tests/e2e/look");
 /** What changes from load to load on a page at rest: the keyframes table's measured times. */
 const MOVING = { "keyframes.html": ["#figures td:nth-child(6)", "#figures td:nth-child(7)"] };
 
-for (const html of ["index.html", "keyframes.html", "swarm.html", "average.html"]) {
+for (const { html } of PAGES) {
   test(`${html} at rest looks as it did (screenshot within tolerance)`, async () => {
     const { page, context, problems } = await open(html, { reducedMotion: "reduce" });
     try {

@@ -10,6 +10,7 @@ import { pathToFileURL } from "node:url";
 import { chromium } from "playwright-core";
 import { CHROMIUM } from "../../scripts/static-server.mjs";
 import { root } from "./browser.mjs";
+import { PAGES } from "../../www/pages.js";
 
 let browser;
 before(async () => (browser = await chromium.launch(CHROMIUM)));
@@ -23,7 +24,7 @@ const drawn = (page) => page.evaluate(() => Array.from(document.querySelectorAll
   return { id: canvas.id, count };
 }));
 
-for (const name of ["index.html", "swarm.html", "keyframes.html", "average.html"]) {
+for (const { html: name } of PAGES) {
   test(`dist/single/${name} works from file:// with no server and no network`, async () => {
     const file = join(root, "dist/single", name);
     assert.ok(existsSync(file), `${file} is missing: run make single`);

@@ -73,7 +73,7 @@ test("text size: ?text=2 doubles every label, the page's choice sets it back, an
     await page.locator('select[name="text-size"]').selectOption("2");
     const ticks = await page.evaluate(async () => {
       const demo = await import("./pkg/kli_demo.js");
-      const run = new demo.Demo([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]);
+      const run = new demo.KliDemo([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]);
       const svg = run.toSvg("plots", { width: 1200, height: 300, textScale: 2 });
       run.free();
       const doc = new DOMParser().parseFromString(svg, "image/svg+xml");

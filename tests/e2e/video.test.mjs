@@ -57,7 +57,7 @@ async function decode(page, bytes, { module, make, views, title, times }) {
     const pixels = (canvas) => canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
     // The reference: the same composition (title line, views side by side) of the module's drawing.
     const m = await import(module);
-    const { composeFrame } = await import("./video/compose.js");
+    const { composeFrame } = await import("./runtime/video/compose.js");
     const demo = new Function("m", `return ${make}`)(m);
     const [azimuth, elevation] = m.defaultCamera();
     const figures = { camera: { azimuth, elevation }, paint: (view, ctx, frame) => demo.draw(view, ctx, frame) };
@@ -100,7 +100,7 @@ test("KLI page: the paper's video as MP4 (H.264), decoded back: codec, 1280×720
     assert.equal(saved.name, "kli-paper-example-720p30.mp4");
     assert.match(await saved.status(), /^Saved kli-paper-example-720p30\.mp4: 30 frames, [\d.]+ MB, encoded in [\d.]+ s\.$/);
     const result = await decode(page, saved.bytes, {
-      module: "./pkg/kli_demo.js", make: "new m.Demo([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5])", views: ["object", "hopf"],
+      module: "./pkg/kli_demo.js", make: "new m.KliDemo([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5])", views: ["object", "hopf"],
       title: "The paper's example: KLI from p to r, and its Hopf curve on S²", times: [0, 2],
     });
     assert.equal(result.codec, "avc");

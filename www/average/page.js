@@ -6,6 +6,7 @@ import * as average from "../pkg/average_demo.js";
 import { AverageDemo } from "../pkg/average_demo.js";
 import { $ } from "../runtime/dom.js";
 import { timeTag } from "../runtime/exports.js";
+import { grabPoint } from "../runtime/input.js";
 import { page as registered } from "../pages.js";
 import { Page } from "../runtime/runtime.js";
 import { AVERAGE } from "./state.js";
@@ -104,31 +105,15 @@ function grabMeasurement(host, x, y) {
   const run = host.run;
   const frame = host.frame("hopf");
   if (!run || !frame) return null;
-  const points = run.measurementPoints(frame);
-  let index = -1;
-  let nearest = 12;
-  for (let i = 0; i < points.length / 3; i++) {
-    const distance = Math.hypot(points[3 * i] - x, points[3 * i + 1] - y);
-    if (points[3 * i + 2] === 1 && distance < nearest) [index, nearest] = [i, distance];
-  }
-  if (index < 0) return null;
-  let pending = false;
-  let to = { x, y };
-  return (/** @type {number} */ x, /** @type {number} */ y) => {
-    to = { x, y };
-    if (pending) return;
-    pending = true;
-    requestAnimationFrame(() => {
-      pending = false;
-      const run = host.run;
-      const frame = host.frame("hopf");
-      if (!run || !frame) return;
-      const entry = run.movedTo(index, frame, to.x, to.y);
-      if (!entry.length) return;
-      const moved = host.state.moved.filter((m) => m[0] !== index);
-      host.apply({ ...host.state, moved: [...moved, Array.from(entry, (c) => Number(c.toPrecision(8)))] });
-    });
-  };
+  return grabPoint(run.measurementPoints(frame), x, y, (index, x, y) => {
+    const run = host.run;
+    const frame = host.frame("hopf");
+    if (!run || !frame) return;
+    const entry = run.movedTo(index, frame, x, y);
+    if (!entry.length) return;
+    const moved = host.state.moved.filter((m) => m[0] !== index);
+    host.apply({ ...host.state, moved: [...moved, Array.from(entry, (c) => Number(c.toPrecision(8)))] });
+  });
 }
 
 /** One share of the sweep per task, so the page stays responsive. */

@@ -7,6 +7,7 @@ import * as keyframes from "../pkg/keyframes_demo.js";
 import { kliSpline, slerpSpline, squadSpline } from "../pkg/keyframes_demo.js";
 import { $ } from "../runtime/dom.js";
 import { timeTag } from "../runtime/exports.js";
+import { grabPoint } from "../runtime/input.js";
 import { formatNumber, parseNumber } from "../runtime/numbers.js";
 import { randomQuaternion } from "../runtime/presets.js";
 import { argumentOf, clearErrors } from "../runtime/runs.js";
@@ -129,32 +130,16 @@ function grabKey(host, x, y) {
   const run = host.run;
   const frame = host.frame("hopf");
   if (!run || !frame) return null;
-  const points = run.keyPoints(frame);
-  let key = -1;
-  let nearest = 12;
-  for (let i = 0; i < points.length / 3; i++) {
-    const distance = Math.hypot(points[3 * i] - x, points[3 * i + 1] - y);
-    if (points[3 * i + 2] === 1 && distance < nearest) [key, nearest] = [i, distance];
-  }
-  if (key < 0) return null;
-  let pending = false;
-  let to = { x, y };
-  return (/** @type {number} */ x, /** @type {number} */ y) => {
-    to = { x, y };
-    if (pending) return;
-    pending = true;
-    requestAnimationFrame(() => {
-      pending = false;
-      const run = host.run;
-      const frame = host.frame("hopf");
-      if (!run || !frame) return;
-      const moved = run.keysWithKeyAt(key, frame, to.x, to.y);
-      if (moved.length) {
-        host.field("key").value = String(key);
-        withKeys(host, rows(moved));
-      }
-    });
-  };
+  return grabPoint(run.keyPoints(frame), x, y, (key, x, y) => {
+    const run = host.run;
+    const frame = host.frame("hopf");
+    if (!run || !frame) return;
+    const moved = run.keysWithKeyAt(key, frame, x, y);
+    if (moved.length) {
+      host.field("key").value = String(key);
+      withKeys(host, rows(moved));
+    }
+  });
 }
 
 let timing = 0;

@@ -90,3 +90,35 @@ export function wireDragging(canvas, turn, grab = () => null) {
   canvas.addEventListener("pointerup", end);
   canvas.addEventListener("pointercancel", end);
 }
+
+/**
+ * Grabbing a point of the Hopf sphere, for a page's `grab`: of `points` (`[x, y, inFront]` a
+ * point, in CSS pixels, as the module's run gives them), the nearest in front within 12 px of
+ * the pointer at `(x, y)` is grabbed; moving the pointer then calls `move(index, x, y)` with the
+ * grabbed point's index and the pointer's last place, once a frame. Null when no point is near.
+ * @param {ArrayLike<number>} points
+ * @param {number} x
+ * @param {number} y
+ * @param {(index: number, x: number, y: number) => void} move
+ * @returns {((x: number, y: number) => void) | null}
+ */
+export function grabPoint(points, x, y, move) {
+  let index = -1;
+  let nearest = 12;
+  for (let i = 0; i < points.length / 3; i++) {
+    const distance = Math.hypot(points[3 * i] - x, points[3 * i + 1] - y);
+    if (points[3 * i + 2] === 1 && distance < nearest) [index, nearest] = [i, distance];
+  }
+  if (index < 0) return null;
+  let pending = false;
+  let to = { x, y };
+  return (x, y) => {
+    to = { x, y };
+    if (pending) return;
+    pending = true;
+    requestAnimationFrame(() => {
+      pending = false;
+      move(index, to.x, to.y);
+    });
+  };
+}

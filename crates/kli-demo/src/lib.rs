@@ -7,8 +7,8 @@
 //!
 //! Plain-Rust geometry and data ([`camera`], [`aircraft`], [`scene`], [`ticks`], [`palette`]) are
 //! apart from the files that draw ([`pen`], [`object_view`], [`sphere_view`], [`plots`]) and the
-//! classes themselves ([`demo`] for the KLI page, [`swarm_demo`] for the swarm page, with
-//! [`swarm_view`] and [`swarm_plots`], [`keyframes`] for the keyframes page, [`average`] for the averaging page); every export
+//! classes themselves, a folder a page named as the page (`kli`, `keyframes`, `swarm`,
+//! `average`: the pages' registry, `www/pages.js`, lists them); every export
 //! says where it came from ([`provenance`]).
 
 pub mod aircraft;
@@ -17,36 +17,34 @@ pub mod average;
 pub mod camera;
 #[cfg(any(feature = "kli-page", feature = "keyframes-page", feature = "average-page"))]
 mod clock;
-#[cfg(feature = "kli-page")]
-pub mod demo;
 mod figure;
 pub mod format;
+#[cfg(any(feature = "keyframes-page", feature = "average-page"))]
+mod hopf_drag;
 #[cfg(feature = "keyframes-page")]
 pub mod keyframes;
+#[cfg(feature = "kli-page")]
+pub mod kli;
 pub mod legend;
 pub mod object_view;
 pub mod palette;
-#[cfg(feature = "kli-page")]
-pub mod paper;
 pub mod pen;
 pub mod plots;
 pub mod provenance;
 pub mod scene;
 pub mod sphere_view;
 #[cfg(feature = "swarm-page")]
-pub mod swarm_demo;
-pub mod swarm_plots;
-pub mod swarm_view;
+pub mod swarm;
 pub mod ticks;
 
+#[cfg(feature = "kli-page")]
+pub use self::kli::KliDemo;
 #[cfg(feature = "average-page")]
 pub use average::AverageDemo;
-#[cfg(feature = "kli-page")]
-pub use demo::Demo;
 #[cfg(feature = "keyframes-page")]
 pub use keyframes::KeyframesDemo;
 #[cfg(feature = "swarm-page")]
-pub use swarm_demo::SwarmDemo;
+pub use swarm::SwarmDemo;
 
 use wasm_bindgen::prelude::*;
 

@@ -283,7 +283,7 @@ fn text_boxes(svg: &str, ctx: &CanvasRenderingContext2d) -> Vec<([f64; 4], Strin
 #[wasm_bindgen_test]
 fn no_two_labels_of_a_figure_overlap() {
     use js_sys::{Float64Array, Object, Reflect};
-    use kli_demo::{AverageDemo, Demo, KeyframesDemo, SwarmDemo};
+    use kli_demo::{AverageDemo, KeyframesDemo, KliDemo, SwarmDemo};
     use wasm_bindgen::JsValue;
 
     let frame = |width: f64, height: f64, t: f64| {
@@ -294,7 +294,7 @@ fn no_two_labels_of_a_figure_overlap() {
         JsValue::from(frame)
     };
     let quaternion = |q: [f64; 4]| JsValue::from(Float64Array::from(&q[..]));
-    let paper = Demo::new(
+    let paper = KliDemo::new(
         quaternion([0.0, 0.0, 0.0, 1.0]).unchecked_ref(),
         quaternion([0.5; 4]).unchecked_ref(),
         None,

@@ -9,9 +9,7 @@ mod view;
 
 use std::cell::OnceCell;
 
-use glam::DQuat;
 use js_sys::Float64Array;
-use kli::hopf::hopf;
 use kli::quaternion::{from_wxyz, to_wxyz};
 use kli::{KliError, Requirement, require};
 use kli_wasm::error::JsResult;
@@ -23,6 +21,7 @@ use web_sys::CanvasRenderingContext2d;
 use crate::aircraft::{Face, aircraft};
 use crate::clock::Clock;
 use crate::figure::{Figure, Frame, Layer, Motion, Record, View, names};
+use crate::hopf_drag;
 use crate::palette::BACKGROUND;
 use crate::pen::{Pen, svg_document};
 use model::{Model, Options, STYLES};
@@ -108,19 +107,7 @@ impl AverageDemo {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Frame")] frame: &JsValue,
     ) -> Float64Array {
-        let frame = Frame::read(frame);
-        let (viewport, camera) = (frame.sphere_viewport(), frame.camera);
-        let flat: Vec<f64> = self
-            .model
-            .data
-            .iter()
-            .flat_map(|&q| {
-                let p = camera.project(hopf(q));
-                let (x, y) = viewport.pixel(p);
-                [x, y, if p.depth >= 0.0 { 1.0 } else { 0.0 }]
-            })
-            .collect();
-        Float64Array::from(&flat[..])
+        hopf_drag::points_on_screen(&Frame::read(frame), &self.model.data)
     }
 
     /// Measurement `index` turned so that its Hopf point lands where the pointer is, at CSS
@@ -136,12 +123,8 @@ impl AverageDemo {
         y: f64,
     ) -> Float64Array {
         let frame = Frame::read(frame);
-        let (sx, sy) = frame.sphere_viewport().unpixel((x, y));
-        let target = frame.camera.unproject_on_sphere(sx, sy);
-        let Some((target, &q)) = target.zip(self.model.data.get(index)) else {
-            return Float64Array::new_with_length(0);
-        };
-        let moved = (DQuat::from_rotation_arc(hopf(q), target) * q).normalize();
+        let moved = self.model.data.get(index).and_then(|&q| hopf_drag::turned_to(&frame, q, x, y));
+        let Some(moved) = moved else { return Float64Array::new_with_length(0) };
         let [w, x, y, z] = to_wxyz(moved);
         Float64Array::from(&[index as f64, w, x, y, z][..])
     }

@@ -12,7 +12,6 @@ use std::cell::OnceCell;
 use glam::{DQuat, DVec3};
 use js_sys::Float64Array;
 use kli::KliError;
-use kli::hopf::hopf;
 use kli::quaternion::to_wxyz;
 use kli_wasm::error::{JsResult, Thrown};
 use wasm_bindgen::prelude::*;
@@ -20,6 +19,7 @@ use wasm_bindgen::prelude::*;
 use crate::aircraft::{Face, aircraft};
 use crate::clock::Clock;
 use crate::figure::{Figure, Frame, Layer, Motion, Record, View, finite, names};
+use crate::hopf_drag;
 use crate::pen::Pen;
 use model::{Model, STYLES};
 
@@ -71,20 +71,7 @@ impl KeyframesDemo {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Frame")] frame: &JsValue,
     ) -> Float64Array {
-        let frame = Frame::read(frame);
-        let (viewport, camera) = (frame.sphere_viewport(), frame.camera);
-        let flat: Vec<f64> = self
-            .model
-            .keys
-            .quaternions()
-            .iter()
-            .flat_map(|&k| {
-                let p = camera.project(hopf(k));
-                let (x, y) = viewport.pixel(p);
-                [x, y, if p.depth >= 0.0 { 1.0 } else { 0.0 }]
-            })
-            .collect();
-        Float64Array::from(&flat[..])
+        hopf_drag::points_on_screen(&Frame::read(frame), self.model.keys.quaternions())
     }
 
     /// The keys (`4m` numbers) with key `index` turned so that its Hopf point lands where the
@@ -100,13 +87,11 @@ impl KeyframesDemo {
         y: f64,
     ) -> Float64Array {
         let frame = Frame::read(frame);
-        let (sx, sy) = frame.sphere_viewport().unpixel((x, y));
-        let target = frame.camera.unproject_on_sphere(sx, sy);
-        let Some((target, key)) = target.zip(self.model.keys.quaternions().get(index)) else {
-            return Float64Array::new_with_length(0);
-        };
-        let turn = DQuat::from_rotation_arc(hopf(*key), target);
-        self.keys_with(index, (turn * *key).normalize())
+        let key = self.model.keys.quaternions().get(index);
+        match key.and_then(|&key| hopf_drag::turned_to(&frame, key, x, y)) {
+            Some(turned) => self.keys_with(index, turned),
+            None => Float64Array::new_with_length(0),
+        }
     }
 
     /// Key `index` in polar form, `[Ux, Uy, Uz, θ]` (`θ` in radians, as `axisAngle`).
