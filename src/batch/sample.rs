@@ -97,8 +97,10 @@ mod tests {
                 assert!((out[4 * k + c] - expected[c]).abs() < 1e-12, "t = {t}");
             }
         }
-        // Uneven times take the plain path.
+        // Uneven times take the plain path; three even ones from anywhere, the recurrence.
         assert!(even_steps(&[0.0, 0.1, 0.3]).is_none());
+        assert_eq!(even_steps(&[2.0, 2.5, 3.0]), Some(0.5));
+        assert_eq!(even_steps(&[2.0, 2.5]), None);
     }
 
     /// A million evenly spaced samples: the recurrence alone would carry a million roundings of

@@ -9,7 +9,6 @@ import { timeTag } from "../runtime/exports.js";
 import { grabPoint } from "../runtime/input.js";
 import { page as registered } from "../pages.js";
 import { Page } from "../runtime/runtime.js";
-import { AVERAGE } from "./state.js";
 
 /** @typedef {{ count: number, noise: number, outliers: number, seed: number, moved: number[][] }} AverageState */
 
@@ -33,11 +32,6 @@ const page = new Page({
     },
   },
   form: "#average-inputs",
-  schema: AVERAGE.schema,
-  presets: AVERAGE.presets,
-  defaults: AVERAGE.defaults,
-  create: (state) => AVERAGE.create(average, state),
-  keyOf: AVERAGE.keyOf,
   readout: (run, t) => {
     const chordal = run.summary.means[0];
     return `t = ${t.toFixed(2)} / ${run.span[1].toFixed(2)}   the chordal mean: ${chordal.errorDegrees.toFixed(2)}° from the truth`;

@@ -13,7 +13,6 @@ import { randomQuaternion } from "../runtime/presets.js";
 import { argumentOf, clearErrors } from "../runtime/runs.js";
 import { page as registered } from "../pages.js";
 import { Page } from "../runtime/runtime.js";
-import { KEYFRAMES } from "./state.js";
 
 /** @typedef {{ keys: number[][], times: number[], smoothness: number }} KeyframesState */
 
@@ -26,11 +25,6 @@ const page = new Page({
   entry: registered("keyframes"),
   module: keyframes,
   form: "#keyframes-inputs",
-  schema: KEYFRAMES.schema,
-  presets: KEYFRAMES.presets,
-  defaults: KEYFRAMES.defaults,
-  create: (state) => KEYFRAMES.create(keyframes, state),
-  keyOf: KEYFRAMES.keyOf,
   // The key editor's axis and angle: their own message.
   route: (host, error) => {
     const argument = argumentOf(error);

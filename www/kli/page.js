@@ -11,7 +11,7 @@ import { randomQuaternion } from "../runtime/presets.js";
 import { clearErrors, messageOf, showFieldError } from "../runtime/runs.js";
 import { page as registered } from "../pages.js";
 import { Page } from "../runtime/runtime.js";
-import { DEFAULTS, KLI, PRESETS } from "./state.js";
+import { DEFAULTS } from "./state.js";
 import { describeFrame, describeRun, fillTable, fillTypo } from "./summary.js";
 
 /** @typedef {import("./form.js").State} State */
@@ -25,12 +25,7 @@ const page = new Page({
   entry: registered("kli"),
   module: kli,
   form: "#inputs",
-  schema: KLI.schema,
-  presets: PRESETS,
-  defaults: DEFAULTS,
   random: () => ({ ...DEFAULTS, p: randomQuaternion(), r: randomQuaternion() }),
-  create: (state) => KLI.create(kli, state),
-  keyOf: KLI.keyOf,
   route: (host, error) => errorPlace(host.form, error),
   readout: (run, t) => `t = ${t.toFixed(2)} / T = ${run.summary.finalTime.toFixed(2)}`,
   labels: (run, t) => ({ object: describeFrame(run, t) }),

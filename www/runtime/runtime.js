@@ -61,18 +61,14 @@ import { videoPanel } from "./video/panel.js";
  * @template {Record<string, any>} State
  * @template {Run} R
  * @typedef {object} Descriptor
- * @property {import("../pages.js").Page} entry the page's entry in the registry (www/pages.js): its canvases and its Save list
+ * @property {import("../pages.js").Page} entry the page's entry in the registry (www/pages.js): its canvases, its Save
+ *   list and its state (schema, presets, defaults, the module's run for a state, the key an Error is about)
  * @property {Module} module
  * @property {Record<string, { draw: import("./figures.js").Painter, svg: (frame: import("./figures.js").Frame) => string }>} [own]
  *   views the page draws itself (with the module's static drawing functions), and their SVG
  * @property {string} form the form's selector
- * @property {readonly import("./schema.js").Entry[]} schema
  * @property {Record<string, string>} [aliases] URL keys of old links, still read: old → new
- * @property {Record<string, State>} presets
- * @property {State} defaults
  * @property {() => State} [random] the "random" preset
- * @property {(state: State) => R} create the module's run for a state (its constructor checks it)
- * @property {(error: unknown) => (keyof State & string) | undefined} keyOf the state key an Error is about
  * @property {(host: Host<State, R>, error: unknown) => { output: string, fields: Element[] } | undefined} [route]
  *   where an Error shows, when not beside its key's fields
  * @property {(run: R, t: number) => string} readout the line under the figures
@@ -157,9 +153,20 @@ export class Page {
   constructor(descriptor) {
     const d = descriptor;
     this.d = d;
+    const state = d.entry.state;
+    /** The page's state, from its state.js through the registry. */
+    this.s = {
+      /** @type {readonly import("./schema.js").Entry[]} */ schema: state.schema,
+      /** @type {Record<string, State>} */ presets: state.presets,
+      /** @type {State} */ defaults: /** @type {State} */ (state.defaults),
+      /** the module's run for a state (its constructor checks it) */
+      create: (/** @type {State} */ s) => /** @type {R} */ (state.create(d.module, s)),
+      /** the state key an Error is about */
+      keyOf: (/** @type {unknown} */ error) => /** @type {(keyof State & string) | undefined} */ (state.keyOf(error)),
+    };
     this.form = $(d.form, HTMLFormElement);
     /** @type {Schema<State>} */
-    this.schema = new Schema(d.schema, this.form);
+    this.schema = new Schema(this.s.schema, this.form);
     const canvases = Object.fromEntries(Object.entries(d.entry.canvases).map(([view, selector]) => [view, $(selector, HTMLCanvasElement)]));
     const painters = Object.fromEntries(Object.entries(d.own ?? {}).map(([view, { draw }]) => [view, draw]));
     this.figures = new Figures(canvases, painters);
@@ -167,7 +174,7 @@ export class Page {
     /** @type {R | null} */
     this.run = null;
     /** @type {State} */
-    this.state = d.defaults;
+    this.state = this.s.defaults;
     const optional = (/** @type {string} */ selector) => /** @type {HTMLElement | null} */ (document.querySelector(selector));
     this.ui = {
       load: $("#load-status", HTMLElement),
@@ -238,7 +245,7 @@ export class Page {
   /** Builds the run for `candidate` when the module accepts all of it; otherwise shows every
    *  refused value beside its field and keeps the run on show. Returns whether it applied it. */
   rebuild(/** @type {State} */ candidate) {
-    const { run, errors } = buildAll(candidate, this.state, this.d.create, this.d.keyOf);
+    const { run, errors } = buildAll(candidate, this.state, this.s.create, this.s.keyOf);
     clearErrors(this.form);
     if (errors.length > 0 || !run) {
       run?.free();
@@ -253,7 +260,7 @@ export class Page {
   showError(/** @type {unknown} */ error) {
     const routed = this.d.route?.(this.host, error);
     if (routed) return showFieldError(this.form, routed.output, routed.fields, messageOf(error));
-    const key = this.d.keyOf(error) ?? this.d.schema[0].key;
+    const key = this.s.keyOf(error) ?? this.s.schema[0].key;
     showFieldError(this.form, key, this.schema.fields(key), messageOf(error));
   }
 
@@ -272,7 +279,7 @@ export class Page {
       if (this.d.stride) this.ui.time.step = String(this.d.stride(state));
     }
     const preset = this.form.elements.namedItem("preset");
-    if (preset instanceof HTMLSelectElement) preset.value = presetName(this.d.presets, state);
+    if (preset instanceof HTMLSelectElement) preset.value = presetName(this.s.presets, state);
     if (this.ui.note && this.d.note) this.ui.note.textContent = this.d.note(run, state);
     this.d.shown?.(this.host, run, state);
     this.video?.fill();
@@ -282,7 +289,7 @@ export class Page {
 
   /** Applies a preset (or "random"): fills the form, builds it, and plays it from the start. */
   applyPreset(/** @type {string} */ name) {
-    const preset = name === "random" && this.d.random ? this.d.random() : this.d.presets[name];
+    const preset = name === "random" && this.d.random ? this.d.random() : this.s.presets[name];
     if (!preset) return;
     this.schema.fill(preset);
     if (!this.rebuild(preset)) return;
@@ -482,30 +489,30 @@ export class Page {
   async start() {
     if (!(await loadModule(this.d.module.default, this.ui.load))) {
       // The first pictures show the default state: where the URL asks for another, they go.
-      const asked = [...this.d.schema.map((entry) => entry.url), "t"].some((key) => this.query.has(key));
+      const asked = [...this.s.schema.map((entry) => entry.url), "t"].some((key) => this.query.has(key));
       if (asked) document.querySelectorAll(".first-picture").forEach((picture) => picture.remove());
       return;
     }
     performance.mark("kli:wasm-ready");
     if (this.embed) document.body.classList.add("embed");
     this.figures.camera = new Camera(this.d.module.defaultCamera());
-    const { state: candidate, texts } = this.schema.fromUrl(location.search, this.d.defaults, this.d.aliases);
+    const { state: candidate, texts } = this.schema.fromUrl(location.search, this.s.defaults, this.d.aliases);
     const t = this.query.get("t");
     const paused = (this.d.timeInUrl && t !== null) || Player.reducedMotion();
     // A number beyond its slider is refused here, as the slider would refuse it.
     const beyond = this.schema.outOfRange(candidate).map(({ key, min, max, value }) => {
-      /** @type {Record<string, any>} */ (candidate)[key] = this.d.defaults[key];
+      /** @type {Record<string, any>} */ (candidate)[key] = this.s.defaults[key];
       return Object.assign(new Error(`${key} must be from ${min} to ${max} on this page, as its slider (got ${value})`),
         { argument: key, kind: "out-of-range" });
     });
-    const { run, state, errors } = buildAll(candidate, this.d.defaults, this.d.create, this.d.keyOf);
+    const { run, state, errors } = buildAll(candidate, this.s.defaults, this.s.create, this.s.keyOf);
     errors.unshift(...beyond);
     // The form first: what the page shows beside it (a slider's value) reads the form.
-    this.schema.fill(state ?? this.d.defaults);
-    this.show(run ?? this.d.create(this.d.defaults), state ?? this.d.defaults);
+    this.schema.fill(state ?? this.s.defaults);
+    this.show(run ?? this.s.create(this.s.defaults), state ?? this.s.defaults);
     // Wired once the first run is shown: the video panel asks it whether runs have a span.
     this.wire();
-    this.schema.keepTexts(texts, errors.map((error) => this.d.keyOf(error)));
+    this.schema.keepTexts(texts, errors.map((error) => this.s.keyOf(error)));
     errors.forEach((error) => this.showError(error));
     // In the same task as the first show: the first URL written is the playing page's, with no time.
     if (!paused) this.play();

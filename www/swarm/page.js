@@ -7,7 +7,6 @@ import { $ } from "../runtime/dom.js";
 import { timeTag } from "../runtime/exports.js";
 import { page as registered } from "../pages.js";
 import { Page } from "../runtime/runtime.js";
-import { SWARM } from "./state.js";
 
 /** @typedef {import("./state.js").SwarmState} SwarmState */
 
@@ -32,11 +31,6 @@ const page = new Page({
     },
   },
   form: "#swarm-inputs",
-  schema: SWARM.schema,
-  presets: SWARM.presets,
-  defaults: SWARM.defaults,
-  create: (state) => SWARM.create(swarm, state),
-  keyOf: SWARM.keyOf,
   readout: (run, t) => {
     const s = run.summary;
     return `t = ${t.toFixed(2)}   R = ${s.orderParameter.toFixed(3)}   λmax = ${s.rotationOrder.toFixed(3)}` +
