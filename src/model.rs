@@ -184,4 +184,17 @@ mod tests {
         let ratio = (a - b).length() / (b - c).length();
         assert!((13.0..19.0).contains(&ratio), "{ratio}");
     }
+
+    /// A time between steps is reached by a shortened last step, and the next time goes on from
+    /// it: the answers agree with a finer step's to RK4's error, not to a step's worth.
+    #[test]
+    fn printed_form_lands_on_each_time() {
+        let (p, r) = (from_wxyz([0.0, 0.0, 0.0, 1.0]), from_wxyz([0.5; 4]));
+        let coarse = integrate_as_printed(p, r, 0.1, &[0.25, 0.5]).unwrap();
+        let fine = integrate_as_printed(p, r, 0.025, &[0.25, 0.5]).unwrap();
+        let alone = integrate_as_printed(p, r, 0.1, &[0.5]).unwrap();
+        assert!((coarse[0] - fine[0]).length() < 1e-5, "{:?}", coarse[0] - fine[0]);
+        assert!((coarse[1] - fine[1]).length() < 1e-5, "{:?}", coarse[1] - fine[1]);
+        assert!((coarse[1] - alone[0]).length() < 1e-5, "{:?}", coarse[1] - alone[0]);
+    }
 }

@@ -101,6 +101,10 @@ mod tests {
         assert!(even_steps(&[0.0, 0.1, 0.3]).is_none());
         assert_eq!(even_steps(&[2.0, 2.5, 3.0]), Some(0.5));
         assert_eq!(even_steps(&[2.0, 2.5]), None);
+        // Times written as `first + k·step` carry a rounding of an ulp or so of t (from 10.3 in
+        // steps of 0.1: up to 0.13 of the tolerance 8 ε (1 + t)): still even.
+        let written: Vec<f64> = (0..100).map(|k| 10.3 + k as f64 * 0.1).collect();
+        assert!(even_steps(&written).is_some());
     }
 
     /// A million evenly spaced samples: the recurrence alone would carry a million roundings of
