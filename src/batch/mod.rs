@@ -251,6 +251,14 @@ mod tests {
             message(kli_sample_into(good_q(), good_q(), &[0.0, -2.0], &mut out, true))
                 .starts_with("times[1] must be")
         );
+        // Three times want 12 numbers out; the Error says so.
+        let e = kli_sample_into(good_q(), good_q(), &[0.0, 1.0, 2.0], &mut out, true).unwrap_err();
+        assert_eq!(e.argument(), "out");
+        assert_eq!(
+            e.kind(),
+            &ErrorKind::WrongLength { expected: 12, got: 8, per: "time".into() },
+            "{e}"
+        );
     }
 
     fn good_q() -> DQuat {
