@@ -284,3 +284,30 @@ test("the figure interface under hostile input: every call draws with defaults o
     await context.close();
   }
 });
+
+test("printed, every page shows no control and keeps each figure whole on one page", async () => {
+  for (const { html } of PAGES) {
+    const { page, context, problems } = await open(html, { reducedMotion: "reduce" });
+    try {
+      await page.emulateMedia({ media: "print" });
+      const printed = await page.evaluate(() => ({
+        controls: Array.from(document.querySelectorAll("button, input, select, textarea"))
+          .filter((element) => element.checkVisibility()).map((element) => element.id || element.getAttribute("name") || element.tagName),
+        figures: Array.from(document.querySelectorAll("figure"), (figure) => ({
+          id: figure.querySelector("canvas")?.id, breaks: getComputedStyle(figure).breakInside,
+          height: figure.getBoundingClientRect().height,
+        })),
+      }));
+      assert.deepEqual(printed.controls, [], `${html}: controls on paper`);
+      assert.ok(printed.figures.length >= 3, html);
+      // An A4 page at 96 px an inch, less the browser's margins, holds about 1,000 px.
+      for (const figure of printed.figures) {
+        assert.equal(figure.breaks, "avoid", `${html} #${figure.id}`);
+        assert.ok(figure.height > 20 && figure.height < 1000, `${html} #${figure.id}: ${figure.height} px`);
+      }
+      assert.deepEqual(problems, []);
+    } finally {
+      await context.close();
+    }
+  }
+});

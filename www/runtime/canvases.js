@@ -38,7 +38,10 @@ export class Canvases {
     this.observer = new ResizeObserver((entries) => {
       for (const entry of entries) {
         const name = this.nameOf(entry.target);
-        if (name) this.boxes[name] = { width: entry.contentRect.width, height: entry.contentRect.height };
+        // A canvas taken out of the layout (printing hides them) keeps its last size: sized to
+        // nothing, the printed SVG drawn from it would be square.
+        const { width, height } = entry.contentRect;
+        if (name && width > 0 && height > 0) this.boxes[name] = { width, height };
       }
       this.refit(true);
     });
