@@ -311,3 +311,24 @@ test("printed, every page shows no control and keeps each figure whole on one pa
     }
   }
 });
+
+test("no empty figure: a page's sweep fills itself once the page is interactive, and its button runs it again", async () => {
+  for (const { html } of PAGES) {
+    const { page, context, problems } = await open(html, { reducedMotion: "reduce" });
+    try {
+      if ((await page.locator("#sweep").count()) === 0) continue;
+      const done = () => page.waitForFunction(() => document.querySelector("#sweep-status")?.textContent.startsWith("Done"),
+        undefined, { timeout: 60000 });
+      await done();
+      const rows = await page.locator("#sweep-table tbody tr").count();
+      assert.ok(rows >= 10, `${html}: ${rows} sweep points with no click`);
+      await page.locator("#sweep").click();
+      await page.waitForFunction(() => document.querySelector("#sweep-status")?.textContent.startsWith("Sweeping"));
+      await done();
+      assert.equal(await page.locator("#sweep-table tbody tr").count(), rows, html);
+      assert.deepEqual(problems, []);
+    } finally {
+      await context.close();
+    }
+  }
+});

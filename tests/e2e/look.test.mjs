@@ -20,7 +20,10 @@ for (const { html } of PAGES) {
   test(`${html} at rest looks as it did (screenshot within tolerance)`, async () => {
     const { page, context, problems } = await open(html, { reducedMotion: "reduce" });
     try {
-      // Everything drawn: the still views are painted in a task after the first frame.
+      // Everything drawn: the still views are painted in a task after the first frame, and a
+      // sweep fills itself a point a task.
+      await page.waitForFunction(() => !document.querySelector("#sweep-status") ||
+        document.querySelector("#sweep-status").textContent.startsWith("Done"), undefined, { timeout: 60000 });
       await page.waitForTimeout(600);
       const mask = (MOVING[html] ?? []).map((selector) => page.locator(selector));
       const shot = await page.screenshot({ fullPage: true, mask, animations: "disabled" });

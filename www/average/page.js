@@ -137,4 +137,6 @@ function runSweep(/** @type {Host} */ host) {
   next(0);
 }
 
-page.start();
+// The sweep fills itself once the page is interactive (a point a task, as the button runs it):
+// no empty figure on screen or on paper.
+page.start().then((ready) => ready && setTimeout(() => runSweep(page.host)));

@@ -485,13 +485,14 @@ export class Page {
   }
 
   /** Loads the module, then shows the URL's state: the values the module refuses are shown
-   *  beside their fields (their text kept there, to mend) and the defaults stand in for them. */
+   *  beside their fields (their text kept there, to mend) and the defaults stand in for them.
+   *  True once the page is interactive; false when the module could not be loaded. */
   async start() {
     if (!(await loadModule(this.d.module.default, this.ui.load))) {
       // The first pictures show the default state: where the URL asks for another, they go.
       const asked = [...this.s.schema.map((entry) => entry.url), "t"].some((key) => this.query.has(key));
       if (asked) document.querySelectorAll(".first-picture").forEach((picture) => picture.remove());
-      return;
+      return false;
     }
     performance.mark("kli:wasm-ready");
     if (this.embed) document.body.classList.add("embed");
@@ -527,5 +528,6 @@ export class Page {
       if (document.readyState === "complete") register();
       else addEventListener("load", register, { once: true });
     }
+    return true;
   }
 }
