@@ -1,7 +1,7 @@
 // @ts-check
 // The keyframes page: a descriptor for the page runtime (runtime.js), the key editor, dragging a
 // key on the sphere, and the table's timings. The curves, their figures and their drawing are
-// the module's KeyframesDemo (crates/kli-demo/src/keyframes_demo.rs); the timings use the
+// the module's KeyframesDemo (crates/kli-demo/src/keyframes/); the timings use the
 // package's kliSpline, squadSpline and slerpSpline.
 import * as keyframes from "../pkg/keyframes_demo.js";
 import { kliSpline, slerpSpline, squadSpline } from "../pkg/keyframes_demo.js";

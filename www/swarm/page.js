@@ -1,6 +1,6 @@
 // @ts-check
 // The swarm page: a descriptor for the page runtime (runtime.js), and the K sweep. The model, its
-// checks and all drawing are the module's (crates/kli-demo/src/swarm_demo.rs).
+// checks and all drawing are the module's (crates/kli-demo/src/swarm/).
 import * as swarm from "../pkg/swarm_demo.js";
 import { SwarmDemo } from "../pkg/swarm_demo.js";
 import { $ } from "../runtime/dom.js";
