@@ -199,6 +199,7 @@ bench: pkg www setup-browser
 	node bench/spline.mjs
 	node bench/smoothness.mjs
 	node bench/average.mjs
+	node bench/size.mjs
 	node bench/page.mjs
 	node bench/first-paint.mjs
 	node bench/video.mjs

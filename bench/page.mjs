@@ -10,6 +10,7 @@ import { join } from "node:path";
 import { chromium } from "playwright-core";
 import { CHROMIUM, serve } from "../scripts/static-server.mjs";
 import { previousPages } from "./previous.mjs";
+import { PAGES } from "../www/pages.js";
 
 const root = new URL("../", import.meta.url).pathname;
 const loads = Number(process.argv[2] ?? 9);
@@ -18,13 +19,8 @@ const size = (path) => {
   const bytes = readFileSync(join(root, path));
   return `${bytes.length} bytes, ${gzipSync(bytes, { level: 9 }).length} gzipped`;
 };
-console.log(`pkg/kli_bg.wasm (the npm package's main entry): ${size("pkg/kli_bg.wasm")} (target ≤ 32768 gzipped)`);
-const kliGzipped = gzipSync(readFileSync(join(root, "pkg/kli_bg.wasm")), { level: 9 }).length;
-record("`kli_bg.wasm` ≤ 32 KiB gzipped (Node's zlib, level 9)", `${kliGzipped.toLocaleString("en")} bytes`, "", kliGzipped <= 32768);
-for (const entry of ["swarm", "spline"]) console.log(`pkg/${entry}_bg.wasm (kli/${entry}): ${size(`pkg/${entry}_bg.wasm`)}`);
-for (const [page, module] of [["index.html", "kli_demo"], ["swarm.html", "swarm_demo"], ["keyframes.html", "keyframes_demo"]]) {
-  console.log(`www/pkg/${module}_bg.wasm (${page}'s module): ${size(`www/pkg/${module}_bg.wasm`)}`);
-}
+// The package's entries beside the previous release: bench/size.mjs. The pages' modules here.
+for (const page of PAGES) console.log(`www/pkg/${page.name}_demo_bg.wasm (${page.html}'s module): ${size(`www/pkg/${page.name}_demo_bg.wasm`)}`);
 
 const www = await serve(join(root, "www"));
 const bare = await serve(join(root, "bench/bare"));
