@@ -6,7 +6,7 @@
 import { build } from "esbuild";
 import { mkdir, readFile, writeFile } from "node:fs/promises";
 import { join } from "node:path";
-import { PAGES, bundle as bundleOf, script as scriptOf } from "../www/pages.js";
+import { MORE_LINKS, PAGES, bundle as bundleOf, script as scriptOf } from "../www/pages.js";
 
 const root = new URL("../", import.meta.url).pathname;
 const www = join(root, "www");
@@ -67,7 +67,7 @@ async function single(entry) {
   replace('<link rel="stylesheet" href="style.css">', () => `<style>\n${css}</style>`);
   replace(`<script type="module" src="${bundleOf(entry)}"></script>`, () => `<script type="module">\n${code}</script>`);
   // The examples need the site's import map and vendored files: not part of the one-file pages.
-  replace(/ · <a href="examples\/three\.html">With three\.js<\/a>/, "");
+  for (const link of MORE_LINKS) replace(` · <a href="${link.href}">${link.title}</a>`, "");
   // The first pictures (scripts/first-pictures.mjs) inside, as data: addresses.
   const pictures = [...html.matchAll(/"(pkg\/first\/[\w-]+\.svg)"/g)].map(([, file]) => file);
   for (const file of new Set(pictures)) {
