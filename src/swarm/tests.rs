@@ -173,3 +173,13 @@ fn bad_options_name_the_option() {
         "quaternions[1]"
     );
 }
+
+#[test]
+fn a_call_takes_up_to_a_million_steps_and_refuses_more() {
+    let mut one = swarm(1, 1.0, Graph::All, 1);
+    one.step(1e-6, MAX_STEPS).unwrap();
+    assert!((one.time() - 1.0).abs() < 1e-9, "{}", one.time());
+    let e = one.step(1e-6, MAX_STEPS + 1).unwrap_err();
+    assert_eq!(e.argument(), "steps");
+    assert!((one.time() - 1.0).abs() < 1e-9, "a refused call runs no step");
+}
