@@ -58,6 +58,7 @@ pub mod quaternion;
 pub mod slerp;
 pub mod spline;
 pub mod swarm;
+pub mod sync;
 mod trig;
 
 pub use algorithm::{KliOptions, KliPath, kli};

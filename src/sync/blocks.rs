@@ -1,0 +1,202 @@
+//! Symmetric matrices with the graph's 3×3 block pattern (the connection Laplacian, the
+//! certificate's `S`, the Newton system), and their sparse Cholesky factors by faer.
+//!
+//! The pattern (and faer's symbolic analysis: the fill-reducing ordering and the elimination
+//! tree) is computed once a graph; each numeric factorisation reuses it.
+
+use faer::sparse::linalg::solvers::{Llt, SymbolicLlt};
+use faer::sparse::{Argsort, Pair, SparseColMat, SymbolicSparseColMat};
+use faer::{MatMut, Side};
+use glam::{DMat3, DVec3};
+
+use super::graph::Graph;
+
+/// A symmetric 3n×3n matrix: `diag[i]` is the block `(i, i)`, `off[k]` the block `(i, j)` of
+/// edge `k = (i, j)` (its transpose is the block `(j, i)`; parallel edges add up).
+#[derive(Debug, Clone)]
+pub(crate) struct Blocks {
+    pub diag: Vec<DMat3>,
+    pub off: Vec<DMat3>,
+}
+
+impl Blocks {
+    pub fn zeros(graph: &Graph) -> Blocks {
+        Blocks {
+            diag: vec![DMat3::ZERO; graph.count()],
+            off: vec![DMat3::ZERO; graph.edges().len()],
+        }
+    }
+
+    /// `y = A x` for vectors of length 3n.
+    pub fn apply(&self, graph: &Graph, x: &[f64], y: &mut [f64]) {
+        for (i, block) in self.diag.iter().enumerate() {
+            put(y, i, *block * get(x, i));
+        }
+        for (&[i, j], block) in graph.edges().iter().zip(&self.off) {
+            add(y, i, *block * get(x, j));
+            add(y, j, block.transpose() * get(x, i));
+        }
+    }
+
+    /// `min_i (a_ii − Σ_{j≠i} |a_ij|)` over the rows: no eigenvalue is below it (Gershgorin).
+    pub fn gershgorin_lower(&self, graph: &Graph) -> f64 {
+        let mut radius = vec![0.0; 3 * graph.count()];
+        for (i, block) in self.diag.iter().enumerate() {
+            for r in 0..3 {
+                for c in 0..3 {
+                    if r != c {
+                        radius[3 * i + r] += block.col(c)[r].abs();
+                    }
+                }
+            }
+        }
+        for (&[i, j], block) in graph.edges().iter().zip(&self.off) {
+            for r in 0..3 {
+                for c in 0..3 {
+                    let a = block.col(c)[r].abs();
+                    radius[3 * i + r] += a;
+                    radius[3 * j + c] += a;
+                }
+            }
+        }
+        (0..radius.len())
+            .map(|row| self.diag[row / 3].col(row % 3)[row % 3] - radius[row])
+            .fold(f64::INFINITY, f64::min)
+    }
+}
+
+/// The 3-vector of node `i` in a vector of length 3n.
+pub(crate) fn get(x: &[f64], i: usize) -> DVec3 {
+    DVec3::new(x[3 * i], x[3 * i + 1], x[3 * i + 2])
+}
+
+fn put(y: &mut [f64], i: usize, v: DVec3) {
+    y[3 * i..3 * i + 3].copy_from_slice(&v.to_array());
+}
+
+pub(crate) fn add(y: &mut [f64], i: usize, v: DVec3) {
+    y[3 * i] += v.x;
+    y[3 * i + 1] += v.y;
+    y[3 * i + 2] += v.z;
+}
+
+/// The lower triangle of a block matrix with one node's rows and columns left out (or none):
+/// which scalar entry each value goes to, and faer's symbolic Cholesky of that structure.
+pub(crate) struct Pattern {
+    /// Each node's block row, `None` for the node left out.
+    index: Vec<Option<usize>>,
+    symbolic: SymbolicSparseColMat<usize>,
+    argsort: Argsort<usize>,
+    llt: SymbolicLlt<usize>,
+}
+
+/// A numeric factorisation `A + shift I = L Lᵀ` that succeeded: `A + shift I` is positive
+/// definite to the working precision.
+pub(crate) struct Factor(Llt<usize, f64>);
+
+impl Pattern {
+    /// The pattern of `graph`'s block matrices without node `left_out`'s block row and column.
+    pub fn new(graph: &Graph, left_out: Option<usize>) -> Pattern {
+        let mut index = vec![None; graph.count()];
+        let mut size = 0;
+        for (i, slot) in index.iter_mut().enumerate() {
+            if Some(i) != left_out {
+                *slot = Some(size);
+                size += 1;
+            }
+        }
+        let mut pairs = Vec::new();
+        visit(graph, &index, |row, col| pairs.push(Pair { row, col }));
+        let (symbolic, argsort) =
+            SymbolicSparseColMat::try_new_from_indices(3 * size, 3 * size, &pairs)
+                .expect("block indices are below the dimension by construction");
+        let llt = SymbolicLlt::try_new(symbolic.as_ref(), Side::Lower)
+            .expect("a square pattern has a symbolic Cholesky factorisation");
+        Pattern { index, symbolic, argsort, llt }
+    }
+
+    /// Node `i`'s block row, `None` for the node left out.
+    pub fn row(&self, i: usize) -> Option<usize> {
+        self.index[i]
+    }
+
+    /// The Cholesky factor of `a + shift I` restricted to the pattern's nodes, or `None` when it
+    /// is not positive definite (a pivot ≤ 0 or not finite).
+    pub fn factor(&self, graph: &Graph, a: &Blocks, shift: f64) -> Option<Factor> {
+        let mut values = Vec::new();
+        let shifted: Vec<DMat3> =
+            a.diag.iter().map(|d| *d + DMat3::from_diagonal(DVec3::splat(shift))).collect();
+        // The same walk as `visit`, reading the values instead of the positions.
+        walk(graph, &self.index, |entry| {
+            values.push(match entry {
+                Entry::Diagonal { node, row, col } => shifted[node].col(col)[row],
+                Entry::Edge { edge, row, col, transposed: false } => a.off[edge].col(col)[row],
+                Entry::Edge { edge, row, col, transposed: true } => a.off[edge].col(row)[col],
+            })
+        });
+        if values.iter().any(|v| !v.is_finite()) {
+            return None;
+        }
+        let matrix =
+            SparseColMat::new_from_argsort(self.symbolic.clone(), &self.argsort, &values).ok()?;
+        Llt::try_new_with_symbolic(self.llt.clone(), matrix.as_ref(), Side::Lower).ok().map(Factor)
+    }
+}
+
+impl Factor {
+    /// Solves `(A + shift I) x = b` in place.
+    pub fn solve(&self, b: &mut [f64]) {
+        use faer::prelude::Solve;
+        let n = b.len();
+        self.0.solve_in_place(MatMut::from_column_major_slice_mut(b, n, 1));
+    }
+}
+
+/// One stored value of the lower triangle, in the order the pattern lists them.
+enum Entry {
+    /// Entry `(row, col)` of node `node`'s diagonal block.
+    Diagonal { node: usize, row: usize, col: usize },
+    /// Entry `(row, col)` of edge `edge`'s block `(i, j)`, or of its transpose.
+    Edge { edge: usize, row: usize, col: usize, transposed: bool },
+}
+
+/// Every stored entry of the lower triangle, once, in a fixed order: each node's diagonal block
+/// (its lower triangle), then each edge whose nodes are both kept (the block below the diagonal).
+fn walk(graph: &Graph, index: &[Option<usize>], mut each: impl FnMut(Entry)) {
+    for (node, slot) in index.iter().enumerate() {
+        if slot.is_some() {
+            for col in 0..3 {
+                for row in col..3 {
+                    each(Entry::Diagonal { node, row, col });
+                }
+            }
+        }
+    }
+    for (edge, &[i, j]) in graph.edges().iter().enumerate() {
+        if let (Some(bi), Some(bj)) = (index[i], index[j]) {
+            for col in 0..3 {
+                for row in 0..3 {
+                    each(Entry::Edge { edge, row, col, transposed: bi < bj });
+                }
+            }
+        }
+    }
+}
+
+/// The scalar position of each entry `walk` lists.
+fn visit(graph: &Graph, index: &[Option<usize>], mut each: impl FnMut(usize, usize)) {
+    walk(graph, index, |entry| match entry {
+        Entry::Diagonal { node, row, col } => {
+            let b = index[node].unwrap_or(0);
+            each(3 * b + row, 3 * b + col)
+        }
+        Entry::Edge { edge, row, col, transposed } => {
+            let [i, j] = graph.edges()[edge];
+            let (bi, bj) = (index[i].unwrap_or(0), index[j].unwrap_or(0));
+            // Block (i, j) sits below the diagonal when i's block row is below j's; otherwise
+            // its transpose, block (j, i), does.
+            let (br, bc) = if transposed { (bj, bi) } else { (bi, bj) };
+            each(3 * br + row, 3 * bc + col)
+        }
+    });
+}

@@ -1,0 +1,97 @@
+//! Robust synchronisation by iteratively reweighted least squares on the chordal cost
+//! (Chatterjee and Govindu 2013/2018; Hartley, Aftab and Trumpf 2011; MATH.md, "Robust
+//! synchronisation").
+//!
+//! Each round sets `w_ij ← w⁰_ij ρ'(θ_ij)/θ_ij` from the current residual angles and takes a few
+//! Newton steps on the reweighted cost. First L1 rounds (`ρ = θ`: weight `1/θ`, the geodesic
+//! median's Weiszfeld weight), a robust start that wrong edges cannot drag far; then Geman–McClure
+//! rounds (`ρ = σ²θ²/(σ² + θ²)`: weight `(σ²/(σ² + θ²))²`), which all but ignore edges many `σ`
+//! off. An edge is an outlier when its final residual exceeds `3σ` (its weight below 1%).
+
+use glam::DQuat;
+
+use super::blocks::Pattern;
+use super::cost::residuals;
+use super::graph::Graph;
+use super::newton::refine;
+
+/// The robust method's result before it is packaged.
+pub(crate) struct Robust {
+    pub q: Vec<DQuat>,
+    /// `w_ij / w⁰_ij`, the last round's factor on each edge's weight.
+    pub factors: Vec<f64>,
+    pub outliers: Vec<bool>,
+    pub iterations: usize,
+    /// The Geman–McClure scale `σ`, radians.
+    pub scale: f64,
+}
+
+/// L1 rounds at most; they stop early when no weight moves by 1e-3 (relative).
+const L1_ROUNDS: usize = 15;
+/// Geman–McClure rounds at most; they stop early when no weight moves by 1e-6.
+const GM_ROUNDS: usize = 30;
+/// Newton steps a round: the weights move between rounds, so each round's problem is only
+/// approached, not solved.
+const STEPS_A_ROUND: usize = 4;
+/// The residual below which the L1 weight stops growing (radians, 0.06°): `1/θ` is unbounded.
+const L1_FLOOR: f64 = 1e-3;
+
+fn median(values: &[f64]) -> f64 {
+    let mut sorted = values.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let n = sorted.len();
+    if n % 2 == 1 { sorted[n / 2] } else { 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]) }
+}
+
+/// The largest relative change from `old` to `new`.
+fn moved(old: &[f64], new: &[f64]) -> f64 {
+    old.iter().zip(new).map(|(&a, &b)| ((a - b) / a.max(b)).abs()).fold(0.0, f64::max)
+}
+
+/// IRLS from `start`. `scale` is the Geman–McClure `σ` in radians, or `None` for twice the median
+/// residual after the L1 rounds (with at most half the edges wrong, the median is an inlier's).
+pub(crate) fn robust(
+    graph: &Graph,
+    pattern: &Pattern,
+    start: Vec<DQuat>,
+    scale: Option<f64>,
+) -> Robust {
+    let base = graph.weights();
+    let mut q = start;
+    let mut iterations = 0;
+    let mut factors = vec![1.0; base.len()];
+    for _ in 0..L1_ROUNDS {
+        let theta = residuals(graph, &q);
+        let next: Vec<f64> = theta.iter().map(|&t| 1.0 / t.max(L1_FLOOR)).collect();
+        let change = moved(&factors, &next);
+        factors = next;
+        let weighted = graph.reweighted(base.iter().zip(&factors).map(|(w, f)| w * f).collect());
+        let refined = refine(&weighted, pattern, q, STEPS_A_ROUND);
+        q = refined.q;
+        iterations += refined.iterations;
+        if change < 1e-3 {
+            break;
+        }
+    }
+    let sigma = scale.unwrap_or_else(|| (2.0 * median(&residuals(graph, &q))).max(1e-6));
+    let geman_mcclure = |t: f64| {
+        let r = sigma * sigma / (sigma * sigma + t * t);
+        r * r
+    };
+    for _ in 0..GM_ROUNDS {
+        let theta = residuals(graph, &q);
+        let next: Vec<f64> = theta.iter().map(|&t| geman_mcclure(t)).collect();
+        let change = moved(&factors, &next);
+        factors = next;
+        let weighted = graph.reweighted(base.iter().zip(&factors).map(|(w, f)| w * f).collect());
+        let refined = refine(&weighted, pattern, q, STEPS_A_ROUND);
+        q = refined.q;
+        iterations += refined.iterations;
+        if change < 1e-6 {
+            break;
+        }
+    }
+    let theta = residuals(graph, &q);
+    let outliers = theta.iter().map(|&t| t > 3.0 * sigma).collect();
+    Robust { q, factors, outliers, iterations, scale: sigma }
+}

@@ -1,0 +1,100 @@
+//! The spectral relaxation (Singer 2011; Arrigoni et al. 2018): the start of the chordal and
+//! robust methods.
+//!
+//! With `Y = [R_1ᵀ; …; R_nᵀ]`, `f = tr(Yᵀ L Y)` for the connection Laplacian `L` (MATH.md, "The
+//! certificate"). Dropping the constraint `R_i ∈ SO(3)` for `YᵀY = n I` leaves the three
+//! eigenvectors of `L` with the smallest eigenvalues, `V` (3n×3): `V_i ≈ R_iᵀ O` for one 3×3
+//! orthogonal `O` (the gauge). Each block is then rounded to the nearest rotation. MATH.md
+//! states it with the top eigenvectors of the connection matrix `W = D − L`; with equal degrees
+//! they are the same vectors, and `L`'s are what shift-and-invert Lanczos finds in a few dozen
+//! steps with the same factorisation as the rest of the solver.
+
+use glam::{DMat3, DQuat, DVec3};
+
+use super::blocks::{Blocks, Pattern};
+use super::graph::Graph;
+use super::lanczos;
+use crate::average::eigen;
+use crate::quaternion::from_wxyz;
+
+/// The connection Laplacian `L`: diagonal blocks `d_i I₃`, block `(i, j)` = `−w_ij R_ij`.
+pub(crate) fn laplacian(graph: &Graph) -> Blocks {
+    let mut l = Blocks::zeros(graph);
+    let edges = graph.edges().iter().zip(graph.relative()).zip(graph.weights());
+    for (k, ((&[i, j], &relative), &w)) in edges.enumerate() {
+        l.diag[i] += DMat3::IDENTITY * w;
+        l.diag[j] += DMat3::IDENTITY * w;
+        l.off[k] = DMat3::from_quat(relative) * -w;
+    }
+    l
+}
+
+/// The rotation nearest `a` in the Frobenius norm (maximising `tr(Rᵀ a)`), as a unit quaternion:
+/// `tr(R(q)ᵀ a) = qᵀ K q` for the symmetric 4×4 `K` of Bar-Itzhack (2000), so `q` is `K`'s top
+/// eigenvector. The determinant is +1 by construction, with no SVD and no reflection to undo.
+pub(crate) fn nearest_rotation(a: DMat3) -> DQuat {
+    let b = |r: usize, c: usize| a.col(c)[r];
+    let k = [
+        [b(0, 0) + b(1, 1) + b(2, 2), b(2, 1) - b(1, 2), b(0, 2) - b(2, 0), b(1, 0) - b(0, 1)],
+        [b(2, 1) - b(1, 2), b(0, 0) - b(1, 1) - b(2, 2), b(0, 1) + b(1, 0), b(0, 2) + b(2, 0)],
+        [b(0, 2) - b(2, 0), b(0, 1) + b(1, 0), -b(0, 0) + b(1, 1) - b(2, 2), b(1, 2) + b(2, 1)],
+        [b(1, 0) - b(0, 1), b(0, 2) + b(2, 0), b(1, 2) + b(2, 1), -b(0, 0) - b(1, 1) + b(2, 2)],
+    ];
+    let (_, vectors) = eigen(k);
+    let q = from_wxyz(vectors[0]);
+    if q.w < 0.0 { -q } else { q }
+}
+
+/// The spectral estimate of every `q_i`, up to the gauge, and the Lanczos steps it took.
+pub(crate) fn spectral(graph: &Graph, pattern: &Pattern) -> (Vec<DQuat>, usize) {
+    let l = laplacian(graph);
+    let n = graph.count();
+    let scale = graph.degrees().into_iter().fold(0.0, f64::max);
+    // L ⪰ 0 with eigenvalues as small as 0 (consistent data): a shift keeps the factor positive
+    // definite, and larger shifts are tried if rounding makes a pivot non-positive.
+    let mut shift = 1e-9 * scale;
+    let factor = loop {
+        if let Some(factor) = pattern.factor(graph, &l, shift) {
+            break factor;
+        }
+        shift *= 100.0;
+    };
+    // One vector at a time, each run deflating the ones found: a single Krylov sequence holds
+    // one vector of a repeated eigenvalue, and noise-free data make the smallest one triple.
+    let mut v: Vec<Vec<f64>> = Vec::new();
+    let mut steps = 0;
+    for _ in 0..3 {
+        let ritz = lanczos::largest(
+            3 * n,
+            |x, y| {
+                y.copy_from_slice(x);
+                factor.solve(y);
+            },
+            &v,
+            1,
+            200,
+            1e-10,
+        );
+        steps += ritz.steps;
+        v.extend(ritz.vectors);
+    }
+    let block = |i: usize| {
+        // Row r of V_i is (v₀, v₁, v₂)[3i + r]; the columns of V_iᵀ are those rows.
+        DMat3::from_cols(
+            DVec3::new(v[0][3 * i], v[1][3 * i], v[2][3 * i]),
+            DVec3::new(v[0][3 * i + 1], v[1][3 * i + 1], v[2][3 * i + 1]),
+            DVec3::new(v[0][3 * i + 2], v[1][3 * i + 2], v[2][3 * i + 2]),
+        )
+    };
+    // V = Y O with det O = ±1: if most blocks are reflections, so is O; flipping one column of V
+    // makes it a rotation.
+    let reflections = (0..n).filter(|&i| block(i).determinant() < 0.0).count();
+    let flip = if 2 * reflections > n {
+        DMat3::from_diagonal(DVec3::new(-1.0, 1.0, 1.0))
+    } else {
+        DMat3::IDENTITY
+    };
+    // V_iᵀ = Oᵀ R_i: the nearest rotation is R_i up to the gauge Oᵀ.
+    let q = (0..n).map(|i| nearest_rotation(flip * block(i))).collect();
+    (q, steps)
+}

@@ -1,0 +1,536 @@
+//! Tests against MATH.md's reference values and independent computations (dense matrices,
+//! finite differences, the flow).
+
+use std::f64::consts::{FRAC_1_SQRT_2, PI};
+
+use faer::{Mat, Side};
+use glam::{DMat3, DQuat, DVec3};
+
+use super::*;
+use crate::error::KliError;
+use crate::quaternion::{exp, from_wxyz};
+use crate::swarm::Random;
+
+fn about_x(degrees: f64) -> DQuat {
+    DQuat::from_rotation_x(degrees.to_radians())
+}
+
+/// The angle between two rotations, blind to sign.
+fn angle(a: DQuat, b: DQuat) -> f64 {
+    let e = a.conjugate() * b;
+    2.0 * DVec3::new(e.x, e.y, e.z).length().atan2(e.w.abs())
+}
+
+fn triangle() -> Graph {
+    let rel = [DQuat::IDENTITY, DQuat::IDENTITY, about_x(60.0)];
+    Graph::new(None, &[[0, 1], [1, 2], [0, 2]], &rel, None).unwrap()
+}
+
+#[test]
+fn triangle_spreads_the_loop_error_evenly() {
+    let result = synchronize(&triangle(), &SyncOptions::default()).unwrap();
+    let expected = [
+        [1.0, 0.0, 0.0, 0.0],
+        [0.984807753012208, 0.173648177666930, 0.0, 0.0],
+        [0.939692620785908, 0.342020143325669, 0.0, 0.0],
+    ];
+    for (q, e) in result.rotations.iter().zip(expected) {
+        let got = crate::quaternion::to_wxyz(*q);
+        for k in 0..4 {
+            assert!((got[k] - e[k]).abs() < 1e-12, "{got:?} vs {e:?}");
+        }
+    }
+    assert!((result.cost - 0.723688550569099).abs() < 1e-12, "{}", result.cost);
+    for r in &result.residuals {
+        assert!((r.to_degrees() - 20.0).abs() < 1e-9, "{r}");
+    }
+    let certificate = result.certificate.unwrap();
+    assert!(certificate.certified);
+    assert!(certificate.gap > 0.0);
+}
+
+#[test]
+fn square_of_quarter_turns_is_consistent_on_so3() {
+    // The quaternion product round the loop is −1: a sign-dependent method sees a 360° error.
+    let quarter = from_wxyz([FRAC_1_SQRT_2, 0.0, 0.0, FRAC_1_SQRT_2]);
+    let graph = Graph::new(None, &[[0, 1], [1, 2], [2, 3], [3, 0]], &[quarter; 4], None).unwrap();
+    for method in [Method::Chordal, Method::Spectral, Method::Robust] {
+        let result = synchronize(&graph, &SyncOptions { method, ..Default::default() }).unwrap();
+        assert!(result.cost < 1e-16, "{method:?} {}", result.cost);
+        let expected = [
+            [1.0, 0.0, 0.0, 0.0],
+            [FRAC_1_SQRT_2, 0.0, 0.0, FRAC_1_SQRT_2],
+            [0.0, 0.0, 0.0, 1.0],
+            [FRAC_1_SQRT_2, 0.0, 0.0, -FRAC_1_SQRT_2],
+        ];
+        for (q, e) in result.rotations.iter().zip(expected) {
+            assert!(angle(*q, from_wxyz(e)) < 1e-9, "{method:?} {q:?} vs {e:?}");
+            assert!(q.w >= 0.0);
+        }
+    }
+}
+
+/// A random connected graph in the style of Chatterjee and Govindu: edges with probability `p`
+/// (and a ring, so it is connected), each measured with a Gaussian angle of `noise` radians about
+/// a random axis, a share `wrong` of them replaced by uniform random rotations, random signs.
+pub(super) struct Synthetic {
+    pub graph: Graph,
+    pub truth: Vec<DQuat>,
+    pub wrong: Vec<bool>,
+}
+
+pub(super) fn synthetic(n: usize, p: f64, noise: f64, wrong: f64, seed: u64) -> Synthetic {
+    let mut random = Random::new(seed);
+    let truth: Vec<DQuat> = (0..n).map(|_| random.unit_quaternion()).collect();
+    let mut edges = Vec::new();
+    for i in 0..n {
+        for j in i + 1..n {
+            if j == i + 1 || (i == 0 && j == n - 1) || random.uniform() < p {
+                edges.push([i, j]);
+            }
+        }
+    }
+    let mut relative = Vec::new();
+    let mut is_wrong = Vec::new();
+    for &[i, j] in &edges {
+        let bad = random.uniform() < wrong;
+        let q = if bad {
+            random.unit_quaternion()
+        } else {
+            let axis = random.gaussian3().normalize();
+            let angle = noise * random.gaussian();
+            truth[i].conjugate() * truth[j] * exp(axis * (angle / 2.0))
+        };
+        let sign = if random.uniform() < 0.5 { -1.0 } else { 1.0 };
+        relative.push(q * sign);
+        is_wrong.push(bad);
+    }
+    Synthetic {
+        graph: Graph::new(Some(n), &edges, &relative, None).unwrap(),
+        truth,
+        wrong: is_wrong,
+    }
+}
+
+/// `f` at `q_i exp(δ_i/2)`.
+fn pulled_back(graph: &Graph, q: &[DQuat], delta: &[f64]) -> f64 {
+    let moved: Vec<DQuat> = q
+        .iter()
+        .enumerate()
+        .map(|(i, &q)| q * exp(DVec3::new(delta[3 * i], delta[3 * i + 1], delta[3 * i + 2]) * 0.5))
+        .collect();
+    cost::cost(graph, &moved)
+}
+
+#[test]
+fn the_second_order_model_matches_finite_differences() {
+    let s = synthetic(12, 0.4, 0.3, 0.2, 7);
+    let mut random = Random::new(3);
+    let q: Vec<DQuat> = (0..12).map(|_| random.unit_quaternion()).collect();
+    let (g, h) = cost::model(&s.graph, &q);
+    let dim = 36;
+    let h_step = 1e-4;
+    for trial in 0..5 {
+        let v: Vec<f64> = (0..dim).map(|_| random.gaussian()).collect();
+        let plus: Vec<f64> = v.iter().map(|x| x * h_step).collect();
+        let minus: Vec<f64> = v.iter().map(|x| -x * h_step).collect();
+        let zero = vec![0.0; dim];
+        let (fp, f0, fm) = (
+            pulled_back(&s.graph, &q, &plus),
+            pulled_back(&s.graph, &q, &zero),
+            pulled_back(&s.graph, &q, &minus),
+        );
+        let slope = (fp - fm) / (2.0 * h_step);
+        let curvature = (fp - 2.0 * f0 + fm) / (h_step * h_step);
+        let gv: f64 = g.iter().zip(&v).map(|(a, b)| a * b).sum();
+        let mut hv = vec![0.0; dim];
+        h.apply(&s.graph, &v, &mut hv);
+        let vhv: f64 = v.iter().zip(&hv).map(|(a, b)| a * b).sum();
+        assert!((slope - gv).abs() < 1e-6 * (1.0 + gv.abs()), "trial {trial}: {slope} vs {gv}");
+        assert!(
+            (curvature - vhv).abs() < 1e-4 * (1.0 + vhv.abs()),
+            "trial {trial}: {curvature} vs {vhv}"
+        );
+    }
+}
+
+#[allow(clippy::needless_range_loop)]
+/// `S = L − Λ` written densely from MATH.md's formulas, and its eigenvalues by faer's dense
+/// self-adjoint solver.
+fn dense_certificate_eigenvalues(graph: &Graph, q: &[DQuat]) -> Vec<f64> {
+    let n = graph.count();
+    let mut l = Mat::<f64>::zeros(3 * n, 3 * n);
+    let r: Vec<DMat3> = q.iter().map(|&q| DMat3::from_quat(q)).collect();
+    for ((&[i, j], &rel), &w) in graph.edges().iter().zip(graph.relative()).zip(graph.weights()) {
+        let rij = DMat3::from_quat(rel);
+        for a in 0..3 {
+            l[(3 * i + a, 3 * i + a)] += w;
+            l[(3 * j + a, 3 * j + a)] += w;
+            for b in 0..3 {
+                l[(3 * i + a, 3 * j + b)] -= w * rij.col(b)[a];
+                l[(3 * j + b, 3 * i + a)] -= w * rij.col(b)[a];
+            }
+        }
+    }
+    let mut y = Mat::<f64>::zeros(3 * n, 3);
+    for i in 0..n {
+        for a in 0..3 {
+            for b in 0..3 {
+                y[(3 * i + a, b)] = r[i].col(a)[b]; // (R_iᵀ)_ab = (R_i)_ba
+            }
+        }
+    }
+    let ly = &l * &y;
+    let mut s = l.clone();
+    for i in 0..n {
+        // Λ_i = sym((LY)_i R_i)
+        let mut m = [[0.0; 3]; 3];
+        for a in 0..3 {
+            for b in 0..3 {
+                m[a][b] = (0..3).map(|k| ly[(3 * i + a, k)] * r[i].col(b)[k]).sum();
+            }
+        }
+        for a in 0..3 {
+            for b in 0..3 {
+                s[(3 * i + a, 3 * i + b)] -= 0.5 * (m[a][b] + m[b][a]);
+            }
+        }
+    }
+    s.self_adjoint_eigenvalues(Side::Lower).unwrap()
+}
+
+#[test]
+fn the_certificate_agrees_with_a_dense_eigensolver() {
+    for (seed, noise) in [(1, 0.05), (2, 0.2), (3, 0.4)] {
+        let s = synthetic(20, 0.3, noise, 0.0, seed);
+        let result = synchronize(&s.graph, &SyncOptions::default()).unwrap();
+        let certificate = result.certificate.unwrap();
+        let dense = dense_certificate_eigenvalues(&s.graph, &result.rotations);
+        assert!(dense[0].abs() < 1e-9 && dense[2].abs() < 1e-9, "{:?}", &dense[..4]);
+        assert!(dense[3] > 0.0);
+        assert!(certificate.certified);
+        assert!(
+            (certificate.gap - dense[3]).abs() < 1e-6 * dense[3],
+            "{} vs {}",
+            certificate.gap,
+            dense[3]
+        );
+        assert!(certificate.lambda_min.abs() < 1e-9);
+    }
+}
+
+/// The twisted state of a ring with every measurement the identity: node k turned by
+/// 2πk/n about z. Each edge is off by the same angle, so every node is pulled equally both ways:
+/// a stationary point with `f > 0`, while the consensus has `f = 0`.
+#[test]
+fn the_certificate_fails_at_a_twisted_ring() {
+    let n = 10;
+    let edges: Vec<[usize; 2]> = (0..n).map(|i| [i, (i + 1) % n]).collect();
+    let graph = Graph::new(None, &edges, &vec![DQuat::IDENTITY; n], None).unwrap();
+    let twisted: Vec<DQuat> =
+        (0..n).map(|k| DQuat::from_rotation_z(2.0 * PI * k as f64 / n as f64)).collect();
+    let (gradient, _) = cost::model(&graph, &twisted);
+    assert!(gradient.iter().all(|g| g.abs() < 1e-12));
+    // Newton from the twisted state stays there: it is a critical point.
+    let reduced = blocks::Pattern::new(&graph, Some(0));
+    let refined = newton::refine(&graph, &reduced, twisted.clone(), 50);
+    assert!(cost::cost(&graph, &refined.q) > 1.0);
+    let full = blocks::Pattern::new(&graph, None);
+    let certificate = certificate::certify(&graph, &full, &refined.q);
+    let dense = dense_certificate_eigenvalues(&graph, &refined.q);
+    assert!(!certificate.certified);
+    assert!(dense[0] < -0.1, "{:?}", &dense[..4]);
+    assert!(
+        (certificate.lambda_min - dense[0]).abs() < 1e-6 * dense[0].abs(),
+        "{} vs {}",
+        certificate.lambda_min,
+        dense[0]
+    );
+    // From the spectral start, the same graph is solved and certified.
+    let solved = synchronize(&graph, &SyncOptions::default()).unwrap();
+    assert!(solved.cost < 1e-20 && solved.certificate.unwrap().certified);
+}
+
+#[test]
+fn the_flow_settles_on_the_certified_minimum() {
+    let s = synthetic(50, 0.3, 5f64.to_radians(), 0.0, 11);
+    let solved = synchronize(&s.graph, &SyncOptions::default()).unwrap();
+    let certificate = solved.certificate.unwrap();
+    assert!(certificate.certified && certificate.gap > 0.0);
+    let mut flow = SyncFlow::random(s.graph.clone(), 5);
+    let mut last = flow.cost();
+    for _ in 0..100 {
+        flow.step(0.02, 50).unwrap();
+        assert!(flow.cost() <= last + 1e-12, "the flow raised f");
+        last = flow.cost();
+    }
+    assert!(
+        (flow.cost() - solved.cost).abs() < 1e-9 * solved.cost,
+        "{} vs {}",
+        flow.cost(),
+        solved.cost
+    );
+    let by_flow = errors_to_truth(flow.rotations(), &solved.rotations);
+    assert!(
+        by_flow.iter().all(|&e| e < 1e-4),
+        "{:?}",
+        by_flow.iter().fold(0.0_f64, |a, &b| a.max(b))
+    );
+    let errors = errors_to_truth(&solved.rotations, &s.truth);
+    let mean = errors.iter().sum::<f64>() / errors.len() as f64;
+    assert!(mean.to_degrees() < 3.0, "{}", mean.to_degrees());
+}
+
+fn same(a: &Synchronized, b: &Synchronized) {
+    assert!((a.cost - b.cost).abs() < 1e-10 * (1.0 + a.cost), "{} vs {}", a.cost, b.cost);
+    for (p, q) in a.rotations.iter().zip(&b.rotations) {
+        assert!(angle(*p, *q) < 1e-8, "{p:?} vs {q:?}");
+    }
+}
+
+#[test]
+fn edge_order_direction_and_signs_do_not_matter() {
+    let s = synthetic(30, 0.25, 0.1, 0.0, 21);
+    let base = synchronize(&s.graph, &SyncOptions::default()).unwrap();
+    let edges = s.graph.edges();
+    let relative = s.graph.relative();
+    let m = edges.len();
+    // Reversed order, every other edge reversed as (j, i) with q̄_ij, every third sign flipped.
+    let order: Vec<usize> = (0..m).rev().collect();
+    let e2: Vec<[usize; 2]> = order
+        .iter()
+        .map(|&k| if k % 2 == 0 { [edges[k][1], edges[k][0]] } else { edges[k] })
+        .collect();
+    let r2: Vec<DQuat> = order
+        .iter()
+        .map(|&k| {
+            let q = if k % 2 == 0 { relative[k].conjugate() } else { relative[k] };
+            if k % 3 == 0 { -q } else { q }
+        })
+        .collect();
+    let other = Graph::new(Some(30), &e2, &r2, None).unwrap();
+    let result = synchronize(&other, &SyncOptions::default()).unwrap();
+    same(&base, &result);
+    let mut reordered: Vec<f64> = order.iter().map(|&k| base.residuals[k]).collect();
+    for (a, b) in reordered.iter_mut().zip(&result.residuals) {
+        assert!((*a - b).abs() < 1e-8);
+    }
+}
+
+#[test]
+fn a_parallel_edge_counts_as_its_weight() {
+    let s = synthetic(15, 0.3, 0.2, 0.0, 4);
+    let edges = s.graph.edges();
+    let mut e2 = edges.to_vec();
+    e2.push(edges[0]);
+    let mut r2 = s.graph.relative().to_vec();
+    r2.push(-r2[0]);
+    let doubled = Graph::new(None, &e2, &r2, None).unwrap();
+    let mut w = vec![1.0; edges.len()];
+    w[0] = 2.0;
+    let weighted = Graph::new(None, edges, s.graph.relative(), Some(&w)).unwrap();
+    let a = synchronize(&doubled, &SyncOptions::default()).unwrap();
+    let b = synchronize(&weighted, &SyncOptions::default()).unwrap();
+    same(&a, &b);
+}
+
+#[test]
+fn the_anchor_is_the_identity() {
+    let s = synthetic(20, 0.3, 0.1, 0.0, 9);
+    let a = synchronize(&s.graph, &SyncOptions::default()).unwrap();
+    let b = synchronize(&s.graph, &SyncOptions { anchor: 7, ..Default::default() }).unwrap();
+    assert!(angle(b.rotations[7], DQuat::IDENTITY) == 0.0);
+    assert!((a.cost - b.cost).abs() < 1e-10 * a.cost);
+    // The same solution in another gauge.
+    let errors = errors_to_truth(&a.rotations, &b.rotations);
+    assert!(errors.iter().all(|&e| e < 1e-8));
+}
+
+#[test]
+fn robust_ignores_wrong_edges() {
+    let s = synthetic(100, 0.1, 5f64.to_radians(), 0.3, 17);
+    let robust =
+        synchronize(&s.graph, &SyncOptions { method: Method::Robust, ..Default::default() })
+            .unwrap();
+    let chordal = synchronize(&s.graph, &SyncOptions::default()).unwrap();
+    let median = |mut e: Vec<f64>| {
+        e.sort_by(f64::total_cmp);
+        e[e.len() / 2].to_degrees()
+    };
+    let robust_error = median(errors_to_truth(&robust.rotations, &s.truth));
+    let chordal_error = median(errors_to_truth(&chordal.rotations, &s.truth));
+    assert!(
+        robust_error < 3.0 && robust_error < 0.5 * chordal_error,
+        "{robust_error} vs {chordal_error}"
+    );
+    // Flags: the edges truly far off are flagged, and few flagged edges are truly good.
+    let outliers = robust.outliers.unwrap();
+    let truly_off: Vec<f64> = s
+        .graph
+        .edges()
+        .iter()
+        .zip(s.graph.relative())
+        .map(|(&[i, j], &r)| angle(s.truth[i].conjugate() * s.truth[j], r))
+        .collect();
+    let far = truly_off.iter().filter(|&&t| t > 15f64.to_radians()).count();
+    let far_flagged =
+        truly_off.iter().zip(&outliers).filter(|&(&t, &o)| o && t > 15f64.to_radians()).count();
+    let good_flagged =
+        truly_off.iter().zip(&outliers).filter(|&(&t, &o)| o && t < 10f64.to_radians()).count();
+    let flagged = outliers.iter().filter(|&&o| o).count();
+    assert!(far_flagged as f64 >= 0.95 * far as f64, "{far_flagged} of {far}");
+    assert!(good_flagged as f64 <= 0.01 * flagged as f64, "{good_flagged} of {flagged}");
+    let weights = robust.weights.unwrap();
+    assert!(weights.iter().all(|&w| w > 0.0 && w <= 1.0));
+    let _ = s.wrong;
+}
+
+fn refused(result: Result<Graph, KliError>) -> String {
+    let error = result.unwrap_err();
+    error.message(&|s| s.to_string(), &|x| x.to_string())
+}
+
+#[test]
+fn bad_graphs_are_refused_naming_the_argument() {
+    let one = [DQuat::IDENTITY];
+    let two = [DQuat::IDENTITY; 2];
+    assert!(refused(Graph::new(None, &[], &[], None)).starts_with("edges is empty"));
+    let m = refused(Graph::new(Some(2), &[[0, 2]], &one, None));
+    assert!(m.starts_with("edges[0] names node 2, but count is 2"), "{m}");
+    let m = refused(Graph::new(None, &[[0, 1], [1, 1]], &two, None));
+    assert!(m.starts_with("edges[1] joins node 1 to itself"), "{m}");
+    let m = refused(Graph::new(None, &[[0, 1], [1, 2]], &one, None));
+    assert!(m.starts_with("relative must hold 4 numbers per edge"), "{m}");
+    let m = refused(Graph::new(None, &[[0, 1]], &two, None));
+    assert!(m.starts_with("relative must hold"), "{m}");
+    let nan = DQuat::from_xyzw(f64::NAN, 0.0, 0.0, 1.0);
+    let m = refused(Graph::new(None, &[[0, 1], [1, 2]], &[DQuat::IDENTITY, nan], None));
+    assert!(m.starts_with("relative[1] must be a quaternion"), "{m}");
+    let zero = DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0);
+    let m = refused(Graph::new(None, &[[0, 1]], &[zero], None));
+    assert!(m.starts_with("relative[0] must be a quaternion") && m.contains("zero length"), "{m}");
+    for w in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        let m = refused(Graph::new(None, &[[0, 1], [1, 2]], &two, Some(&[1.0, w])));
+        assert!(m.starts_with("weights[1] must be a finite number > 0"), "{w}: {m}");
+    }
+    let m = refused(Graph::new(None, &[[0, 1], [1, 2]], &two, Some(&[1.0])));
+    assert!(m.starts_with("weights must hold one number per edge: 2 (got 1)"), "{m}");
+    // Two components: {0, 1} and {2, 3}; and a lone node 4 of a declared count.
+    let m = refused(Graph::new(None, &[[0, 1], [2, 3], [3, 2]], &[DQuat::IDENTITY; 3], None));
+    assert!(
+        m.starts_with("edges do not connect the graph: nodes 2, 3 are cut off from node 0"),
+        "{m}"
+    );
+    let m = refused(Graph::new(Some(4), &[[0, 1], [1, 2], [2, 0]], &[DQuat::IDENTITY; 3], None));
+    assert!(m.contains("node 3 is cut off from node 0"), "{m}");
+    // A count no edge list could connect is refused before anything of its size is allocated.
+    let m = refused(Graph::new(Some(usize::MAX), &[[0, 1]], &one, None));
+    assert!(m.starts_with("edges do not connect the graph"), "{m}");
+    // Eleven triangles, ten of them cut off from node 0's: 30 nodes named 8 and "22 more".
+    let many: Vec<[usize; 2]> = (0..11)
+        .flat_map(|t| [[3 * t, 3 * t + 1], [3 * t + 1, 3 * t + 2], [3 * t + 2, 3 * t]])
+        .collect();
+    let m = refused(Graph::new(None, &many, &vec![DQuat::IDENTITY; many.len()], None));
+    assert!(m.contains("nodes 3, 4, 5, 6, 7, 8, 9, 10 and 22 more are cut off"), "{m}");
+}
+
+#[test]
+fn bad_options_are_refused() {
+    let graph = triangle();
+    let message = |options: SyncOptions| {
+        synchronize(&graph, &options).unwrap_err().message(&|s| s.to_string(), &|x| x.to_string())
+    };
+    let m = message(SyncOptions { anchor: 3, ..Default::default() });
+    assert!(m.starts_with("anchor must be a node, from 0 to 2 (got 3)"), "{m}");
+    for scale in [0.0, -1.0, f64::NAN] {
+        let m = message(SyncOptions {
+            scale: Some(scale),
+            method: Method::Robust,
+            ..Default::default()
+        });
+        assert!(m.starts_with("scale must be a finite number > 0"), "{m}");
+    }
+    assert!("lsq".parse::<Method>().is_err());
+    assert_eq!("robust".parse::<Method>().unwrap(), Method::Robust);
+}
+
+#[test]
+fn the_flow_refuses_bad_steps_and_starts() {
+    let mut flow = SyncFlow::random(triangle(), 1);
+    assert!(flow.step(0.0, 1).is_err());
+    assert!(flow.step(f64::NAN, 1).is_err());
+    assert!(flow.step(0.1, MAX_STEPS + 1).is_err());
+    assert_eq!(flow.time(), 0.0);
+    assert!(SyncFlow::new(triangle(), &[DQuat::IDENTITY; 2]).is_err());
+    let zero = DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0);
+    assert!(SyncFlow::new(triangle(), &[DQuat::IDENTITY, zero, DQuat::IDENTITY]).is_err());
+    // A step far too long still leaves every node on S³.
+    flow.step(1e6, 3).unwrap();
+    assert!(flow.rotations().iter().all(|q| (q.length() - 1.0).abs() < 1e-12));
+}
+
+#[test]
+fn g2o_and_toro_lines_are_read() {
+    // One g2o edge (qx qy qz qw = a quarter turn about z), one TORO edge (roll, pitch, yaw), the
+    // vertices of all three nodes, a comment, FIX, information entries and a blank line.
+    let text = "# a pose graph\n\
+        VERTEX_SE3:QUAT 0 0 0 0 0 0 0 1\n\
+        VERTEX_SE3:QUAT 1 1 0 0 0 0 0.7071067811865476 0.7071067811865476\n\
+        VERTEX3 2 0 0 0 0.1 0.2 0.3\n\
+        \n\
+        FIX 0\n\
+        EDGE_SE3:QUAT 0 1 1 0 0 0 0 0.7071067811865476 0.7071067811865476 1 0 0 0 0 0 1 0 0 0 0 1 0 0 0 1 0 0 1 0 1\n\
+        EDGE3 1 2 0 0 0 0.1 0.2 0.3\n";
+    let graph = read_g2o(text).unwrap();
+    assert_eq!(graph.count, 3);
+    assert_eq!(graph.edges, vec![[0, 1], [1, 2]]);
+    assert!(angle(graph.relative[0], DQuat::from_rotation_z(PI / 2.0)) < 1e-15);
+    // R = Rz(yaw) Ry(pitch) Rx(roll), multiplied out as matrices.
+    let (roll, pitch, yaw): (f64, f64, f64) = (0.1, 0.2, 0.3);
+    let rx = DMat3::from_cols_array_2d(&[
+        [1.0, 0.0, 0.0],
+        [0.0, roll.cos(), roll.sin()],
+        [0.0, -roll.sin(), roll.cos()],
+    ]);
+    let ry = DMat3::from_cols_array_2d(&[
+        [pitch.cos(), 0.0, -pitch.sin()],
+        [0.0, 1.0, 0.0],
+        [pitch.sin(), 0.0, pitch.cos()],
+    ]);
+    let rz = DMat3::from_cols_array_2d(&[
+        [yaw.cos(), yaw.sin(), 0.0],
+        [-yaw.sin(), yaw.cos(), 0.0],
+        [0.0, 0.0, 1.0],
+    ]);
+    let expected = rz * ry * rx;
+    let got = DMat3::from_quat(graph.relative[1]);
+    assert!((got - expected).to_cols_array().iter().all(|d| d.abs() < 1e-15));
+    let initial = graph.initial.unwrap();
+    assert!(angle(initial[1], DQuat::from_rotation_z(PI / 2.0)) < 1e-15);
+    assert!(angle(initial[2], graph.relative[1]) < 1e-15);
+    // Without a vertex for every node, no initial estimate.
+    assert!(read_g2o("EDGE3 0 1 0 0 0 0 0 0\n").unwrap().initial.is_none());
+}
+
+#[test]
+fn bad_g2o_lines_are_refused_with_their_number() {
+    let message =
+        |text: &str| read_g2o(text).unwrap_err().message(&|s| s.to_string(), &|x| x.to_string());
+    let edge = "EDGE3 0 1 0 0 0 0 0 0\n";
+    assert!(message("").starts_with("text holds no EDGE_SE3:QUAT or EDGE3 line"));
+    assert!(message("# only a comment\n").starts_with("text holds no"));
+    let m = message(&format!("{edge}EDGE_SE2 0 1 0 0 0\n"));
+    assert!(m.starts_with("text line 2: \"EDGE_SE2\" is not a 3D pose line"), "{m}");
+    let m = message(&format!("{edge}{edge}EDGE3 0 1 0 0 0 0 0\n"));
+    assert!(m.starts_with("text line 3: EDGE3 needs 8 numbers after the tag (got 7)"), "{m}");
+    let m = message("EDGE3 0 -1 0 0 0 0 0 0\n");
+    assert!(m.starts_with("text line 1: node id \"-1\" is not a non-negative integer"), "{m}");
+    let m = message("EDGE3 0 1.5 0 0 0 0 0 0\n");
+    assert!(m.contains("\"1.5\" is not a non-negative integer"), "{m}");
+    let m = message("EDGE_SE3:QUAT 0 1 0 0 0 0 0 0 0\n");
+    assert!(m.starts_with("text line 1: the quaternion has zero length"), "{m}");
+    let m = message("EDGE_SE3:QUAT 0 1 0 0 0 nan 0 0 1\n");
+    assert!(m.starts_with("text line 1: \"nan\" is not a finite number"), "{m}");
+    let m = message(&format!("{edge}EDGE3 0 18446744073709551615 0 0 0 0 0 0\n"));
+    assert!(m.contains("too large"), "{m}");
+}
