@@ -26,7 +26,7 @@ help:
 	@echo "make single each page as one self-contained HTML file in dist/single/ (works from file://)"
 	@echo "make bench  run the benchmarks"
 	@echo "make mutants   mutation testing of the core crate (long; MUTANTS_ARGS=\"-f FILE\" for one file)"
-	@echo "make fixtures  recompute the reference means from SciPy (tests/fixtures)"
+	@echo "make fixtures  recompute the reference values from SciPy and GTSAM (tests/fixtures)"
 
 setup: setup-rust setup-node setup-browser
 
@@ -52,10 +52,10 @@ setup-browser:
 	fi
 
 # The npm package: crates/kli-wasm, the JavaScript API only, in entries with a module each:
-# `kli` (kli.js, the default features), `kli/swarm` (swarm.js), `kli/spline` (spline.js) and
-# `kli/average` (average.js), each built with its feature alone, in a target directory of its
+# `kli` (kli.js, the default features), `kli/swarm` (swarm.js), `kli/spline` (spline.js),
+# `kli/average` (average.js) and `kli/sync` (sync.js), each built with its feature alone, in a target directory of its
 # own so every build stays cached.
-ENTRIES := swarm spline average
+ENTRIES := swarm spline average sync
 # What each build reads: a build runs again only when one of these is newer than its stamp, so
 # `make demo` serves at once when nothing changed (tests/e2e/contract.test.mjs checks it).
 CORE_SOURCES := Cargo.toml Cargo.lock $(shell find src -name '*.rs')
@@ -215,9 +215,10 @@ mutants: setup-rust
 	@command -v cargo-mutants >/dev/null || cargo install cargo-mutants --version '^27'
 	cargo mutants -p kli-rotations $(MUTANTS_ARGS)
 
-# The reference means tests/js/average.test.mjs checks against, from SciPy (once, committed).
+# The reference values the tests check against (tests/fixtures, committed): the means from SciPy,
+# the synchronised graphs from GTSAM.
 fixtures:
-	node scripts/average-fixture.mjs
+	node scripts/fixtures.mjs
 
 clean:
 	cargo clean

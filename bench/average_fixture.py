@@ -2,7 +2,7 @@
 # (the chordal mean, with weights) in both quaternion orders, and the Karcher mean and the L1
 # median by a second implementation of their iterations on SciPy's rotation vectors (log and exp
 # of SciPy, not kli's). Random sets: sizes 1 to 300, noise of 1° to 60°, some with outliers,
-# random signs, half weighted. Writes JSON to stdout; scripts/average-fixture.mjs commits it to
+# random signs, half weighted. Writes JSON to stdout; scripts/fixtures.mjs commits it to
 # tests/fixtures/average.json.
 import json, sys
 import numpy as np

@@ -1,19 +1,20 @@
 // The bench's Python: a virtual environment of its own (target/bench-venv), made on first use
-// with SciPy and NumPy at the versions below, so `make bench` installs what it needs itself.
+// with the versions below, so `make bench` installs what it needs itself: SciPy and NumPy, and
+// the synchronisation anchors GTSAM, COLMAP (pycolmap) and Theia (pytheia).
 import { execFileSync } from "node:child_process";
 import { existsSync } from "node:fs";
 
 const root = new URL("../", import.meta.url).pathname;
 const venv = `${root}target/bench-venv`;
 export const SCIPY = "1.17.1";
-const PACKAGES = [`scipy==${SCIPY}`, "numpy==2.4.6"];
+const PACKAGES = [`scipy==${SCIPY}`, "numpy==2.4.6", "gtsam==4.3.0", "pycolmap==4.2.1", "pytheia==1.2.1"];
 
-/** The venv's python, made (about half a minute, once) when missing or without SciPy. */
+/** The venv's python, made (about a minute, once) when missing or without a package. */
 export function python() {
   const bin = `${venv}/bin/python`;
   const ready = () => {
     try {
-      const check = ["-c", "import scipy; print(scipy.__version__)"];
+      const check = ["-c", "import scipy, gtsam, pycolmap, pytheia; print(scipy.__version__)"];
       return execFileSync(bin, check, { encoding: "utf8", stdio: ["ignore", "pipe", "ignore"] }).trim();
     } catch {
       return null;

@@ -16,6 +16,7 @@ const ENTRIES = {
   "kli/spline": ["spline.js", "spline_bg.wasm"],
   "kli/swarm": ["swarm.js", "swarm_bg.wasm"],
   "kli/average": ["average.js", "average_bg.wasm"],
+  "kli/sync": ["sync.js", "sync_bg.wasm"],
   "kli/three": ["three.js", "resample.js"],
   "kli/gltf": ["gltf.js", "resample.js"],
 };

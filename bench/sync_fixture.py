@@ -2,8 +2,8 @@
 # Σ w ‖R_i R_ij − R_j‖²_F itself (FrobeniusBetweenFactorRot3, Levenberg–Marquardt to rounding,
 # from GTSAM's own chordal initialisation), and NumPy's dense eigvalsh gives the certificate's
 # eigenvalues (S = L − Λ, MATH.md). Graphs: GTSAM's pose3example-grid, and random graphs with
-# weights, noise and random signs. Run in the bench's environment (target/bench-venv, with gtsam):
-#   target/bench-venv/bin/python bench/sync_fixture.py > tests/fixtures/sync.json
+# weights, noise and random signs. Run in the bench's environment (bench/python.mjs):
+#   make fixtures   (scripts/fixtures.mjs writes tests/fixtures/sync.json)
 import json, sys
 import numpy as np
 import gtsam

@@ -16,8 +16,8 @@ const workspace = manifest("Cargo.toml").split("[workspace.package]")[1];
 const crate = manifest("crates/kli-wasm/Cargo.toml");
 
 // Entries with a module each: `kli` (two rotations), `kli/swarm` (LoheSwarm), `kli/spline` (many
-// keyframes), `kli/average` (the mean of many rotations).
-const modules = ["kli", "swarm", "spline", "average"];
+// keyframes), `kli/average` (the mean of many rotations), `kli/sync` (rotations on a graph).
+const modules = ["kli", "swarm", "spline", "average", "sync"];
 for (const m of modules) {
   for (const file of [`${m}.js`, `${m}.d.ts`, `${m}_bg.wasm`, `${m}_bg.wasm.d.ts`]) {
     if (!existsSync(at(`pkg/${file}`))) throw new Error(`pkg/${file} is missing`);
@@ -130,6 +130,7 @@ const json = {
     "./swarm": entry("swarm"),
     "./spline": entry("spline"),
     "./average": entry("average"),
+    "./sync": entry("sync"),
     // Plain JavaScript over kli/spline (the same module instance in Node and in bundlers).
     "./three": { types: "./three.d.ts", default: "./three.js" },
     "./gltf": { types: "./gltf.d.ts", default: "./gltf.js" },

@@ -58,6 +58,7 @@ pub mod quaternion;
 pub mod slerp;
 pub mod spline;
 pub mod swarm;
+#[cfg(feature = "sync")]
 pub mod sync;
 mod trig;
 

@@ -24,6 +24,8 @@ use kli::spline::{
     ChainOptions, Curve, Keys, KliSpline, PiecewiseSlerp, RotvecCubic, SequentialKli, Squad,
 };
 use kli::swarm::{Graph, Random, Swarm, SwarmOptions, mean, order_parameter, rotation_order};
+#[cfg(feature = "sync")]
+use kli::sync::{self, SyncFlow, SyncOptions, errors_to_truth, read_g2o, synchronize};
 use kli::{
     DQuat, DVec3, Integrator, KliOptions, Requirement, axis_angle, from_axis_angle, from_wxyz,
     hopf, kli, require, slerp, to_wxyz,
@@ -571,6 +573,78 @@ fn curves_hostile_floats() {
                 if x == 0.5 && samples.len() == 3 && times.len() == 3 {
                     assert!(cubic.is_ok() || !samples[1].is_finite(), "{samples:?} {times:?}");
                 }
+            }
+        }
+    });
+}
+
+#[cfg(feature = "sync")]
+#[test]
+fn synchronisation_hostile_floats() {
+    bounded(|probe| {
+        let edges = [[0, 1], [1, 2], [0, 2], [2, 3]];
+        let ordinary = [DQuat::IDENTITY, from_wxyz([0.5; 4]), from_wxyz([0.0, 1.0, 0.0, 0.0]), DQuat::IDENTITY];
+        for x in HOSTILE {
+            let mut graphs = Vec::new();
+            for q in quaternions(x) {
+                let mut relative = ordinary;
+                relative[2] = q;
+                let graph = probe.call(
+                    || format!("sync::Graph::new(relative[2] = {q:?})"),
+                    || sync::Graph::new(None, &edges, &relative, None),
+                );
+                named(graph.clone());
+                graphs.extend(graph);
+            }
+            let weights = [1.0, x, 1.0, x];
+            let graph = probe.call(
+                || format!("sync::Graph::new(weights {weights:?})"),
+                || sync::Graph::new(None, &edges, &ordinary, Some(&weights)),
+            );
+            named(graph.clone());
+            graphs.extend(graph);
+            for graph in &graphs {
+                for method in [sync::Method::Chordal, sync::Method::Robust, sync::Method::Spectral] {
+                    for scale in [None, Some(x)] {
+                        let options = SyncOptions { method, scale, anchor: 3 };
+                        let result = probe.call(
+                            || format!("synchronize({graph:?}, {options:?})"),
+                            || synchronize(graph, &options),
+                        );
+                        match result {
+                            Ok(r) => {
+                                assert!(r.rotations.iter().all(|q| finite(*q)), "{graph:?}");
+                                assert!(r.cost.is_finite() && r.residuals.iter().all(|t| t.is_finite()));
+                            }
+                            Err(e) => assert_eq!(e.argument(), "scale", "{e}"),
+                        }
+                    }
+                }
+                let mut flow = SyncFlow::random(graph.clone(), x.to_bits());
+                for dt in HOSTILE {
+                    let stepped = probe.call(|| format!("SyncFlow::step({dt}, 10)"), || flow.step(dt, 10));
+                    if stepped.is_ok() {
+                        assert!(flow.rotations().iter().all(|q| finite(*q)), "dt {dt}");
+                    }
+                }
+                let refused = probe.call(|| "SyncFlow::step(0.01, usize::MAX)".into(), || flow.step(0.01, usize::MAX));
+                assert_eq!(refused.unwrap_err().argument(), "steps");
+                let mut start = vec![DQuat::IDENTITY; graph.count()];
+                for q in quaternions(x) {
+                    start[1] = q;
+                    named(probe.call(|| format!("SyncFlow::new(start[1] = {q:?})"), || SyncFlow::new(graph.clone(), &start)));
+                }
+            }
+            let qs = quaternions(x);
+            probe.call(|| format!("errors_to_truth({qs:?})"), || errors_to_truth(&qs, &qs));
+            for line in [
+                format!("EDGE3 0 1 0 0 0 {x} 0 0"),
+                format!("EDGE_SE3:QUAT 0 1 0 0 0 {x} 0 0 1"),
+                format!("EDGE_SE3:QUAT 0 1 0 0 0 {x} {x} {x} {x}"),
+                format!("VERTEX3 {x} 0 0 0 0 0 0\nEDGE3 0 1 0 0 0 0 0 0"),
+                format!("EDGE3 {x} 1 0 0 0 0 0 0"),
+            ] {
+                named(probe.call(|| format!("read_g2o({line:?})"), || read_g2o(&line)));
             }
         }
     });

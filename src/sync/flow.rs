@@ -11,7 +11,7 @@
 
 use glam::DQuat;
 
-use super::cost::cost;
+use super::cost::{cost, residuals};
 use super::graph::Graph;
 use crate::error::{KliError, Requirement, require};
 use crate::swarm::Random;
@@ -101,6 +101,11 @@ impl SyncFlow {
     /// The chordal cost `f` now.
     pub fn cost(&self) -> f64 {
         cost(&self.graph, &self.q)
+    }
+
+    /// Each edge's residual angle now, radians.
+    pub fn residuals(&self) -> Vec<f64> {
+        residuals(&self.graph, &self.q)
     }
 
     /// The time flowed.

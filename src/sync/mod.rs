@@ -138,6 +138,11 @@ pub fn synchronize(graph: &Graph, options: &SyncOptions) -> Result<Synchronized,
     if let Some(scale) = options.scale {
         require("scale", scale, Requirement::Positive)?;
     }
+    // The solution does not change when every weight is scaled; the solvers see the largest as 1,
+    // so no sum of weights overflows (1e308) or underflows (subnormals).
+    let unit = graph.weights().iter().copied().fold(0.0, f64::max);
+    let caller = graph;
+    let graph = &graph.reweighted(graph.weights().iter().map(|w| w / unit).collect());
     let full = blocks::Pattern::new(graph, None);
     let (start, lanczos_steps) = spectral::spectral(graph, &full);
     let mut result = Synchronized {
@@ -156,7 +161,14 @@ pub fn synchronize(graph: &Graph, options: &SyncOptions) -> Result<Synchronized,
             let reduced = blocks::Pattern::new(graph, Some(anchor));
             let refined = newton::refine(graph, &reduced, start, newton::MAX_ITERATIONS);
             result.iterations = refined.iterations;
-            result.certificate = Some(certificate::certify(graph, &full, &refined.q));
+            let c = certificate::certify(graph, &full, &refined.q);
+            // In the caller's units: S scales with the weights.
+            result.certificate = Some(Certificate {
+                lambda_min: c.lambda_min * unit,
+                gap: c.gap * unit,
+                tolerance: c.tolerance * unit,
+                ..c
+            });
             refined.q
         }
         Method::Robust => {
@@ -164,15 +176,15 @@ pub fn synchronize(graph: &Graph, options: &SyncOptions) -> Result<Synchronized,
             let robust = robust::robust(graph, &reduced, start, options.scale);
             result.iterations = robust.iterations;
             result.weights =
-                Some(graph.weights().iter().zip(&robust.factors).map(|(w, f)| w * f).collect());
+                Some(caller.weights().iter().zip(&robust.factors).map(|(w, f)| w * f).collect());
             result.outliers = Some(robust.outliers);
             result.scale = Some(robust.scale);
             robust.q
         }
     };
     result.rotations = anchored(&q, anchor);
-    result.cost = cost::cost(graph, &result.rotations);
-    result.residuals = cost::residuals(graph, &result.rotations);
+    result.cost = cost::cost(caller, &result.rotations);
+    result.residuals = cost::residuals(caller, &result.rotations);
     Ok(result)
 }
 

@@ -52,12 +52,20 @@ pub(crate) fn spectral(graph: &Graph, pattern: &Pattern) -> (Vec<DQuat>, usize) 
     let scale = graph.degrees().into_iter().fold(0.0, f64::max);
     // L ⪰ 0 with eigenvalues as small as 0 (consistent data): a shift keeps the factor positive
     // definite, and larger shifts are tried if rounding makes a pivot non-positive.
-    let mut shift = 1e-9 * scale;
-    let factor = loop {
-        if let Some(factor) = pattern.factor(graph, &l, shift) {
-            break factor;
+    // The weights come scaled to a largest of 1 (`synchronize`), so `scale ≥ 1`; by the last try
+    // the shift is far beyond `L`'s largest eigenvalue (`≤ 2 scale`).
+    let mut shift = 1e-9 * scale.max(1.0);
+    let mut factor = None;
+    for _try in 0..8 {
+        factor = pattern.factor(graph, &l, shift);
+        if factor.is_some() {
+            break;
         }
         shift *= 100.0;
+    }
+    let Some(factor) = factor else {
+        // Unreachable for finite weights; a start at the identity keeps the call total.
+        return (vec![DQuat::IDENTITY; n], 0);
     };
     // One vector at a time, each run deflating the ones found: a single Krylov sequence holds
     // one vector of a repeated eigenvalue, and noise-free data make the smallest one triple.

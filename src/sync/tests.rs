@@ -425,7 +425,13 @@ fn bad_graphs_are_refused_naming_the_argument() {
     assert!(m.contains("node 3 is cut off from node 0"), "{m}");
     // A count no edge list could connect is refused before anything of its size is allocated.
     let m = refused(Graph::new(Some(usize::MAX), &[[0, 1]], &one, None));
-    assert!(m.starts_with("edges do not connect the graph"), "{m}");
+    let rest = usize::MAX - 2 - 8;
+    assert!(m.starts_with(&format!("edges do not connect the graph: nodes 2, 3, 4, 5, 6, 7, 8, 9 and {rest} more")), "{m}");
+    let m = refused(Graph::new(None, &[[0, 1], [1, 4_000_000_000]], &two, None));
+    assert!(m.contains("nodes 2, 3, 4, 5, 6, 7, 8, 9 and 3999999990 more are cut off"), "{m}");
+    // Node 0 in no edge: everyone else is cut off from it.
+    let m = refused(Graph::new(None, &[[1, 2]], &one, None));
+    assert!(m.contains("nodes 1, 2 are cut off from node 0"), "{m}");
     // Eleven triangles, ten of them cut off from node 0's: 30 nodes named 8 and "22 more".
     let many: Vec<[usize; 2]> = (0..11)
         .flat_map(|t| [[3 * t, 3 * t + 1], [3 * t + 1, 3 * t + 2], [3 * t + 2, 3 * t]])

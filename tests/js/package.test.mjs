@@ -28,7 +28,7 @@ before(() => {
 test("the tarball holds every file the package needs, and only those", () => {
   const installed = readdirSync(join(project, "node_modules/kli")).sort();
   const entry = (m) => [`${m}.d.ts`, `${m}.js`, `${m}.node.js`, `${m}_bg.inline.js`, `${m}_bg.wasm`, `${m}_bg.wasm.d.ts`];
-  assert.deepEqual(installed, ["LICENSE", "README.md", ...entry("kli"), "package.json", ...entry("spline"), ...entry("swarm"), ...entry("average"), "three.d.ts", "three.js", "gltf.d.ts", "gltf.js", "resample.js"].sort());
+  assert.deepEqual(installed, ["LICENSE", "README.md", ...entry("kli"), "package.json", ...entry("spline"), ...entry("swarm"), ...entry("average"), ...entry("sync"), "three.d.ts", "three.js", "gltf.d.ts", "gltf.js", "resample.js"].sort());
   const manifest = JSON.parse(readFileSync(join(project, "node_modules/kli/package.json"), "utf8"));
   const cargo = readFileSync(join(root, "Cargo.toml"), "utf8");
   assert.equal(manifest.version, cargo.match(/^version = "(.*)"/m)[1]);
@@ -45,7 +45,7 @@ test("the tarball holds every file the package needs, and only those", () => {
 
 test("each entry's inlined copy is its .wasm byte for byte, and init() uses it where the file cannot be fetched", async () => {
   const dir = join(project, "node_modules/kli");
-  for (const m of ["kli", "swarm", "spline", "average"]) {
+  for (const m of ["kli", "swarm", "spline", "average", "sync"]) {
     const { default: base64 } = await import(join(dir, `${m}_bg.inline.js`));
     const bytes = gunzipSync(Buffer.from(base64, "base64"));
     assert.ok(bytes.equals(readFileSync(join(dir, `${m}_bg.wasm`))), m);
@@ -80,16 +80,17 @@ test("require() works for every entry in Node, as engines promises", () => {
     const out = {};
     for (const [entry, call] of [["kli", (m) => m.kli([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]).finalTime],
       ["kli/swarm", (m) => new m.LoheSwarm({ count: 3 }).count], ["kli/spline", (m) => m.kliSpline([[1, 0, 0, 0], [0, 1, 0, 0]]).endTime],
-      ["kli/average", (m) => m.averageRotations([[1, 0, 0, 0], [1, 0, 0, 0]]).rotation[0]]]) {
+      ["kli/average", (m) => m.averageRotations([[1, 0, 0, 0], [1, 0, 0, 0]]).rotation[0]],
+      ["kli/sync", (m) => m.synchronizeRotations({ edges: [[0, 1]], relative: [[1, 0, 0, 0]] }).rotations.length]]) {
       const m = require(entry);
-      const wasm = { kli: "kli/kli_bg.wasm", "kli/swarm": "kli/swarm_bg.wasm", "kli/spline": "kli/spline_bg.wasm", "kli/average": "kli/average_bg.wasm" }[entry];
+      const wasm = { kli: "kli/kli_bg.wasm", "kli/swarm": "kli/swarm_bg.wasm", "kli/spline": "kli/spline_bg.wasm", "kli/average": "kli/average_bg.wasm", "kli/sync": "kli/sync_bg.wasm" }[entry];
       m.initSync({ module: readFileSync(require.resolve(wasm)) });
       out[entry] = call(m);
     }
     console.log(JSON.stringify(out));
   `);
   const out = JSON.parse(execFileSync("node", ["require.cjs"], { cwd: project, encoding: "utf8" }));
-  assert.deepEqual(out, { kli: 11.66, "kli/swarm": 3, "kli/spline": 1, "kli/average": 1 });
+  assert.deepEqual(out, { kli: 11.66, "kli/swarm": 3, "kli/spline": 1, "kli/average": 1, "kli/sync": 8 });
 });
 
 test("await init() works in Node for every entry, with no argument (the node export condition)", () => {

@@ -17,7 +17,8 @@
 //! in), [`options`] (options objects, and a pair of rotations with its options); with the `api` feature (the `kli` entry) `calls` (the single calls), `path`
 //! (the `KliPath` class), `batch` (many pairs a call), `buffer` (`Float64Buffer`); with `swarm`
 //! (the `kli/swarm` entry) `swarm` (`LoheSwarm`); with `spline` (`kli/spline`) `spline`; with
-//! `average` (`kli/average`) `average` (`averageRotations`, `blendRotations`). Crates that add to the module (the demo page's
+//! `average` (`kli/average`) `average` (`averageRotations`, `blendRotations`); with `sync`
+//! (`kli/sync`) `sync` (`synchronizeRotations`, `readG2o`, `SyncFlow`). Crates that add to the module (the demo page's
 //! `kli-demo`) use [`error`], [`read`] and [`options`] too.
 
 #[cfg(feature = "average")]
@@ -37,6 +38,8 @@ pub mod read;
 pub mod spline;
 #[cfg(feature = "swarm")]
 pub mod swarm;
+#[cfg(feature = "sync")]
+pub mod sync;
 pub mod typed;
 pub mod value;
 

@@ -77,14 +77,24 @@ impl Fields {
         keys: &[&str],
         example: &str,
     ) -> Result<Option<Self>, KliError> {
+        Self::named("options", value, keys, example)
+    }
+
+    /// [`Fields::new`] for an object argument called `name` (`"input"`), not `options`.
+    pub fn named(
+        name: &str,
+        value: Option<JsValue>,
+        keys: &[&str],
+        example: &str,
+    ) -> Result<Option<Self>, KliError> {
         let Some(object) = value.filter(|v| !v.is_undefined() && !v.is_null()) else {
             return Ok(None);
         };
         if !object.is_object() || is_array(&object).unwrap_or(true) {
             let problem = format!("must be an object like {example} (got {})", describe(&object));
-            return Err(KliError::invalid("options", problem));
+            return Err(KliError::invalid(name, problem));
         }
-        let own = object_keys(&object).map_err(|e| unreadable("options", &e))?;
+        let own = object_keys(&object).map_err(|e| unreadable(name, &e))?;
         for key in own.iter() {
             let key = key.as_string().unwrap_or_default();
             if !keys.iter().any(|k| js_name(k) == key) {
@@ -93,7 +103,7 @@ impl Fields {
                     problem.push_str(if i == 0 { "" } else { ", " });
                     problem.push_str(&js_name(k));
                 }
-                return Err(KliError::invalid("options", problem));
+                return Err(KliError::invalid(name, problem));
             }
         }
         Ok(Some(Self { object }))

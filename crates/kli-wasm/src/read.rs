@@ -31,6 +31,14 @@ pub fn number_argument(name: &str, value: &JsValue) -> Result<f64, KliError> {
     })
 }
 
+/// `steps` as a count: absent is 1, else a whole number from 0 to 1e6 (the classes' `step`).
+pub fn whole_steps(steps: &JsValue) -> Result<usize, KliError> {
+    if steps.is_undefined() {
+        return Ok(1);
+    }
+    Ok(crate::options::whole("steps", number_argument("steps", steps)?, 0.0, 1e6)? as usize)
+}
+
 /// Reads exactly `N` numbers from a typed array or an array-like; `shape` names them in
 /// messages, e.g. "[w, x, y, z]". Whether they are finite is the core's to check.
 pub fn numbers<const N: usize>(

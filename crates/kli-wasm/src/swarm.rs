@@ -7,8 +7,8 @@ use kli::swarm::{Graph, MAX_COUNT, Swarm, SwarmOptions};
 use wasm_bindgen::prelude::*;
 
 use crate::error::JsResult;
-use crate::options::{Fields, whole};
-use crate::read::{Order, number_argument};
+use crate::options::Fields;
+use crate::read::{Order, number_argument, whole_steps};
 use crate::typed::numbers;
 
 #[wasm_bindgen(typescript_custom_section)]
@@ -84,14 +84,6 @@ pub fn read_swarm_options(value: &JsValue) -> Result<(SwarmOptions, Order), KliE
     }
     options.validate()?;
     Ok((options, order))
-}
-
-/// `steps` as a count: absent is 1, else a whole number from 0 to 1e6.
-pub fn whole_steps(steps: &JsValue) -> Result<usize, KliError> {
-    if steps.is_undefined() {
-        return Ok(1);
-    }
-    Ok(whole("steps", number_argument("steps", steps)?, 0.0, 1e6)? as usize)
 }
 
 /// N oscillators on S³ under `q_i' = w_i q_i + (K/N) Σ_j a_ij (q_j − (q_i·q_j) q_i)`.

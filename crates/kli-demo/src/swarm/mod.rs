@@ -7,7 +7,8 @@ pub mod view;
 use kli::quaternion::to_wxyz;
 use kli::swarm::{Graph, Swarm, SwarmOptions};
 use kli_wasm::error::JsResult;
-use kli_wasm::swarm::{SwarmOptionsObject, read_swarm_options, whole_steps};
+use kli_wasm::read::whole_steps;
+use kli_wasm::swarm::{SwarmOptionsObject, read_swarm_options};
 use wasm_bindgen::prelude::*;
 use web_sys::CanvasRenderingContext2d;
 
