@@ -583,7 +583,12 @@ fn curves_hostile_floats() {
 fn synchronisation_hostile_floats() {
     bounded(|probe| {
         let edges = [[0, 1], [1, 2], [0, 2], [2, 3]];
-        let ordinary = [DQuat::IDENTITY, from_wxyz([0.5; 4]), from_wxyz([0.0, 1.0, 0.0, 0.0]), DQuat::IDENTITY];
+        let ordinary = [
+            DQuat::IDENTITY,
+            from_wxyz([0.5; 4]),
+            from_wxyz([0.0, 1.0, 0.0, 0.0]),
+            DQuat::IDENTITY,
+        ];
         for x in HOSTILE {
             let mut graphs = Vec::new();
             for q in quaternions(x) {
@@ -604,7 +609,8 @@ fn synchronisation_hostile_floats() {
             named(graph.clone());
             graphs.extend(graph);
             for graph in &graphs {
-                for method in [sync::Method::Chordal, sync::Method::Robust, sync::Method::Spectral] {
+                for method in [sync::Method::Chordal, sync::Method::Robust, sync::Method::Spectral]
+                {
                     for scale in [None, Some(x)] {
                         let options = SyncOptions { method, scale, anchor: 3 };
                         let result = probe.call(
@@ -614,7 +620,9 @@ fn synchronisation_hostile_floats() {
                         match result {
                             Ok(r) => {
                                 assert!(r.rotations.iter().all(|q| finite(*q)), "{graph:?}");
-                                assert!(r.cost.is_finite() && r.residuals.iter().all(|t| t.is_finite()));
+                                assert!(
+                                    r.cost.is_finite() && r.residuals.iter().all(|t| t.is_finite())
+                                );
                             }
                             Err(e) => assert_eq!(e.argument(), "scale", "{e}"),
                         }
@@ -622,17 +630,24 @@ fn synchronisation_hostile_floats() {
                 }
                 let mut flow = SyncFlow::random(graph.clone(), x.to_bits());
                 for dt in HOSTILE {
-                    let stepped = probe.call(|| format!("SyncFlow::step({dt}, 10)"), || flow.step(dt, 10));
+                    let stepped =
+                        probe.call(|| format!("SyncFlow::step({dt}, 10)"), || flow.step(dt, 10));
                     if stepped.is_ok() {
                         assert!(flow.rotations().iter().all(|q| finite(*q)), "dt {dt}");
                     }
                 }
-                let refused = probe.call(|| "SyncFlow::step(0.01, usize::MAX)".into(), || flow.step(0.01, usize::MAX));
+                let refused = probe.call(
+                    || "SyncFlow::step(0.01, usize::MAX)".into(),
+                    || flow.step(0.01, usize::MAX),
+                );
                 assert_eq!(refused.unwrap_err().argument(), "steps");
                 let mut start = vec![DQuat::IDENTITY; graph.count()];
                 for q in quaternions(x) {
                     start[1] = q;
-                    named(probe.call(|| format!("SyncFlow::new(start[1] = {q:?})"), || SyncFlow::new(graph.clone(), &start)));
+                    named(probe.call(
+                        || format!("SyncFlow::new(start[1] = {q:?})"),
+                        || SyncFlow::new(graph.clone(), &start),
+                    ));
                 }
             }
             let qs = quaternions(x);

@@ -1,6 +1,7 @@
 //! `kli::sync` against GTSAM: tests/fixtures/sync.json holds the chordal optimum of each graph as
 //! GTSAM's Levenberg–Marquardt finds it on its own Frobenius factors, and the certificate's
 //! eigenvalues by NumPy's dense `eigvalsh` (bench/sync_fixture.py). Every rotation agrees to 1e-9.
+#![cfg(not(target_arch = "wasm32"))]
 
 use kli::sync::{Graph, SyncOptions, synchronize};
 use kli::{DQuat, from_wxyz};

@@ -426,7 +426,12 @@ fn bad_graphs_are_refused_naming_the_argument() {
     // A count no edge list could connect is refused before anything of its size is allocated.
     let m = refused(Graph::new(Some(usize::MAX), &[[0, 1]], &one, None));
     let rest = usize::MAX - 2 - 8;
-    assert!(m.starts_with(&format!("edges do not connect the graph: nodes 2, 3, 4, 5, 6, 7, 8, 9 and {rest} more")), "{m}");
+    assert!(
+        m.starts_with(&format!(
+            "edges do not connect the graph: nodes 2, 3, 4, 5, 6, 7, 8, 9 and {rest} more"
+        )),
+        "{m}"
+    );
     let m = refused(Graph::new(None, &[[0, 1], [1, 4_000_000_000]], &two, None));
     assert!(m.contains("nodes 2, 3, 4, 5, 6, 7, 8, 9 and 3999999990 more are cut off"), "{m}");
     // Node 0 in no edge: everyone else is cut off from it.

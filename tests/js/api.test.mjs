@@ -7,7 +7,7 @@ import { readFileSync } from "node:fs";
 
 const at = (path) => new URL(`../../${path}`, import.meta.url);
 const doc = readFileSync(at("docs/api.md"), "utf8");
-const ENTRIES = { kli: "kli", spline: "kli/spline", swarm: "kli/swarm", average: "kli/average", three: "kli/three", gltf: "kli/gltf" };
+const ENTRIES = { kli: "kli", spline: "kli/spline", swarm: "kli/swarm", average: "kli/average", sync: "kli/sync", three: "kli/three", gltf: "kli/gltf" };
 /** wasm-bindgen's own loading exports, documented once under Conventions. */
 const LOADING = new Set(["InitInput", "InitOutput", "SyncInitInput", "initSync", "__wbg_init"]);
 

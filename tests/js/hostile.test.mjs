@@ -21,6 +21,7 @@ const kli = await load("kli");
 const spline = await load("spline");
 const swarm = await load("swarm");
 const average = await load("average");
+const sync = await load("sync");
 
 // xorshift32: the same hostile values on every run.
 function random(seed) {
@@ -74,7 +75,7 @@ function attempt(call, check = () => {}) {
     assert.ok(e instanceof Error, `not an Error: ${String(e)}`);
     assert.equal(typeof e.argument, "string", `no argument: ${e.message}`);
     assert.equal(typeof e.kind, "string", `no kind: ${e.message}`);
-    assert.ok(kli.module.isKliError(e) && spline.module.isKliError(e) && swarm.module.isKliError(e) && average.module.isKliError(e));
+    assert.ok([kli, spline, swarm, average, sync].every((m) => m.module.isKliError(e)));
     assert.doesNotMatch(e.message, /unreachable|table index|memory access|null pointer passed|recursive use of|is not a function|Cannot convert/);
     return e.kind;
   }
@@ -136,6 +137,46 @@ test("kli/average: 3,000 seeded hostile calls, no trap, no leak, the module stil
   }
 });
 
+const TRIANGLE = { edges: [[0, 1], [1, 2], [0, 2]], relative: [[1, 0, 0, 0], [1, 0, 0, 0], [0.8660254037844387, 0.5, 0, 0]] };
+test("kli/sync: 3,000 seeded hostile calls, no trap, no leak, the module and a flow still right", () => {
+  const { synchronizeRotations, readG2o, SyncFlow } = sync.module;
+  const next = random(29);
+  const before = sync.table(), caught = thrown;
+  const methods = ["chordal", "robust", "spectral"];
+  const flow = new SyncFlow(TRIANGLE, { seed: 2 });
+  let errors = 0;
+  for (let i = 0; i < 3000 * SCALE; i++) {
+    const value = hostile(next, () => synchronizeRotations(TRIANGLE));
+    const other = hostile(next, () => flow.step(0.01));
+    const calls = [
+      () => synchronizeRotations(value), () => synchronizeRotations(TRIANGLE, value),
+      () => synchronizeRotations({ ...TRIANGLE, edges: value }), () => synchronizeRotations({ ...TRIANGLE, relative: value }),
+      () => synchronizeRotations({ ...TRIANGLE, weights: value }, { method: methods[i % 3] }),
+      () => synchronizeRotations({ ...TRIANGLE, count: value }), () => synchronizeRotations(TRIANGLE, { anchor: value, order: other }),
+      () => synchronizeRotations(TRIANGLE, { method: "robust", scale: value }),
+      () => synchronizeRotations({ edges: [[0, 1], [1, value]], relative: [[1, 0, 0, 0], other] }),
+      () => readG2o(value), () => readG2o(`EDGE3 0 1 0 0 0 ${typeof value === "number" ? value : "x"} 0 0`, other),
+      () => new SyncFlow(value), () => new SyncFlow(TRIANGLE, value), () => new SyncFlow(TRIANGLE, { start: value }),
+      () => flow.step(value, other), () => flow.step(0.01, value),
+    ];
+    const kind = attempt(calls[Math.floor(next() * calls.length)], (r) => {
+      if (r instanceof SyncFlow) { wellFormed(r.rotations, true); r.free(); return; }
+      if (!r || r.rotations === undefined) return;
+      wellFormed(r.rotations, true);
+      wellFormed(r.residuals);
+      wellFormed(r.cost);
+    });
+    if (kind !== "ok") errors++;
+  }
+  assert.ok(errors > 1000 * SCALE, `only ${errors} refusals: the fuzz is not hostile enough`);
+  assertNoLeak(sync.table(), before, thrown - caught);
+  // Still right: MATH.md's triangle, and the flow still steps on S³.
+  const { cost } = synchronizeRotations(TRIANGLE);
+  assert.ok(Math.abs(cost - 0.723688550569099) < 1e-12, `${cost}`);
+  flow.step(0.05, 10);
+  wellFormed(flow.rotations, true);
+  flow.free();
+});
 
 test("isKliError: true for kli's Errors, false for anything else", () => {
   for (const { module } of [kli, spline, swarm]) {

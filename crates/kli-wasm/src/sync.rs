@@ -166,10 +166,8 @@ fn read_edges(value: &JsValue) -> Result<Vec<[usize; 2]>, KliError> {
         return flat.chunks_exact(2).enumerate().map(|(k, pair)| edge_ids(k, pair)).collect();
     }
     if !array {
-        let problem = format!(
-            "must be an array of [i, j] pairs or of 2m numbers (got {})",
-            describe(value)
-        );
+        let problem =
+            format!("must be an array of [i, j] pairs or of 2m numbers (got {})", describe(value));
         return Err(KliError::invalid("edges", problem));
     }
     let length = get("edges", value, &"length".into())?.as_f64().unwrap_or(0.0) as usize;
@@ -194,11 +192,11 @@ fn read_graph(input: &JsValue, order: Order) -> Result<Graph, KliError> {
         let problem = format!("must be an object like {example} (got {})", describe(input));
         return Err(KliError::invalid("input", problem));
     };
-    let required = |key: &str| {
-        fields.value(key)?.ok_or_else(|| KliError::invalid(key, "is required"))
-    };
+    let required =
+        |key: &str| fields.value(key)?.ok_or_else(|| KliError::invalid(key, "is required"));
     let edges = read_edges(&required("edges")?)?;
-    let relative = quaternion_list("relative", "edge", &required("relative")?, order, 4 * MAX_EDGES)?;
+    let relative =
+        quaternion_list("relative", "edge", &required("relative")?, order, 4 * MAX_EDGES)?;
     let weights = match fields.value("weights")? {
         Some(value) => Some(numbers("weights", &value, MAX_EDGES)?),
         None => None,

@@ -74,7 +74,8 @@ fn check_triangle(result: &JsValue, order_xyzw: bool) {
 #[wasm_bindgen_test]
 fn the_triangle_in_every_edge_form_and_order() {
     let pairs = nested(&[&[0.0, 1.0], &[1.0, 2.0], &[0.0, 2.0]]);
-    let flat: JsValue = [0.0, 1.0, 1.0, 2.0, 0.0, 2.0].iter().map(|&x| JsValue::from(x)).collect::<Array>().into();
+    let flat: JsValue =
+        [0.0, 1.0, 1.0, 2.0, 0.0, 2.0].iter().map(|&x| JsValue::from(x)).collect::<Array>().into();
     let u32s: JsValue = Uint32Array::from(&[0u32, 1, 1, 2, 0, 2][..]).into();
     let i32s: JsValue = Int32Array::from(&[0i32, 1, 1, 2, 0, 2][..]).into();
     for edges in [pairs, flat, u32s, i32s] {
@@ -121,13 +122,24 @@ fn bad_input_names_itself() {
     assert_eq!(argument, "edges[0]");
     assert!(message.contains("itself"), "{message}");
     let zero = nested(&[&[0.0, 0.0, 0.0, 0.0]]);
-    let (argument, kind, _) = run(object(&[("edges", nested(&[&[0.0, 1.0]])), ("relative", zero)]), &[]);
+    let (argument, kind, _) =
+        run(object(&[("edges", nested(&[&[0.0, 1.0]])), ("relative", zero)]), &[]);
     assert_eq!((argument.as_str(), kind.as_str()), ("relative[0]", "zero-length"));
     let input = || object(&[("edges", nested(&[&[0.0, 1.0]])), ("relative", ones())]);
-    let (argument, _, _) = run(object(&[("edges", nested(&[&[0.0, 1.0]])), ("relative", ones()), ("weights", nested(&[&[0.0]]))]), &[]);
+    let (argument, _, _) = run(
+        object(&[
+            ("edges", nested(&[&[0.0, 1.0]])),
+            ("relative", ones()),
+            ("weights", nested(&[&[0.0]])),
+        ]),
+        &[],
+    );
     assert_eq!(argument, "weights");
     let weights: JsValue = Float64Array::from(&[-1.0][..]).into();
-    let (argument, _, _) = run(object(&[("edges", nested(&[&[0.0, 1.0]])), ("relative", ones()), ("weights", weights)]), &[]);
+    let (argument, _, _) = run(
+        object(&[("edges", nested(&[&[0.0, 1.0]])), ("relative", ones()), ("weights", weights)]),
+        &[],
+    );
     assert_eq!(argument, "weights[0]");
     let (argument, _, message) = run(input(), &[("anchor", 5.into())]);
     assert_eq!(argument, "anchor", "{message}");
@@ -137,7 +149,10 @@ fn bad_input_names_itself() {
     assert_eq!(argument, "scale");
     let (argument, _, message) = run(input(), &[("tolerance", 1.into())]);
     assert_eq!(argument, "options", "{message}");
-    let disconnected = object(&[("edges", nested(&[&[0.0, 1.0], &[2.0, 3.0]])), ("relative", nested(&[&[1.0, 0.0, 0.0, 0.0], &[1.0, 0.0, 0.0, 0.0]]))]);
+    let disconnected = object(&[
+        ("edges", nested(&[&[0.0, 1.0], &[2.0, 3.0]])),
+        ("relative", nested(&[&[1.0, 0.0, 0.0, 0.0], &[1.0, 0.0, 0.0, 0.0]])),
+    ]);
     let (argument, _, message) = run(disconnected, &[]);
     assert_eq!(argument, "edges");
     assert!(message.contains("nodes 2, 3 are cut off from node 0"), "{message}");
