@@ -72,7 +72,12 @@ fn hat(u: DVec3) -> DMat3 {
 /// `C_kl = −tr(e_k^ M e_l^ N)`, using `tr(u^ X) = u·v(X)` and `u^u^ = u uᵀ − |u|² I`.
 /// At a critical point this is the Riemannian Hessian; elsewhere it is the Hessian of the
 /// pullback, which Newton's method with the exponential retraction uses.
-pub(crate) fn model(graph: &Graph, q: &[DQuat]) -> (Vec<f64>, Blocks) {
+///
+/// With `gauss_newton`, the Gauss–Newton matrix instead: the linearised residual
+/// `R_i (a^ − M b^ N) R_ij` has `‖·‖²_F = 2|a|² + 2|b|² − 2 aᵀ C b`, so the diagonal blocks become
+/// `4 w I` and the off-diagonal ones stay: positive semidefinite everywhere (the robust rounds,
+/// whose outliers give the exact Hessian negative curvature).
+pub(crate) fn model(graph: &Graph, q: &[DQuat], gauss_newton: bool) -> (Vec<f64>, Blocks) {
     let rotation: Vec<DMat3> = q.iter().map(|&q| DMat3::from_quat(q)).collect();
     let mut gradient = vec![0.0; 3 * graph.count()];
     let mut hessian = Blocks::zeros(graph);
@@ -84,6 +89,9 @@ pub(crate) fn model(graph: &Graph, q: &[DQuat]) -> (Vec<f64>, Blocks) {
         add(&mut gradient, i, axial(p) * (2.0 * w));
         add(&mut gradient, j, axial(q) * (-2.0 * w));
         let curvature = |x: DMat3| {
+            if gauss_newton {
+                return DMat3::IDENTITY * (4.0 * w);
+            }
             let sym = (x + x.transpose()) * 0.5;
             (sym - DMat3::from_diagonal(DVec3::splat(x.col(0)[0] + x.col(1)[1] + x.col(2)[2])))
                 * (-2.0 * w)

@@ -117,12 +117,16 @@ pub struct Synchronized {
 /// Every rotation moved by the gauge that puts `anchor` at the identity, signs `w ≥ 0`.
 fn anchored(q: &[DQuat], anchor: usize) -> Vec<DQuat> {
     let gauge = q[anchor].conjugate();
-    q.iter()
+    let mut out: Vec<DQuat> = q
+        .iter()
         .map(|&q| {
             let q = (gauge * q).normalize();
             if q.w < 0.0 { -q } else { q }
         })
-        .collect()
+        .collect();
+    // Exactly, not to rounding.
+    out[anchor] = DQuat::IDENTITY;
+    out
 }
 
 /// Synchronises `graph` by `options.method`. Refused: an `anchor` that is not a node, a `scale`
@@ -159,7 +163,13 @@ pub fn synchronize(graph: &Graph, options: &SyncOptions) -> Result<Synchronized,
         Method::Spectral => start,
         Method::Chordal => {
             let reduced = blocks::Pattern::new(graph, Some(anchor));
-            let refined = newton::refine(graph, &reduced, start, newton::MAX_ITERATIONS);
+            let refined = newton::refine(
+                graph,
+                &reduced,
+                start,
+                newton::MAX_ITERATIONS,
+                newton::Accuracy::Full,
+            );
             result.iterations = refined.iterations;
             let c = certificate::certify(graph, &full, &refined.q);
             // In the caller's units: S scales with the weights.

@@ -7,7 +7,7 @@
 //! `q_i → q_i exp(δ_i/2)`. `μ = 0` (Newton's step, quadratic convergence) whenever `H` is positive
 //! definite and the step lowers `f`; otherwise `μ` grows until both hold.
 
-use glam::{DQuat, DVec3};
+use glam::DQuat;
 
 use super::blocks::{Pattern, get};
 use super::cost::{cost, model};
@@ -23,14 +23,17 @@ pub(crate) struct Refined {
 /// At most this many Newton steps (it needs a handful from the spectral start).
 pub(crate) const MAX_ITERATIONS: usize = 200;
 
-fn moved(q: &[DQuat], step: &[f64], pattern: &Pattern) -> Vec<DQuat> {
-    q.iter()
-        .enumerate()
-        .map(|(i, &qi)| match pattern.row(i) {
-            Some(b) => (qi * exp(get(step, b) * 0.5)).normalize(),
-            None => qi,
-        })
-        .collect()
+fn moved(q: &[DQuat], step: &[f64]) -> Vec<DQuat> {
+    q.iter().enumerate().map(|(i, &qi)| (qi * exp(get(step, i) * 0.5)).normalize()).collect()
+}
+
+/// The answer's steps (the exact Hessian, solved to rounding where the solve is iterative:
+/// quadratic convergence), or a robust round's (the Gauss–Newton matrix, positive semidefinite
+/// with outliers about, solved to 1e-6: the weights move next round).
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Accuracy {
+    Full,
+    Round,
 }
 
 /// Newton's method from `q` on the weighted cost of `graph`, with the node `pattern` leaves out
@@ -40,7 +43,12 @@ pub(crate) fn refine(
     pattern: &Pattern,
     q: Vec<DQuat>,
     max_iterations: usize,
+    accuracy: Accuracy,
 ) -> Refined {
+    let tolerance = match accuracy {
+        Accuracy::Full => 1e-12,
+        Accuracy::Round => 1e-6,
+    };
     let scale = graph.degrees().into_iter().fold(0.0, f64::max);
     let mut q = q;
     let mut f = cost(graph, &q);
@@ -49,11 +57,11 @@ pub(crate) fn refine(
     let mut iterations = 0;
     let mut last_size = f64::INFINITY;
     while iterations < max_iterations {
-        let (gradient, hessian) = model(graph, &q);
-        let g: Vec<f64> = (0..graph.count())
-            .filter_map(|i| pattern.row(i).map(|_| get(&gradient, i)))
-            .flat_map(|v: DVec3| v.to_array())
-            .collect();
+        let (mut g, hessian) = model(graph, &q, matches!(accuracy, Accuracy::Round));
+        // The node left out (the anchor) does not move.
+        for i in (0..graph.count()).filter(|&i| pattern.row(i).is_none()) {
+            g[3 * i..3 * i + 3].fill(0.0);
+        }
         let size = g.iter().map(|x| x * x).sum::<f64>().sqrt();
         // Stationary to rounding: the gradient of a sum of `m` terms is computed to about
         // `1e-15 · Σ w` at best.
@@ -69,14 +77,13 @@ pub(crate) fn refine(
         let mut accepted = false;
         // At most ~60 doublings of μ: from 1e-12 scale to 1e6 scale.
         for _ in 0..64 {
-            let Some(factor) = pattern.factor(graph, &hessian, mu) else {
+            let minus: Vec<f64> = g.iter().map(|x| -x).collect();
+            let Some(step) = pattern.solve(graph, &hessian, mu, &minus, tolerance) else {
                 mu = (mu * nu).max(1e-12 * scale);
                 nu *= 2.0;
                 continue;
             };
-            let mut step: Vec<f64> = g.iter().map(|x| -x).collect();
-            factor.solve(&mut step);
-            let trial = moved(&q, &step, pattern);
+            let trial = moved(&q, &step);
             let f_trial = cost(graph, &trial);
             // The model's predicted decrease −(gᵀδ + ½ δᵀ H δ) = ½ (μ|δ|² − gᵀδ) for the damped
             // step, always > 0.

@@ -13,7 +13,7 @@ use glam::DQuat;
 use super::blocks::Pattern;
 use super::cost::residuals;
 use super::graph::Graph;
-use super::newton::refine;
+use super::newton::{Accuracy, refine};
 
 /// The robust method's result before it is packaged.
 pub(crate) struct Robust {
@@ -32,7 +32,7 @@ const L1_ROUNDS: usize = 15;
 const GM_ROUNDS: usize = 30;
 /// Newton steps a round: the weights move between rounds, so each round's problem is only
 /// approached, not solved.
-const STEPS_A_ROUND: usize = 4;
+const STEPS_A_ROUND: usize = 1;
 /// The residual below which the L1 weight stops growing (radians, 0.06°): `1/θ` is unbounded.
 const L1_FLOOR: f64 = 1e-3;
 
@@ -66,7 +66,7 @@ pub(crate) fn robust(
         let change = moved(&factors, &next);
         factors = next;
         let weighted = graph.reweighted(base.iter().zip(&factors).map(|(w, f)| w * f).collect());
-        let refined = refine(&weighted, pattern, q, STEPS_A_ROUND);
+        let refined = refine(&weighted, pattern, q, STEPS_A_ROUND, Accuracy::Round);
         q = refined.q;
         iterations += refined.iterations;
         if change < 1e-3 {
@@ -84,7 +84,7 @@ pub(crate) fn robust(
         let change = moved(&factors, &next);
         factors = next;
         let weighted = graph.reweighted(base.iter().zip(&factors).map(|(w, f)| w * f).collect());
-        let refined = refine(&weighted, pattern, q, STEPS_A_ROUND);
+        let refined = refine(&weighted, pattern, q, STEPS_A_ROUND, Accuracy::Round);
         q = refined.q;
         iterations += refined.iterations;
         if change < 1e-6 {

@@ -50,6 +50,17 @@ pub(crate) fn spectral(graph: &Graph, pattern: &Pattern) -> (Vec<DQuat>, usize) 
     let l = laplacian(graph);
     let n = graph.count();
     let scale = graph.degrees().into_iter().fold(0.0, f64::max);
+    if pattern.fills() {
+        // A graph whose factor fills in is an expander: L's smallest eigenvalues stand apart, and
+        // Lanczos on `2 d_max I − L` (its largest, `≥ 0` since `λ_max(L) ≤ 2 d_max`) finds them
+        // from products alone.
+        let top = 2.0 * scale;
+        let v = three(3 * n, |x, y| {
+            l.apply(graph, x, y);
+            y.iter_mut().zip(x).for_each(|(yi, xi)| *yi = top * xi - *yi);
+        });
+        return (round(&v.0, n), v.1);
+    }
     // L ⪰ 0 with eigenvalues as small as 0 (consistent data): a shift keeps the factor positive
     // definite, and larger shifts are tried if rounding makes a pivot non-positive.
     // The weights come scaled to a largest of 1 (`synchronize`), so `scale ≥ 1`; by the last try
@@ -67,24 +78,32 @@ pub(crate) fn spectral(graph: &Graph, pattern: &Pattern) -> (Vec<DQuat>, usize) 
         // Unreachable for finite weights; a start at the identity keeps the call total.
         return (vec![DQuat::IDENTITY; n], 0);
     };
-    // One vector at a time, each run deflating the ones found: a single Krylov sequence holds
-    // one vector of a repeated eigenvalue, and noise-free data make the smallest one triple.
+    let (v, steps) = three(3 * n, |x, y| {
+        y.copy_from_slice(x);
+        factor.solve(y);
+    });
+    (round(&v, n), steps)
+}
+
+/// The top three eigenvectors of `apply`, one at a time, each run deflating the ones found: a
+/// single Krylov sequence holds one vector of a repeated eigenvalue, and noise-free data make the
+/// smallest eigenvalue of `L` triple. With the Lanczos steps taken.
+fn three(dimension: usize, mut apply: impl FnMut(&[f64], &mut [f64])) -> (Vec<Vec<f64>>, usize) {
     let mut v: Vec<Vec<f64>> = Vec::new();
     let mut steps = 0;
     for _ in 0..3 {
-        let ritz = lanczos::largest(
-            3 * n,
-            |x, y| {
-                y.copy_from_slice(x);
-                factor.solve(y);
-            },
-            &v,
-            1,
-            200,
-            1e-10,
-        );
+        let ritz = lanczos::largest(dimension, &mut apply, &v, 1, 200, 1e-10);
         steps += ritz.steps;
         v.extend(ritz.vectors);
+    }
+    (v, steps)
+}
+
+/// Each node's rotation from the three eigenvectors `v` (`V = [v₀ v₁ v₂]`, 3n×3).
+fn round(v: &[Vec<f64>], n: usize) -> Vec<DQuat> {
+    if v.len() < 3 {
+        // Lanczos returns a vector a run for finite input; this keeps the call total.
+        return vec![DQuat::IDENTITY; n];
     }
     let block = |i: usize| {
         // Row r of V_i is (v₀, v₁, v₂)[3i + r]; the columns of V_iᵀ are those rows.
@@ -103,6 +122,5 @@ pub(crate) fn spectral(graph: &Graph, pattern: &Pattern) -> (Vec<DQuat>, usize) 
         DMat3::IDENTITY
     };
     // V_iᵀ = Oᵀ R_i: the nearest rotation is R_i up to the gauge Oᵀ.
-    let q = (0..n).map(|i| nearest_rotation(flip * block(i))).collect();
-    (q, steps)
+    (0..n).map(|i| nearest_rotation(flip * block(i))).collect()
 }
