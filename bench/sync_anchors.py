@@ -10,7 +10,7 @@
 #                                              the same measures of kli's results
 # Quaternions are [w, x, y, z]; R_ij = R_iᵀ R_j (GTSAM's BetweenFactor<Rot3>). Theia and COLMAP
 # take camera-from-world rotations C_i = R_iᵀ and relative rotations C_j C_iᵀ = R_ijᵀ.
-import json, sys, time
+import json, os, sys, time
 import numpy as np
 import gtsam
 import pycolmap
@@ -189,12 +189,30 @@ def theia_robust(g):
     return theia_result(result, g["count"]), time.perf_counter() - start
 
 
-def theia_estimator(kind):
+def theia_global(kind):
+    """Theia's hybrid (L1-IRLS, then the Lagrange dual) or Lagrange dual estimator, reached through
+    GlobalReconstructionEstimator with `global_rotation_estimator_type` set (pytheia's bindings of
+    the estimators themselves return nothing: their output map is copied in and dropped). The time
+    is the whole Estimate call; with no tracks, its position step is a small share."""
     def run(g):
-        view_pairs, start_rotations = theia_inputs(g), spanning_tree_start(g)
+        reconstruction, view_graph = pt.sfm.Reconstruction(), pt.sfm.ViewGraph()
+        ids = [reconstruction.AddView(str(i), 0, float(i)) for i in range(g["count"])]
+        rng = np.random.default_rng(SEED)
+        for (i, j), q in zip(g["edges"], g["relative"]):
+            info = pt.sfm.TwoViewInfo()
+            info.focal_length_1 = info.focal_length_2 = 1.0
+            info.rotation_2 = quat_to_rot(q).inv().as_rotvec().reshape(3, 1)
+            direction = rng.normal(size=(3, 1))
+            info.position_2 = direction / np.linalg.norm(direction)
+            info.num_verified_matches = 100
+            view_graph.AddEdge(ids[i], ids[j], info)
+        options = pt.sfm.ReconstructionEstimatorOptions()
+        options.global_rotation_estimator_type = getattr(pt.sfm.GlobalRotationEstimatorType, kind)
         start = time.perf_counter()
-        result = getattr(pt.sfm, kind)().EstimateRotations(view_pairs, start_rotations)
-        return theia_result(result, g["count"]), time.perf_counter() - start
+        pt.sfm.GlobalReconstructionEstimator(options).Estimate(view_graph, reconstruction)
+        elapsed = time.perf_counter() - start
+        R = [Rotation.from_rotvec(reconstruction.View(v).Camera().GetOrientationAsAngleAxis().ravel()).as_matrix().T for v in ids]
+        return R, elapsed
     return run
 
 
@@ -255,9 +273,9 @@ def anchors(request):
         row = {"name": g["name"], "methods": {}}
         if g["name"] == "sphere2500":
             methods = {"GTSAM chordal + LM": gtsam_chordal_lm, "GTSAM Shonan": gtsam_shonan,
-                       "Theia Lagrange dual": theia_estimator("LagrangeDualRotationEstimator")}
+                       "Theia Lagrange dual": theia_global("LAGRANGE_DUAL")}
         else:
-            methods = {"Theia L1-IRLS": theia_robust, "Theia hybrid": theia_estimator("HybridRotationEstimator"),
+            methods = {"Theia L1-IRLS": theia_robust, "Theia hybrid": theia_global("HYBRID"),
                        "COLMAP": colmap, "GTSAM Shonan": gtsam_shonan}
             if g["count"] <= 100 or g["name"].endswith("30% wrong"):
                 methods["GTSAM GNC-TLS"] = gtsam_gnc_tls
@@ -280,9 +298,14 @@ def anchors(request):
     return out
 
 
+# Ceres (under Theia) and GTSAM print progress tables on standard output: the C level's
+# standard output goes to standard error, and the JSON to the real one.
+answer = os.fdopen(os.dup(1), "w")
+os.dup2(2, 1)
 request = json.load(sys.stdin)
 versions = {"gtsam": "4.3.0", "pycolmap": pycolmap.__version__, "pytheia": "1.2.1", "numpy": np.__version__}
 if request["mode"] == "graphs":
-    json.dump({"versions": versions, "graphs": graphs()}, sys.stdout)
+    json.dump({"versions": versions, "graphs": graphs()}, answer)
 else:
-    json.dump({"versions": versions, "rows": anchors(request)}, sys.stdout)
+    json.dump({"versions": versions, "rows": anchors(request)}, answer)
+answer.flush()

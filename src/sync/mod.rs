@@ -82,8 +82,8 @@ pub struct SyncOptions {
     pub method: Method,
     /// The node held at the identity (0 by default).
     pub anchor: usize,
-    /// For [`Method::Robust`]: the Geman–McClure scale `σ` in radians, or `None` for twice the
-    /// median residual after the L1 rounds.
+    /// For [`Method::Robust`]: the Geman–McClure scale `σ` in radians, or `None` for the median
+    /// residual after the L1 rounds.
     pub scale: Option<f64>,
 }
 

@@ -51,7 +51,7 @@ export interface SyncOptions {
   method?: SyncMethod;
   /** The node held at the identity. Default 0. */
   anchor?: number;
-  /** For "robust": the Geman–McClure scale σ in radians (> 0). Default: twice the median residual
+  /** For "robust": the Geman–McClure scale σ in radians (> 0). Default: the median residual
    *  after the L1 rounds. */
   scale?: number;
   /** How quaternion arrays are laid out, in and out. Default "wxyz". */
@@ -84,7 +84,8 @@ export interface Synchronized {
   certificate?: SyncCertificate;
   /** For "robust": each edge's final weight (the caller's times the robust factor, ≤ it). */
   weights?: Float64Array;
-  /** For "robust": 1 for each edge treated as wrong (its residual beyond 3σ), else 0. */
+  /** For "robust": 1 for each edge treated as wrong (its residual beyond 3σ for a given `scale`,
+   *  by default beyond 6 times the median residual after the L1 rounds), else 0. */
   outliers?: Uint8Array;
   /** For "robust": the Geman–McClure scale used, radians. */
   scale?: number;
