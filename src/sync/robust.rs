@@ -61,47 +61,54 @@ pub(crate) fn robust(
     start: Vec<DQuat>,
     scale: Option<f64>,
 ) -> Robust {
-    let base = graph.weights();
-    let mut q = start;
-    let mut iterations = 0;
-    let mut factors = vec![1.0; base.len()];
-    for _ in 0..L1_ROUNDS {
-        let theta = residuals(graph, &q);
-        let next: Vec<f64> = theta.iter().map(|&t| 1.0 / t.max(L1_FLOOR)).collect();
-        let change = moved(&factors, &next);
-        factors = next;
-        let weighted = graph.reweighted(base.iter().zip(&factors).map(|(w, f)| w * f).collect());
-        let refined = refine(&weighted, pattern, q, STEPS_A_ROUND, Accuracy::Round);
-        q = refined.q;
-        iterations += refined.iterations;
-        if change < 1e-3 {
-            break;
-        }
-    }
-    let typical = median(&residuals(graph, &q)).max(1e-6);
+    let mut state = Rounds { q: start, factors: vec![1.0; graph.weights().len()], iterations: 0 };
+    state.run(graph, pattern, L1_ROUNDS, 1e-3, |t| 1.0 / t.max(L1_FLOOR));
+    let typical = median(&residuals(graph, &state.q)).max(1e-6);
     let sigma = scale.unwrap_or(typical);
     // An outlier is 3σ off for a σ the caller knows; by default 6 times the median residual: the
     // weights' σ (the median) flags inliers of a long tail (29% of the flagged were within 10° of
     // the truth at 2° noise and 10% wrong), twice it none of them (≤ 0.4% on the bench's graphs).
     let threshold = scale.map_or(6.0 * typical, |s| 3.0 * s);
-    let geman_mcclure = |t: f64| {
+    state.run(graph, pattern, GM_ROUNDS, 1e-6, |t| {
         let r = sigma * sigma / (sigma * sigma + t * t);
         r * r
-    };
-    for _ in 0..GM_ROUNDS {
-        let theta = residuals(graph, &q);
-        let next: Vec<f64> = theta.iter().map(|&t| geman_mcclure(t)).collect();
-        let change = moved(&factors, &next);
-        factors = next;
-        let weighted = graph.reweighted(base.iter().zip(&factors).map(|(w, f)| w * f).collect());
-        let refined = refine(&weighted, pattern, q, STEPS_A_ROUND, Accuracy::Round);
-        q = refined.q;
-        iterations += refined.iterations;
-        if change < 1e-6 {
-            break;
+    });
+    let Rounds { q, factors, iterations } = state;
+    let outliers = residuals(graph, &q).iter().map(|&t| t > threshold).collect();
+    Robust { q, factors, outliers, iterations, scale: sigma }
+}
+
+/// Where the rounds are: the rotations, each edge's robust factor, the steps taken.
+struct Rounds {
+    q: Vec<DQuat>,
+    factors: Vec<f64>,
+    iterations: usize,
+}
+
+impl Rounds {
+    /// Up to `rounds` rounds with the factor `weight(θ)` on each edge's weight, until no factor
+    /// moves by `settled` (relative) from one round to the next.
+    fn run(
+        &mut self,
+        graph: &Graph,
+        pattern: &Pattern,
+        rounds: usize,
+        settled: f64,
+        weight: impl Fn(f64) -> f64,
+    ) {
+        for _ in 0..rounds {
+            let next: Vec<f64> = residuals(graph, &self.q).iter().map(|&t| weight(t)).collect();
+            let change = moved(&self.factors, &next);
+            self.factors = next;
+            let weights = graph.weights().iter().zip(&self.factors).map(|(w, f)| w * f).collect();
+            let q = std::mem::take(&mut self.q);
+            let refined =
+                refine(&graph.reweighted(weights), pattern, q, STEPS_A_ROUND, Accuracy::Round);
+            self.q = refined.q;
+            self.iterations += refined.iterations;
+            if change < settled {
+                break;
+            }
         }
     }
-    let theta = residuals(graph, &q);
-    let outliers = theta.iter().map(|&t| t > threshold).collect();
-    Robust { q, factors, outliers, iterations, scale: sigma }
 }
