@@ -271,6 +271,7 @@ fn the_flow_settles_on_the_certified_minimum() {
         solved.cost
     );
     let by_flow = errors_to_truth(flow.rotations(), &solved.rotations);
+    assert_eq!(by_flow.len(), 50);
     assert!(
         by_flow.iter().all(|&e| e < 1e-4),
         "{:?}",
@@ -604,4 +605,65 @@ fn conjugate_gradients_solve_as_cholesky_does_where_the_factor_fills_in() {
     )
     .unwrap();
     assert!(!blocks::Pattern::new(&ring, Some(0)).fills());
+}
+
+#[test]
+fn the_flow_takes_exactly_a_million_steps_a_call() {
+    let mut flow = SyncFlow::random(triangle(), 3);
+    flow.step(1e-9, MAX_STEPS).unwrap();
+    assert!((flow.time() - 1e-3).abs() < 1e-12, "{}", flow.time());
+    assert_eq!(flow.step(1e-9, MAX_STEPS + 1).unwrap_err().argument(), "steps");
+}
+
+/// Hamilton's product on `[w, x, y, z]` arrays, written out.
+fn product(a: [f64; 4], b: [f64; 4]) -> [f64; 4] {
+    [
+        a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3],
+        a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2],
+        a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1],
+        a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0],
+    ]
+}
+
+#[test]
+fn one_flow_step_is_maths_euler_step_on_weighted_edges() {
+    // MATH.md's model, q_i' = 2 Σ_j w_ij c_ij (x_ij − c_ij q_i), written on arrays, one Euler step
+    // of 0.1 and the projection back to S³; uneven weights, so a weight's place in the pull shows.
+    let s = synthetic(8, 0.5, 0.4, 0.0, 40);
+    let weights: Vec<f64> =
+        (0..s.graph.edges().len()).map(|k| 0.5 + 0.25 * (k % 5) as f64).collect();
+    let graph = Graph::new(Some(8), s.graph.edges(), s.graph.relative(), Some(&weights)).unwrap();
+    let mut random = Random::new(6);
+    let start: Vec<DQuat> = (0..8).map(|_| random.unit_quaternion()).collect();
+    let mut flow = SyncFlow::new(graph.clone(), &start).unwrap();
+    flow.step(0.1, 1).unwrap();
+    let q: Vec<[f64; 4]> = start.iter().map(|&q| crate::quaternion::to_wxyz(q)).collect();
+    let mut pull = vec![[0.0; 4]; 8];
+    for ((&[i, j], &r), &w) in graph.edges().iter().zip(graph.relative()).zip(graph.weights()) {
+        let r = crate::quaternion::to_wxyz(r);
+        let conj = [r[0], -r[1], -r[2], -r[3]];
+        let dot = |a: [f64; 4], b: [f64; 4]| a.iter().zip(&b).map(|(x, y)| x * y).sum::<f64>();
+        let x_ij = product(q[j], conj);
+        let x_ji = product(q[i], r);
+        let c = dot(q[i], x_ij);
+        for k in 0..4 {
+            pull[i][k] += 2.0 * w * c * (x_ij[k] - c * q[i][k]);
+            pull[j][k] += 2.0 * w * c * (x_ji[k] - c * q[j][k]);
+        }
+    }
+    for i in 0..8 {
+        let next: Vec<f64> = (0..4).map(|k| q[i][k] + 0.1 * pull[i][k]).collect();
+        let length = next.iter().map(|x| x * x).sum::<f64>().sqrt();
+        let got = crate::quaternion::to_wxyz(flow.rotations()[i]);
+        for k in 0..4 {
+            assert!((got[k] - next[k] / length).abs() < 1e-14, "node {i}: {got:?}");
+        }
+    }
+    // Each edge's residual: the angle from q_i q_ij to q_j.
+    let rotations = flow.rotations();
+    let residuals = flow.residuals();
+    assert_eq!(residuals.len(), graph.edges().len());
+    for ((&[i, j], &r), theta) in graph.edges().iter().zip(graph.relative()).zip(residuals) {
+        assert!((theta - angle(rotations[i] * r, rotations[j])).abs() < 1e-12);
+    }
 }
