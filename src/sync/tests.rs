@@ -47,6 +47,8 @@ fn triangle_spreads_the_loop_error_evenly() {
     let certificate = result.certificate.unwrap();
     assert!(certificate.certified);
     assert!(certificate.gap > 0.0);
+    // τ = 1e-9 × the largest weighted degree: 2 in a triangle of unit weights.
+    assert_eq!(certificate.tolerance, 2e-9);
 }
 
 #[test]
@@ -438,6 +440,10 @@ fn bad_graphs_are_refused_naming_the_argument() {
     // Node 0 in no edge: everyone else is cut off from it.
     let m = refused(Graph::new(None, &[[1, 2]], &one, None));
     assert!(m.contains("nodes 1, 2 are cut off from node 0"), "{m}");
+    // Exactly eight cut off: all named, no "and 0 more".
+    let pairs: Vec<[usize; 2]> = [[0, 1], [1, 2], [2, 0], [3, 4], [5, 6], [7, 8], [9, 10]].to_vec();
+    let m = refused(Graph::new(None, &pairs, &[DQuat::IDENTITY; 7], None));
+    assert!(m.ends_with("nodes 3, 4, 5, 6, 7, 8, 9, 10 are cut off from node 0"), "{m}");
     // Eleven triangles, ten of them cut off from node 0's: 30 nodes named 8 and "22 more".
     let many: Vec<[usize; 2]> = (0..11)
         .flat_map(|t| [[3 * t, 3 * t + 1], [3 * t + 1, 3 * t + 2], [3 * t + 2, 3 * t]])
