@@ -47,8 +47,15 @@ fn triangle_spreads_the_loop_error_evenly() {
     let certificate = result.certificate.unwrap();
     assert!(certificate.certified);
     assert!(certificate.gap > 0.0);
-    // τ = 1e-9 × the largest weighted degree: 2 in a triangle of unit weights.
+    // τ = 1e-9 × the largest weighted degree: 2 in a triangle of unit weights; 1 + 2 + 4 = 7 at
+    // the centre of a weighted star (in the caller's units, whatever the solver's scaling).
     assert_eq!(certificate.tolerance, 2e-9);
+    let star =
+        Graph::new(None, &[[0, 1], [0, 2], [3, 0]], &[about_x(10.0); 3], Some(&[1.0, 2.0, 4.0]))
+            .unwrap();
+    let tolerance =
+        synchronize(&star, &SyncOptions::default()).unwrap().certificate.unwrap().tolerance;
+    assert!((tolerance - 7e-9).abs() < 1e-24, "{tolerance}");
 }
 
 #[test]
