@@ -2,13 +2,13 @@
 //!
 //! Draws what the pages show on `<canvas>` 2D contexts through `web-sys`, and exports the classes
 //! the pages drive. Each page loads one module, a build of this crate with its feature
-//! (`kli-page`, `swarm-page`, `keyframes-page`, `average-page`), which holds the npm package's API for that page too
+//! (`<page>-page`, one a page), which holds the npm package's API for that page too
 //! ([`kli_wasm`]), so the pages and the package speak one language.
 //!
 //! Plain-Rust geometry and data ([`camera`], [`aircraft`], [`scene`], [`ticks`], [`palette`]) are
 //! apart from the files that draw ([`pen`], [`object_view`], [`sphere_view`], [`plots`]) and the
 //! classes themselves, a folder a page named as the page (`kli`, `keyframes`, `swarm`,
-//! `average`: the pages' registry, `www/pages.js`, lists them); every export
+//! `average`, `sync`: the pages' registry, `www/pages.js`, lists them); every export
 //! says where it came from ([`provenance`]).
 
 pub mod aircraft;
@@ -33,8 +33,12 @@ pub mod plots;
 pub mod provenance;
 pub mod scene;
 pub mod sphere_view;
+#[cfg(any(feature = "average-page", feature = "sync-page"))]
+mod sweep;
 #[cfg(feature = "swarm-page")]
 pub mod swarm;
+#[cfg(feature = "sync-page")]
+pub mod sync;
 pub mod ticks;
 
 #[cfg(feature = "kli-page")]
@@ -45,6 +49,8 @@ pub use average::AverageDemo;
 pub use keyframes::KeyframesDemo;
 #[cfg(feature = "swarm-page")]
 pub use swarm::SwarmDemo;
+#[cfg(feature = "sync-page")]
+pub use sync::{SyncDemo, SyncFile};
 
 use wasm_bindgen::prelude::*;
 

@@ -202,6 +202,44 @@ impl<'a> Pen<'a> {
         }
     }
 
+    /// Many separate segments of one stroke, as one path: a thousand edges of a graph cost one
+    /// stroke, not a thousand.
+    pub fn segments(&self, segments: &[[(f64, f64); 2]], color: &str, width: f64, dash: &[f64]) {
+        if segments.is_empty() {
+            return;
+        }
+        match &self.surface {
+            Surface::Canvas(ctx) => {
+                let pattern: Array = dash.iter().map(|&d| JsValue::from_f64(d)).collect();
+                let _ = ctx.set_line_dash(&pattern);
+                ctx.begin_path();
+                for [(x0, y0), (x1, y1)] in segments {
+                    ctx.move_to(*x0, *y0);
+                    ctx.line_to(*x1, *y1);
+                }
+                ctx.set_stroke_style_str(color);
+                ctx.set_line_width(width);
+                ctx.stroke();
+                let _ = ctx.set_line_dash(&Array::new());
+            }
+            Surface::Svg(doc, _) => {
+                let mut path = String::with_capacity(segments.len() * 28);
+                for [(x0, y0), (x1, y1)] in segments {
+                    let _ = write!(path, "M{},{}L{},{}", n(*x0), n(*y0), n(*x1), n(*y1));
+                }
+                let mut attributes = format!(
+                    "d=\"{path}\" fill=\"none\" stroke=\"{color}\" stroke-width=\"{}\"",
+                    n(width)
+                );
+                if !dash.is_empty() {
+                    let pattern: Vec<String> = dash.iter().map(|&d| n(d)).collect();
+                    let _ = write!(attributes, " stroke-dasharray=\"{}\"", pattern.join(" "));
+                }
+                self.element(doc, "path", &attributes, None);
+            }
+        }
+    }
+
     pub fn line(&self, from: (f64, f64), to: (f64, f64), color: &str, width: f64, dash: &[f64]) {
         self.polyline(&[from, to], color, width, dash);
     }

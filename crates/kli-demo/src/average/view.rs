@@ -10,13 +10,12 @@ use crate::aircraft::Face;
 use crate::camera::Viewport;
 use crate::figure::{Frame, Layer};
 use crate::format::fixed;
-use crate::legend::{Entry, Mark, draw_legend, draw_plot_key};
+use crate::legend::{Entry, Mark, draw_legend};
 use crate::object_view::{draw_object, object_camera};
 use crate::palette::{GRID, INK, KLI, MUTED};
 use crate::pen::Pen;
-use crate::plots::{Panel, inset, trim};
 use crate::sphere_view::{Side, View, draw_globe, draw_grid_back, draw_grid_front, grid};
-use crate::ticks::nice_step;
+use crate::sweep::{Curve, draw_error_sweep};
 
 /// The measurements' dots: inliers, wild ones, and the ring of those the median marks.
 const DATUM: &str = "#1864ab";
@@ -152,50 +151,15 @@ pub fn draw_means(pen: &Pen, model: &Model, (width, height): (f64, f64)) {
     }
 }
 
-/// The sweep: each mean's error (degrees; the median over seeded sets) against the outlier
-/// share, the page's share marked. Points that are not finite are left out.
+/// The sweep: each mean's error against the outlier share, 0 to 0.5.
 pub fn draw_sweep(
     pen: &Pen,
-    (width, height): (f64, f64),
+    size: (f64, f64),
     shares: &[f64],
     errors: &[f64],
     current: f64,
 ) {
-    let n = shares.len().min(errors.len() / 4);
-    let finite = |v: f64| v.is_finite().then_some(v);
-    let largest = (0..4 * n).filter_map(|k| finite(errors[k].to_degrees())).fold(1.0, f64::max);
-    // Room above the curves for the legend's row inside the panel.
-    let step = nice_step(1.1 * largest);
-    let top = step * (1.1 * largest / step).ceil();
-    let area = inset((0.0, 0.0, width, height), pen.text_scale(), 46.0);
-    let (left, top_edge, w, h) = area;
-    let p = Panel {
-        left,
-        top: top_edge,
-        width: w,
-        height: h,
-        x_min: 0.0,
-        x_max: 0.5,
-        y_min: 0.0,
-        y_max: top,
-    };
-    let ticks: Vec<(f64, String)> =
-        [0.0, 0.5 * top, top].iter().map(|&v| (v, format!("{}°", trim(v)))).collect();
+    let curves = STYLES.map(|s| Curve { name: s.name, colour: s.colour });
     let title = "each mean's error against the outlier share";
-    p.frame_with(pen, title, &ticks, "share");
-    for (m, style) in STYLES.iter().enumerate() {
-        let (xs, ys): (Vec<f64>, Vec<f64>) = (0..n)
-            .filter_map(|i| finite(errors[4 * i + m]).map(|e| (shares[i], e.to_degrees())))
-            .unzip();
-        p.series(pen, &xs, ys.iter().copied(), style.colour, 2.0, &[]);
-        let points: Vec<(f64, f64)> = xs.iter().zip(&ys).map(|(&x, &y)| p.at(x, y)).collect();
-        pen.dots(&points, 2.5, style.colour);
-    }
-    let (x, _) = p.at(current.clamp(0.0, 0.5), 0.0);
-    pen.line((x, p.top), (x, p.top + p.height), MUTED, 1.0, &[3.0, 3.0]);
-    let entries: Vec<Entry> = STYLES
-        .iter()
-        .map(|st| Entry { mark: Mark::Line(st.colour, 2.0, &[]), label: st.name })
-        .collect();
-    draw_plot_key(pen, &p, title, &entries);
+    draw_error_sweep(pen, size, title, &curves, 0.5, (shares, errors), current);
 }

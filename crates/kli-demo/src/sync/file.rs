@@ -1,0 +1,134 @@
+//! A user's own pose graph (g2o `EDGE_SE3:QUAT` or TORO/GTSAM `EDGE3` lines, read by
+//! [`kli::sync::read_g2o`]): synchronised both ways, summed up and drawn as the two solutions'
+//! residuals side by side, robust's flagged edges stacked.
+
+use kli::sync::{Graph, Method, SyncOptions, Synchronized, read_g2o, synchronize};
+use kli_wasm::error::JsResult;
+use wasm_bindgen::prelude::*;
+use web_sys::CanvasRenderingContext2d;
+
+use super::view::{Side, draw_sides};
+use crate::figure::{Frame, Record};
+use crate::format::exponential;
+use crate::palette::BACKGROUND;
+use crate::pen::{Pen, svg_document};
+
+/// A pose graph read from a file's text, and its chordal and robust solutions.
+#[wasm_bindgen]
+pub struct SyncFile {
+    count: usize,
+    chordal: Synchronized,
+    robust: Synchronized,
+    /// Whether each edge is one the robust solution flags.
+    flagged: Vec<bool>,
+}
+
+#[wasm_bindgen(typescript_custom_section)]
+const TYPES: &'static str = r#"
+/** What a user's pose graph sums up to: its size, the chordal optimum with its certificate, and
+ *  the robust solution's flags; residual angles in degrees. */
+export interface SyncFileSummary {
+  count: number;
+  edges: number;
+  chordalCost: number;
+  certified: boolean;
+  lambdaMin: number;
+  chordalMedianResidualDegrees: number;
+  robustMedianResidualDegrees: number;
+  flagged: number;
+  iterations: number;
+}
+"#;
+
+#[wasm_bindgen]
+impl SyncFile {
+    /// Reads `text` (an Error naming the bad line), then synchronises it (node 0 anchored).
+    #[wasm_bindgen(constructor)]
+    pub fn new(text: &str) -> JsResult<SyncFile> {
+        let pose = read_g2o(text)?;
+        let graph = Graph::new(Some(pose.count), &pose.edges, &pose.relative, None)?;
+        let solve = |method| synchronize(&graph, &SyncOptions { method, ..SyncOptions::default() });
+        let (chordal, robust) = (solve(Method::Chordal)?, solve(Method::Robust)?);
+        let flagged = robust.outliers.clone().unwrap_or_default();
+        Ok(SyncFile { count: pose.count, chordal, robust, flagged })
+    }
+
+    /// `{ count, edges, chordalCost, certified, lambdaMin, chordalMedianResidualDegrees,
+    /// robustMedianResidualDegrees, flagged, iterations }`.
+    #[wasm_bindgen(getter, unchecked_return_type = "SyncFileSummary")]
+    pub fn summary(&self) -> JsValue {
+        let c = self.chordal.certificate;
+        Record::new()
+            .set("count", self.count as f64)
+            .set("edges", self.chordal.residuals.len() as f64)
+            .set("chordalCost", self.chordal.cost)
+            .set("certified", c.is_some_and(|c| c.certified))
+            .set("lambdaMin", c.map_or(f64::NAN, |c| c.lambda_min))
+            .set("chordalMedianResidualDegrees", median_degrees(&self.chordal.residuals))
+            .set("robustMedianResidualDegrees", median_degrees(&self.robust.residuals))
+            .set("flagged", self.flagged.iter().filter(|&&f| f).count() as f64)
+            .set("iterations", self.chordal.iterations as f64)
+            .end()
+    }
+
+    /// Each edge's chordal residual, radians.
+    #[wasm_bindgen(getter)]
+    pub fn residuals(&self) -> Vec<f64> {
+        self.chordal.residuals.clone()
+    }
+
+    /// The two solutions' residuals side by side on a canvas.
+    pub fn draw(
+        &self,
+        ctx: &CanvasRenderingContext2d,
+        #[wasm_bindgen(unchecked_param_type = "Frame")] frame: &JsValue,
+    ) {
+        let frame = Frame::read(frame);
+        let pen = Pen::begin(ctx, frame.width, frame.height, frame.pixel_ratio, BACKGROUND);
+        pen.scale_text(frame.text_scale);
+        self.paint(&pen, (frame.width, frame.height));
+    }
+
+    /// The same as an SVG document.
+    #[wasm_bindgen(js_name = toSvg)]
+    pub fn to_svg(&self, #[wasm_bindgen(unchecked_param_type = "Frame")] frame: &JsValue) -> String {
+        let frame = Frame::read(frame);
+        let title = "Your pose graph: the chordal and robust solutions' residuals";
+        svg_document(frame.width, frame.height, title, &|pen| {
+            pen.scale_text(frame.text_scale);
+            self.paint(pen, (frame.width, frame.height))
+        })
+    }
+}
+
+fn median_degrees(residuals: &[f64]) -> f64 {
+    super::model::median(residuals.to_vec()).to_degrees()
+}
+
+impl SyncFile {
+    fn paint(&self, pen: &Pen, size: (f64, f64)) {
+        let certificate = match self.chordal.certificate {
+            Some(c) if c.certified => format!("certified: λmin(S) = {}", exponential(c.lambda_min, 1)),
+            Some(c) => format!("not certified: λmin(S) = {}", exponential(c.lambda_min, 1)),
+            None => String::new(),
+        };
+        let flagged = self.flagged.iter().filter(|&&f| f).count();
+        let sides = [
+            Side {
+                heading: "chordal (least squares)".into(),
+                lines: vec![format!("f = {}", exponential(self.chordal.cost, 5)), certificate],
+                residuals: &self.chordal.residuals,
+                marked: &self.flagged,
+                marked_label: "flagged by robust",
+            },
+            Side {
+                heading: "robust (reweighted)".into(),
+                lines: vec![format!("flagged {flagged} of {} edges", self.flagged.len()), String::new()],
+                residuals: &self.robust.residuals,
+                marked: &self.flagged,
+                marked_label: "flagged by robust",
+            },
+        ];
+        draw_sides(pen, &sides, size);
+    }
+}

@@ -1,0 +1,321 @@
+//! The `SyncDemo` class: the synchronisation page's run. Its `model` (the graph, the
+//! measurements, both solutions and the flow), its pictures (`view`), its data (`export`) and a
+//! user's own file (`file`) are modules of their own; this file is the class, its options, its
+//! time and the sweep.
+
+mod export;
+mod file;
+mod model;
+mod view;
+
+use kli::sync::Method;
+use kli::{KliError, Requirement, require};
+use kli_wasm::error::JsResult;
+use kli_wasm::options::Fields;
+use wasm_bindgen::prelude::*;
+use web_sys::CanvasRenderingContext2d;
+
+pub use self::file::SyncFile;
+use self::model::{Model, Options, Problem, Shape};
+use crate::aircraft::{Face, aircraft};
+use crate::figure::{Figure, Frame, Layer, Motion, Record, Timed, View, names};
+use crate::palette::{BACKGROUND, INK, KLI, SLERP};
+use crate::pen::{Pen, svg_document};
+use crate::sweep::{Curve, draw_error_sweep};
+
+/// The most nodes a run takes (the page's slider stops at 300).
+const MAX_COUNT: f64 = 2000.0;
+
+/// Flow steps a second of the page's clock at speed 1 (50 a 60 Hz frame), before the bound.
+const PACE: f64 = 3000.0;
+
+/// The most edge visits (`edges × steps`) one `advance` takes: about 1 ms in Chromium, so a
+/// frame keeps its budget whatever the graph (the flow slows down rather than falls behind).
+const FRAME_WORK: f64 = 5e4;
+
+/// The most edge visits one `seek` takes, a task at a time.
+const TASK_WORK: f64 = 1e6;
+
+/// The sweep's curves, in `sweepPoint`'s order.
+const CURVES: [Curve; 3] = [
+    Curve { name: "spectral", colour: INK },
+    Curve { name: "chordal", colour: KLI },
+    Curve { name: "robust", colour: SLERP },
+];
+
+/// A graph of `n` rotations with measured relative rotations, both solutions, and the Lohe flow
+/// from a random start with its history.
+#[wasm_bindgen]
+pub struct SyncDemo {
+    model: Model,
+    mesh: Vec<Face>,
+    /// Steps owed to the clock: a frame's share of a step carries over to the next.
+    owed: f64,
+}
+
+#[wasm_bindgen(typescript_custom_section)]
+const TYPES: &'static str = r#"
+/** How the synchronisation page's problem is made; every key is optional. */
+export interface SyncDemoOptions {
+  /** How many nodes, 3 to 2,000. Default 100. */
+  count?: number;
+  /** "random" (nearest neighbours in a square), "ring", "grid" or "complete". Default "random". */
+  graph?: string;
+  /** The standard deviation of each measurement's angle of noise, degrees, 0 to 180. Default 5. */
+  noise?: number;
+  /** The share of edges measured as uniformly random rotations, 0 to 1. Default 0.1. */
+  wrong?: number;
+  /** The seed of the graph, the truth, the measurements and the flow's start. Default 1. */
+  seed?: number;
+  /** Every measurement the identity: consensus (noise and wrong ignored). Default false. */
+  consensus?: boolean;
+}
+/** What a synchronisation run sums up to: the graph, the flow now, and both solutions (errors in
+ *  degrees, after the best gauge). */
+export interface SyncSummary {
+  count: number;
+  edges: number;
+  wrong: number;
+  time: number;
+  cost: number;
+  errorDegrees: number;
+  arrived: boolean;
+  chordalCost: number;
+  chordalErrorDegrees: number;
+  certified: boolean;
+  lambdaMin: number;
+  robustErrorDegrees: number;
+  flagged: number;
+  flaggedWrong: number;
+}
+"#;
+
+#[wasm_bindgen]
+extern "C" {
+    #[wasm_bindgen(typescript_type = "SyncDemoOptions")]
+    pub type SyncDemoOptions;
+}
+
+#[wasm_bindgen]
+impl SyncDemo {
+    /// The problem the options describe, solved both ways, and the flow at its start; an Error
+    /// naming the option that is out of range.
+    #[wasm_bindgen(constructor)]
+    pub fn new(options: Option<SyncDemoOptions>) -> JsResult<SyncDemo> {
+        let model = Model::new(read_options(options.map(JsValue::from))?)?;
+        Ok(SyncDemo { model, mesh: aircraft(), owed: 0.0 })
+    }
+
+    /// One point of the sweep: the median error to the truth (radians) of the spectral, chordal
+    /// and robust solutions of the problem these options make with the share `wrong` of wrong
+    /// edges (at most 200 nodes).
+    #[wasm_bindgen(js_name = sweepPoint)]
+    pub fn sweep_point(options: Option<SyncDemoOptions>, wrong: f64) -> JsResult<Vec<f64>> {
+        let mut options = read_options(options.map(JsValue::from))?;
+        options.wrong = share("wrong", wrong)?;
+        options.count = options.count.min(200);
+        let problem = Problem::new(&options)?;
+        let mut errors = Vec::with_capacity(3);
+        for method in [Method::Spectral, Method::Chordal, Method::Robust] {
+            errors.push(problem.median_error(&problem.solve(method)?.rotations));
+        }
+        Ok(errors)
+    }
+
+    /// The sweep so far (`shares`, and 3 errors a share in radians, as `sweepPoint` gives them),
+    /// the page's share marked.
+    #[wasm_bindgen(js_name = drawSweep)]
+    pub fn draw_sweep(
+        ctx: &CanvasRenderingContext2d,
+        #[wasm_bindgen(unchecked_param_type = "Frame")] frame: &JsValue,
+        shares: &[f64],
+        errors: &[f64],
+        current: f64,
+    ) {
+        let frame = Frame::read(frame);
+        let pen = Pen::begin(ctx, frame.width, frame.height, frame.pixel_ratio, BACKGROUND);
+        pen.scale_text(frame.text_scale);
+        sweep(&pen, (frame.width, frame.height), shares, errors, current);
+    }
+
+    /// The sweep as an SVG document (see `drawSweep`).
+    #[wasm_bindgen(js_name = sweepSvg)]
+    pub fn sweep_svg(
+        #[wasm_bindgen(unchecked_param_type = "Frame")] frame: &JsValue,
+        shares: &[f64],
+        errors: &[f64],
+        current: f64,
+    ) -> String {
+        let frame = Frame::read(frame);
+        let title = "Each solution's median error against the share of wrong edges";
+        svg_document(frame.width, frame.height, title, &|pen| {
+            pen.scale_text(frame.text_scale);
+            sweep(pen, (frame.width, frame.height), shares, errors, current)
+        })
+    }
+}
+
+fn sweep(pen: &Pen, size: (f64, f64), shares: &[f64], errors: &[f64], current: f64) {
+    let title = "median error against the share of wrong edges";
+    draw_error_sweep(pen, size, title, &CURVES, 0.4, (shares, errors), current);
+}
+
+/// The options, checked: an Error names the option.
+fn read_options(value: Option<JsValue>) -> Result<Options, KliError> {
+    let example = "{ count: 100, graph: \"random\", noise: 5, wrong: 0.1, seed: 1 }";
+    let keys = ["count", "graph", "noise", "wrong", "seed", "consensus"];
+    let mut options = Options {
+        count: 100,
+        shape: Shape::Random,
+        noise: 5.0,
+        wrong: 0.1,
+        seed: 1,
+        consensus: false,
+    };
+    let Some(fields) = Fields::new(value, &keys, example)? else { return Ok(options) };
+    if let Some(count) = fields.whole("count", 3.0, MAX_COUNT)? {
+        options.count = count as usize;
+    }
+    if let Some(name) = fields.name("graph")? {
+        options.shape = Shape::from_name(&name).ok_or_else(|| {
+            KliError::new(
+                "graph",
+                kli::ErrorKind::UnknownName { got: name, allowed: Shape::NAMES },
+            )
+        })?;
+    }
+    if let Some(noise) = fields.number("noise")? {
+        options.noise = require("noise", noise, Requirement::NonNegative)?;
+        if noise > 180.0 {
+            return Err(KliError::invalid("noise", "must be at most 180 degrees"));
+        }
+    }
+    if let Some(wrong) = fields.number("wrong")? {
+        options.wrong = share("wrong", wrong)?;
+    }
+    if let Some(seed) = fields.whole("seed", 0.0, 9_007_199_254_740_991.0)? {
+        options.seed = seed as u64;
+    }
+    if let Some(consensus) = fields.boolean("consensus")? {
+        options.consensus = consensus;
+    }
+    Ok(options)
+}
+
+/// A share from 0 to 1, else an Error naming `name`.
+fn share(name: &str, x: f64) -> Result<f64, KliError> {
+    if (0.0..=1.0).contains(&x) {
+        Ok(x)
+    } else {
+        Err(KliError::invalid(name, format!("must be a number from 0 to 1 (got {})", crate::format::number(x))))
+    }
+}
+
+impl SyncDemo {
+    /// Steps a bound of `work` edge visits allows (at least one).
+    fn work(&self, work: f64) -> f64 {
+        (work / self.model.problem.graph.edges().len() as f64).floor().max(1.0)
+    }
+
+    /// `steps` (a whole number from 1 to a bound of work) steps, then one sample of the history;
+    /// false if the flow refused (it does not: its step is valid and the count bounded).
+    fn steps(&mut self, steps: f64) -> bool {
+        self.model.step(steps as usize).is_ok()
+    }
+}
+
+crate::figure::figure_class!(SyncDemo, "SyncSummary");
+
+/// The flow's time, with no end.
+impl Timed for SyncDemo {
+    fn span(&self) -> (f64, f64) {
+        (0.0, f64::INFINITY)
+    }
+
+    fn time(&self) -> f64 {
+        self.model.flow.time()
+    }
+
+    /// Runs on towards `t` (the flow cannot go back), at most [`TASK_WORK`] a call.
+    fn seek(&mut self, t: f64) -> bool {
+        let left =
+            if t.is_finite() { ((t - self.model.flow.time()) / self.model.dt).round() } else { 0.0 };
+        if left < 1.0 {
+            return true;
+        }
+        let steps = left.min(self.work(TASK_WORK));
+        self.steps(steps) && steps >= left
+    }
+
+    /// [`PACE`] steps a second, at most [`FRAME_WORK`] a call. Never at an end.
+    fn advance(&mut self, seconds: f64) -> bool {
+        if seconds.is_finite() && seconds > 0.0 {
+            self.owed = (self.owed + seconds * PACE).min(self.work(FRAME_WORK));
+            let steps = self.owed.floor();
+            if steps >= 1.0 && self.steps(steps) {
+                self.owed -= steps;
+            }
+        }
+        false
+    }
+}
+
+/// The synchronisation page's views: the graph, the Hopf sphere, the first nodes, the flow's
+/// plots, and the two solutions side by side; its data, the graph, the truth and the solutions.
+impl Figure for SyncDemo {
+    const VIEWS: &'static [View] = &[
+        View { name: "graph", title: "The graph: edges by residual, nodes by error", motion: Motion::Moving },
+        View { name: "hopf", title: "Every node and its truth on S²", motion: Motion::Moving },
+        View { name: "objects", title: "The first nodes over their truth", motion: Motion::Moving },
+        View { name: "plots", title: "The flow's cost and error over time", motion: Motion::Moving },
+        View { name: "results", title: "The chordal and robust solutions' residuals", motion: Motion::Still },
+    ];
+    const NAMES: &'static [&'static str] = &names::<5>(Self::VIEWS);
+    const EXPORT: &'static str = "graph";
+
+    /// `{ count, edges, wrong, time, cost, errorDegrees, arrived, chordalCost,
+    /// chordalErrorDegrees, certified, lambdaMin, robustErrorDegrees, flagged, flaggedWrong }`.
+    fn summary(&self) -> JsValue {
+        let m = &self.model;
+        let p = &m.problem;
+        let certificate = m.chordal.certificate;
+        let flags = m.robust.outliers.as_deref().unwrap_or(&[]);
+        Record::new()
+            .set("count", p.truth.len() as f64)
+            .set("edges", p.graph.edges().len() as f64)
+            .set("wrong", p.wrong.iter().filter(|&&w| w).count() as f64)
+            .set("time", m.flow.time())
+            .set("cost", m.flow.cost())
+            .set("errorDegrees", p.median_error(m.flow.rotations()).to_degrees())
+            .set("arrived", m.arrived())
+            .set("chordalCost", m.chordal.cost)
+            .set("chordalErrorDegrees", p.median_error(&m.chordal.rotations).to_degrees())
+            .set("certified", certificate.is_some_and(|c| c.certified))
+            .set("lambdaMin", certificate.map_or(f64::NAN, |c| c.lambda_min))
+            .set("robustErrorDegrees", p.median_error(&m.robust.rotations).to_degrees())
+            .set("flagged", flags.iter().filter(|&&f| f).count() as f64)
+            .set("flaggedWrong", flags.iter().zip(&p.wrong).filter(|&(&f, &w)| f && w).count() as f64)
+            .end()
+    }
+
+    fn paint(&self, which: &View, layer: Layer, pen: &Pen, frame: &Frame) {
+        if !layer.still() {
+            return;
+        }
+        let size = (frame.width, frame.height);
+        match which.name {
+            "graph" => view::draw_graph(pen, &self.model, size),
+            "hopf" => view::draw_sphere(pen, &self.model, &frame.sphere_viewport(), &frame.camera),
+            "objects" => view::draw_objects(pen, &self.model, &self.mesh, size),
+            "plots" => view::draw_plots(pen, &self.model, size),
+            _ => view::draw_results(pen, &self.model, size),
+        }
+    }
+
+    fn export(&self, csv: bool) -> String {
+        export::export(&self.model, csv)
+    }
+}
+
+#[cfg(test)]
+mod tests;
