@@ -10,6 +10,7 @@ import { AVERAGE } from "./average/state.js";
 import { FIGURE_DEFAULTS as KEYFRAMES_FIGURE, KEYFRAMES } from "./keyframes/state.js";
 import { KLI } from "./kli/state.js";
 import { FIGURE_DEFAULTS as SWARM_FIGURE, SWARM } from "./swarm/state.js";
+import { FIGURE_DEFAULTS as SYNC_FIGURE, SYNC } from "./sync/state.js";
 
 /**
  * @typedef {object} State what a page's state module exports (www/<name>/state.js)
@@ -77,6 +78,20 @@ export const PAGES = [
     save: {
       hopf: ["Hopf sphere", "the Hopf sphere"], objects: ["Objects", "the objects"], means: ["Means", "the means"],
       sweep: ["Sweep", "the outlier sweep"], measurements: ["The measurements", "the measurements"],
+    },
+  },
+  {
+    name: "sync", html: "sync.html", title: "Synchronising rotations", state: SYNC, figure: SYNC_FIGURE,
+    module: () => import("./pkg/sync_demo.js"),
+    views: { sync: "graph" },
+    canvases: {
+      graph: "#sync-graph", hopf: "#sync-hopf", plots: "#sync-plots", results: "#sync-results", objects: "#sync-objects",
+      sweep: "#sync-sweep", file: "#sync-file",
+    },
+    save: {
+      graph: ["Graph", "the graph"], hopf: ["Hopf sphere", "the Hopf sphere"], plots: ["Plots", "the plots"],
+      results: ["Solutions", "the two solutions"], objects: ["Objects", "the objects"], sweep: ["Sweep", "the wrong-edge sweep"],
+      edges: ["The edges and nodes", "every edge and node"],
     },
   },
 ];

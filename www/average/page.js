@@ -9,17 +9,23 @@ import { timeTag } from "../runtime/exports.js";
 import { grabPoint } from "../runtime/input.js";
 import { page as registered } from "../pages.js";
 import { Page } from "../runtime/runtime.js";
+import { Sweep } from "../runtime/sweep.js";
 
 /** @typedef {{ count: number, noise: number, outliers: number, seed: number, moved: number[][] }} AverageState */
 
 /** The shares the sweep visits. */
 const SHARES = Array.from({ length: 11 }, (_, i) => i / 20);
-/** The sweep's points so far (4 errors a share, radians), and the share on show (marked on it). */
-const sweep = { shares: /** @type {number[]} */ ([]), errors: /** @type {number[]} */ ([]), share: 0.2, timer: 0 };
-const sweepPoints = () => /** @type {const} */ ([new Float64Array(sweep.shares), new Float64Array(sweep.errors), sweep.share]);
+const degrees = (/** @type {number} */ radians) => (radians * 180) / Math.PI;
+/** The sweep: each mean's error (radians) at each share, the share on show marked. */
+const sweep = new Sweep({
+  table: "#sweep-table tbody",
+  status: "#sweep-status",
+  redraw: () => page.host.redraw(["sweep"]),
+  cells: (share, errors) => [String(share), ...errors.map((e) => (Number.isFinite(e) ? degrees(e).toFixed(2) : "—"))],
+  done: (count) => `Done: ${count} shares, 15 sets each.`,
+});
 /** The views' names in file names. */
 const FILE_NAMES = /** @type {Record<string, string>} */ ({ hopf: "hopf", objects: "objects", means: "means", sweep: "outlier-sweep" });
-const degrees = (/** @type {number} */ radians) => (radians * 180) / Math.PI;
 
 /** @type {Page<AverageState, AverageDemo>} */
 const page = new Page({
@@ -27,8 +33,8 @@ const page = new Page({
   module: average,
   own: {
     sweep: {
-      draw: (ctx, frame) => AverageDemo.drawSweep(ctx, frame, ...sweepPoints()),
-      svg: (frame) => AverageDemo.sweepSvg(frame, ...sweepPoints()),
+      draw: (ctx, frame) => AverageDemo.drawSweep(ctx, frame, ...sweep.drawn),
+      svg: (frame) => AverageDemo.sweepSvg(frame, ...sweep.drawn),
     },
   },
   form: "#average-inputs",
@@ -49,7 +55,7 @@ const page = new Page({
     file: (run) => `kli-average-${run.summary.count}-measurements`,
   },
   shown: (host, run, state) => {
-    sweep.share = state.outliers;
+    sweep.current = state.outliers;
     showValues(host);
     fillMeans(run);
     $("#unmove", HTMLButtonElement).disabled = state.moved.length === 0;
@@ -110,31 +116,10 @@ function grabMeasurement(host, x, y) {
   });
 }
 
-/** One share of the sweep per task, so the page stays responsive. */
+/** The sweep over the current measurements' recipe. */
 function runSweep(/** @type {Host} */ host) {
-  clearTimeout(sweep.timer);
-  sweep.shares = [];
-  sweep.errors = [];
-  const table = $("#sweep-table tbody", HTMLTableSectionElement);
-  const status = $("#sweep-status", HTMLOutputElement);
-  table.replaceChildren();
   const { count, noise, seed } = host.state;
-  const next = (/** @type {number} */ i) => {
-    if (i === SHARES.length) {
-      status.textContent = `Done: ${SHARES.length} shares, 15 sets each.`;
-      return;
-    }
-    const errors = AverageDemo.sweepPoint({ count, noise, seed }, SHARES[i]);
-    sweep.shares.push(SHARES[i]);
-    sweep.errors.push(...errors);
-    const row = table.insertRow();
-    row.insertCell().textContent = String(SHARES[i]);
-    for (const e of errors) row.insertCell().textContent = Number.isFinite(e) ? degrees(e).toFixed(2) : "—";
-    status.textContent = `Sweeping: ${i + 1} of ${SHARES.length}`;
-    host.redraw(["sweep"]);
-    sweep.timer = setTimeout(() => next(i + 1));
-  };
-  next(0);
+  sweep.run(SHARES, (share) => AverageDemo.sweepPoint({ count, noise, seed }, share));
 }
 
 // The sweep fills itself once the page is interactive (a point a task, as the button runs it):

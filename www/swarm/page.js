@@ -7,16 +7,21 @@ import { $ } from "../runtime/dom.js";
 import { timeTag } from "../runtime/exports.js";
 import { page as registered } from "../pages.js";
 import { Page } from "../runtime/runtime.js";
+import { Sweep } from "../runtime/sweep.js";
 
 /** @typedef {import("./state.js").SwarmState} SwarmState */
 
 /** How far the Step button moves the swarm on (model time). */
 const STEP = 0.2;
 const SWEEP = Array.from({ length: 19 }, (_, i) => -1 + i / 2);
-/** The sweep's points so far, and the coupling on show (marked on it). */
-const sweep = { couplings: /** @type {number[]} */ ([]), orders: /** @type {number[]} */ ([]), coupling: 1, timer: 0 };
-/** The sweep's points, for the module's drawing. */
-const sweepPoints = () => /** @type {const} */ ([new Float64Array(sweep.couplings), new Float64Array(sweep.orders), sweep.coupling]);
+/** The sweep: the final R at each coupling, the coupling on show marked. */
+const sweep = new Sweep({
+  table: "#sweep-table tbody",
+  status: "#sweep-status",
+  redraw: () => page.host.redraw(["sweep"]),
+  cells: (coupling, [order]) => [String(Number(coupling.toFixed(4))), order.toFixed(3)],
+  done: (count) => `Done: R at t = 30 for ${count} couplings.`,
+});
 /** The views' names in file names. */
 const FILE_NAMES = /** @type {Record<string, string>} */ ({ hopf: "hopf", objects: "objects", plots: "order-plots", sweep: "coupling-sweep" });
 
@@ -26,8 +31,8 @@ const page = new Page({
   module: swarm,
   own: {
     sweep: {
-      draw: (ctx, frame) => SwarmDemo.drawSweep(ctx, frame, ...sweepPoints()),
-      svg: (frame) => SwarmDemo.sweepSvg(frame, ...sweepPoints()),
+      draw: (ctx, frame) => SwarmDemo.drawSweep(ctx, frame, ...sweep.drawn),
+      svg: (frame) => SwarmDemo.sweepSvg(frame, ...sweep.drawn),
     },
   },
   form: "#swarm-inputs",
@@ -47,7 +52,7 @@ const page = new Page({
     file: (run) => `kli-swarm-${run.summary.count}-oscillators`,
   },
   shown: (host, _, state) => {
-    sweep.coupling = state.coupling;
+    sweep.current = state.coupling;
     showValues(host);
     host.redraw(["sweep"]); // its marker follows K; otherwise it changes only while a sweep runs
   },
@@ -76,30 +81,10 @@ function showValues(/** @type {Host} */ host) {
   host.field("startSpread").disabled = /** @type {HTMLInputElement} */ (host.field("uniform")).checked;
 }
 
-/** One sweep point per task, so the page stays responsive. */
+/** The sweep over the current swarm (at most 200 oscillators). */
 function runSweep(/** @type {Host} */ host) {
-  clearTimeout(sweep.timer);
-  sweep.couplings = [];
-  sweep.orders = [];
-  const table = $("#sweep-table tbody", HTMLTableSectionElement);
-  const status = $("#sweep-status", HTMLOutputElement);
-  table.replaceChildren();
   const options = { ...host.state, count: Math.min(host.state.count, 200) };
-  const next = (/** @type {number} */ i) => {
-    if (i === SWEEP.length) {
-      status.textContent = `Done: R at t = 30 for ${SWEEP.length} couplings.`;
-      return;
-    }
-    sweep.couplings.push(SWEEP[i]);
-    sweep.orders.push(SwarmDemo.sweepOrder(options, SWEEP[i], 30));
-    const row = table.insertRow();
-    row.insertCell().textContent = String(Number(SWEEP[i].toFixed(4)));
-    row.insertCell().textContent = sweep.orders[i].toFixed(3);
-    status.textContent = `Sweeping: ${i + 1} of ${SWEEP.length}`;
-    host.redraw(["sweep"]);
-    sweep.timer = setTimeout(() => next(i + 1));
-  };
-  next(0);
+  sweep.run(SWEEP, (coupling) => [SwarmDemo.sweepOrder(options, coupling, 30)]);
 }
 
 // The sweep fills itself once the page is interactive (a point a task, as the button runs it):

@@ -31,14 +31,9 @@ impl Panel {
     /// The title, the y ticks given, x ticks at a nice step, the axes, and `x_label` at the end
     /// of the x axis.
     pub fn frame_with(&self, pen: &Pen, title: &str, y_ticks: &[(f64, String)], x_label: &str) {
+        self.frame_y(pen, title, y_ticks);
         // Offsets from the axes grow with the text, as the margins do (see `inset`).
         let s = pen.text_scale();
-        pen.text(title, (self.left, self.top - 14.0 * s), INK, 12.5, "left");
-        for (y, label) in y_ticks {
-            let (_, py) = self.at(0.0, *y);
-            pen.line((self.left, py), (self.left + self.width, py), GRID, 1.0, &[]);
-            pen.text(label, (self.left - 5.0, py), MUTED, 10.5, "right");
-        }
         let step = nice_step(self.x_max - self.x_min);
         let mut x = if step > 0.0 { (self.x_min / step).ceil() * step } else { self.x_max + 1.0 };
         while x <= self.x_max + 1e-9 * (self.x_max - self.x_min).abs() && step > 0.0 {
@@ -46,6 +41,19 @@ impl Panel {
             pen.line((px, py), (px, py + 4.0), MUTED, 1.0, &[]);
             pen.text(&trim(x), (px, py + 12.0 * s), MUTED, 10.5, "center");
             x += step;
+        }
+        let end = (self.left + self.width + 8.0 * s, self.top + self.height);
+        pen.text(x_label, end, MUTED, 11.0, "center");
+    }
+
+    /// The title, the y ticks given and the axes, no x ticks (for bars over categories, each
+    /// labelled by its caller).
+    pub fn frame_y(&self, pen: &Pen, title: &str, y_ticks: &[(f64, String)]) {
+        pen.text(title, (self.left, self.top - 14.0 * pen.text_scale()), INK, 12.5, "left");
+        for (y, label) in y_ticks {
+            let (_, py) = self.at(0.0, *y);
+            pen.line((self.left, py), (self.left + self.width, py), GRID, 1.0, &[]);
+            pen.text(label, (self.left - 5.0, py), MUTED, 10.5, "right");
         }
         pen.line(
             (self.left, self.top + self.height),
@@ -55,8 +63,6 @@ impl Panel {
             &[],
         );
         pen.line((self.left, self.top), (self.left, self.top + self.height), MUTED, 1.0, &[]);
-        let end = (self.left + self.width + 8.0 * s, self.top + self.height);
-        pen.text(x_label, end, MUTED, 11.0, "center");
     }
 
     fn frame(&self, pen: &Pen, title: &str, y_ticks: &[(f64, String)]) {

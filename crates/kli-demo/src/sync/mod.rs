@@ -271,7 +271,7 @@ impl Figure for SyncDemo {
         View { name: "results", title: "The chordal and robust solutions' residuals", motion: Motion::Still },
     ];
     const NAMES: &'static [&'static str] = &names::<5>(Self::VIEWS);
-    const EXPORT: &'static str = "graph";
+    const EXPORT: &'static str = "edges";
 
     /// `{ count, edges, wrong, time, cost, errorDegrees, arrived, chordalCost,
     /// chordalErrorDegrees, certified, lambdaMin, robustErrorDegrees, flagged, flaggedWrong }`.

@@ -141,7 +141,13 @@ pub fn draw_objects(pen: &Pen, model: &Model, mesh: &[Face], (width, height): (f
         draw_object(pen, &viewport, &camera, mesh, model.problem.truth[i], false);
         pen.alpha(1.0);
         draw_object(pen, &viewport, &camera, mesh, g * q[i], false);
-        let label = format!("node {}: {}° off", i + 1, fixed(angles[i].to_degrees(), 1));
+        let off = fixed(angles[i].to_degrees(), 1);
+        // A phone's third of the width holds only the short form.
+        let label = if cell >= 150.0 {
+            format!("node {}: {off}° off", i + 1)
+        } else {
+            format!("{}: {off}°", i + 1)
+        };
         pen.text(&label, (left + 0.5 * cell, 10.0), INK, 12.0, "center");
     }
 }
@@ -258,7 +264,7 @@ pub fn draw_sides(pen: &Pen, sides: &[Side], (width, height): (f64, f64)) {
         let p = panel((left, top, w, h), (0.0, 5.0), (0.0, y_top));
         let ticks: Vec<(f64, String)> =
             [0.0, 0.5 * y_top, y_top].iter().map(|&v| (v, trim(v.round()))).collect();
-        p.frame_with(pen, "edges by residual", &ticks, "");
+        p.frame_y(pen, "edges by residual", &ticks);
         let bar = p.width / 5.0;
         for (c, &[plain, marked]) in counts.iter().enumerate() {
             let x0 = p.left + c as f64 * bar + 0.12 * bar;

@@ -1,0 +1,106 @@
+// End-to-end tests of the synchronisation page (www/sync.html) in Debian's headless Chromium.
+import { test } from "node:test";
+import assert from "node:assert/strict";
+import { join } from "node:path";
+import { artifacts, axeViolations, canvasStats, open, setup } from "./browser.mjs";
+
+setup();
+
+/** The residual classes' colours (crates/kli-demo/src/sync/view.rs): under 2°, and 45° or more. */
+const CLASSES = { blue: [59, 91, 219], red: [201, 42, 42] };
+const atOptimum = (page) => page.waitForFunction(() => document.querySelector("#readout").textContent.includes("at the chordal optimum"),
+  undefined, { timeout: 60000 });
+const number = (text, pattern) => Number(text.match(pattern)?.[1]);
+
+test("the flow turns a random start into agreement, on the certified chordal optimum", async () => {
+  const { page, context, problems } = await open("sync.html?n=60&graph=random&noise=1&wrong=0&seed=3", { reducedMotion: "reduce" });
+  // At the random start nearly every edge is far off: red edges, hardly a blue one.
+  assert.match(await page.textContent("#readout"), /^t = 0\.00 /);
+  const start = await canvasStats(page, "#sync-graph", CLASSES);
+  assert.ok(start.red > 4 * start.blue && start.red > 2000, JSON.stringify(start));
+  for (const selector of ["#sync-hopf", "#sync-plots", "#sync-results", "#sync-objects"]) {
+    assert.ok((await canvasStats(page, selector)).drawn > 3000, selector);
+  }
+  const note = await page.textContent("#note");
+  assert.match(note, /^60 nodes, \d+ edges, 0 wrong\. Chordal: [\d.]+° median error, certified the global optimum/);
+  await page.click("#play");
+  await atOptimum(page);
+  await page.click("#play");
+  // Where the flow arrived, its error to the truth is the chordal solution's (computed apart, by
+  // Newton's method), and its edges are within the noise: blue.
+  const readout = await page.textContent("#readout");
+  const flow = number(readout, /median error ([\d.]+)°/);
+  const chordal = number(note, /Chordal: ([\d.]+)°/);
+  assert.ok(Math.abs(flow - chordal) < 0.05, `${readout} / ${note}`);
+  assert.ok(chordal < 1.5, note);
+  const end = await canvasStats(page, "#sync-graph", CLASSES);
+  assert.ok(end.blue > 4 * end.red && end.blue > 2000, JSON.stringify(end));
+  await page.screenshot({ path: join(artifacts, "sync.png"), fullPage: true });
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test("with wrong edges the robust solution sets them aside and is nearer the truth; consensus agrees", async () => {
+  const { page, context, problems } = await open("sync.html", { reducedMotion: "reduce" });
+  assert.equal(await page.inputValue("[name=preset]"), "wrong");
+  assert.match(page.url(), /n=100&graph=random&noise=5&wrong=0\.1&seed=1/);
+  const note = await page.textContent("#note");
+  const [wrong, caught, good] = [/(\d+) wrong\./, /flags (\d+) of the/, /and (\d+) good ones/].map((p) => number(note, p));
+  assert.ok(wrong > 40 && caught >= 0.9 * wrong && good <= 3, note);
+  assert.ok(number(note, /Robust: ([\d.]+)°/) < number(note, /Chordal: ([\d.]+)°/), note);
+  // Consensus: every measurement 1, the noise and the share moot; the flow agrees on one rotation.
+  await page.selectOption("[name=preset]", "consensus");
+  await page.waitForURL(/consensus=1/);
+  assert.equal(await page.isDisabled("[name=noise]"), true);
+  assert.match(await page.textContent("#note"), /, 0 wrong\. Chordal: 0\.00° median error/);
+  await page.click("#play");
+  await atOptimum(page);
+  // Arrived is f ≤ 1e-6: about 0.002° an edge, summed along the grid's slowest mode.
+  const agreed = await page.textContent("#readout");
+  assert.ok(number(agreed, /median error ([\d.]+)°/) < 0.05, agreed);
+  // A refused value stays beside its field.
+  await page.fill("[name=seed]", "1.5");
+  assert.match(await page.textContent("#seed-error"), /^seed must be a whole number/);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+/** Four nodes a quarter turn apart about z: every edge's relative rotation is the same quarter
+ *  turn, and the truth costs 0 (MATH.md's square). */
+const SQUARE = [[0, 1], [1, 2], [2, 3], [3, 0]]
+  .map(([i, j]) => `EDGE_SE3:QUAT ${i} ${j} 1 0 0 0 0 ${Math.SQRT1_2} ${Math.SQRT1_2} ${"1 0 0 0 0 0 1 0 0 0 0 1 0 0 0 1 0 0 1 0 1"}`)
+  .join("\n");
+
+test("a user's own pose graph, opened or dropped, is synchronised with its certificate and residuals", async () => {
+  const { page, context, problems } = await open("sync.html", { reducedMotion: "reduce" });
+  assert.equal(await page.isHidden("#file-figure"), true, "no empty figure before a file");
+  await page.setInputFiles("#file-input", { name: "square.g2o", mimeType: "text/plain", buffer: Buffer.from(SQUARE) });
+  await page.waitForFunction(() => document.querySelector("#file-status").textContent.startsWith("square.g2o: 4 nodes"));
+  assert.equal(await page.textContent("#file-status"), "square.g2o: 4 nodes, 4 edges, certified.");
+  const rows = Object.fromEntries(await page.$$eval("#file-table tr", (trs) => trs.map((tr) => [tr.cells[0].textContent, tr.cells[1].textContent])));
+  assert.ok(Math.abs(Number(rows["Chordal cost f"])) < 1e-20, JSON.stringify(rows));
+  assert.match(rows.Certificate, /^certified/);
+  assert.ok((await canvasStats(page, "#sync-file")).drawn > 3000);
+  // Dropped: a bad line is refused with its number, and the graph on show stays.
+  await page.evaluate(() => {
+    const data = new DataTransfer();
+    data.items.add(new File(["# a comment\nEDGE_SE3:QUAT 0 1 0 0\n"], "bad.g2o"));
+    document.querySelector("#file-section").dispatchEvent(new DragEvent("drop", { dataTransfer: data, bubbles: true, cancelable: true }));
+  });
+  await page.waitForFunction(() => document.querySelector("#file-status").textContent.startsWith("bad.g2o:"));
+  assert.match(await page.textContent("#file-status"), /^bad\.g2o: .*line 2/);
+  assert.equal(await page.isHidden("#file-figure"), false);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test("WCAG 2.2 AA, and at 390 px", async () => {
+  const { page, context } = await open("sync.html", { reducedMotion: "reduce" });
+  assert.deepEqual(await axeViolations(page), []);
+  await context.close();
+  const narrow = await open("sync.html", { viewport: { width: 390, height: 844 }, reducedMotion: "reduce" });
+  assert.ok(await narrow.page.evaluate(() => document.documentElement.scrollWidth <= 390), "no horizontal scrolling");
+  assert.deepEqual(await axeViolations(narrow.page), []);
+  await narrow.page.screenshot({ path: join(artifacts, "sync-390px.png"), fullPage: true });
+  await narrow.context.close();
+});

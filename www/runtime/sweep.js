@@ -1,0 +1,62 @@
+// @ts-check
+// A sweep: a figure of one run's measure at many settings (the swarm's R against K, the means'
+// and the solvers' errors against the share of wrong data), computed one point a task so the page
+// stays responsive, its table (for screen readers) and its status filled as it goes. The page
+// fills it once it is interactive, and its button runs it again: no empty figure.
+import { $ } from "./dom.js";
+
+export class Sweep {
+  /**
+   * @param {object} parts
+   * @param {string} parts.table the selector of the table's body (a row a point)
+   * @param {string} parts.status the selector of its status line
+   * @param {() => void} parts.redraw draws the figure again (a point has arrived)
+   * @param {(x: number, values: number[]) => string[]} parts.cells a point's table cells
+   * @param {(count: number) => string} parts.done the status once every point is in
+   */
+  constructor(parts) {
+    this.parts = parts;
+    /** @type {number[]} the settings visited so far */
+    this.xs = [];
+    /** @type {number[]} their values, as many a point as `compute` returns */
+    this.values = [];
+    /** the page's own setting, marked on the figure */
+    this.current = 0;
+    this.timer = 0;
+  }
+
+  /**
+   * Computes `compute(x)` for each of `xs`, a task each, replacing what was there.
+   * @param {readonly number[]} xs
+   * @param {(x: number) => ArrayLike<number>} compute
+   */
+  run(xs, compute) {
+    const { table, status, redraw, cells, done } = this.parts;
+    clearTimeout(this.timer);
+    this.xs = [];
+    this.values = [];
+    const body = $(table, HTMLTableSectionElement);
+    const line = $(status, HTMLOutputElement);
+    body.replaceChildren();
+    const next = (/** @type {number} */ i) => {
+      if (i === xs.length) {
+        line.textContent = done(xs.length);
+        return;
+      }
+      const values = Array.from(compute(xs[i]));
+      this.xs.push(xs[i]);
+      this.values.push(...values);
+      const row = body.insertRow();
+      for (const text of cells(xs[i], values)) row.insertCell().textContent = text;
+      line.textContent = `Sweeping: ${i + 1} of ${xs.length}`;
+      redraw();
+      this.timer = setTimeout(() => next(i + 1));
+    };
+    next(0);
+  }
+
+  /** What the module's drawing takes: the settings, their values and the page's setting. */
+  get drawn() {
+    return /** @type {const} */ ([new Float64Array(this.xs), new Float64Array(this.values), this.current]);
+  }
+}
