@@ -91,7 +91,7 @@ export const PAGES = [
     save: {
       graph: ["Graph", "the graph"], hopf: ["Hopf sphere", "the Hopf sphere"], plots: ["Plots", "the plots"],
       results: ["Solutions", "the two solutions"], objects: ["Objects", "the objects"], sweep: ["Sweep", "the wrong-edge sweep"],
-      edges: ["The edges and nodes", "every edge and node"],
+      file: ["Your pose graph", "your pose graph's residuals"], edges: ["The edges and nodes", "every edge and node"],
     },
   },
 ];

@@ -297,7 +297,8 @@ test("printed, every page shows no control and keeps each figure whole on one pa
       const printed = await page.evaluate(() => ({
         controls: Array.from(document.querySelectorAll("button, input, select, textarea"))
           .filter((element) => element.checkVisibility()).map((element) => element.id || element.getAttribute("name") || element.tagName),
-        figures: Array.from(document.querySelectorAll("figure"), (figure) => ({
+        // A figure not shown (the synchronisation page's, before a file is opened) is not printed.
+        figures: Array.from(document.querySelectorAll("figure")).filter((figure) => figure.checkVisibility()).map((figure) => ({
           id: figure.querySelector("canvas")?.id, breaks: getComputedStyle(figure).breakInside,
           height: figure.getBoundingClientRect().height,
         })),

@@ -44,7 +44,10 @@ const page = new Page({
     },
     file: {
       draw: (ctx, frame) => own.file?.draw(ctx, frame),
-      svg: (frame) => own.file?.toSvg(frame) ?? "",
+      svg: (frame) => {
+        if (!own.file) throw new Error("open a pose graph first");
+        return own.file.toSvg(frame);
+      },
     },
   },
   form: "#sync-inputs",

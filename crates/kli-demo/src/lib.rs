@@ -33,10 +33,10 @@ pub mod plots;
 pub mod provenance;
 pub mod scene;
 pub mod sphere_view;
-#[cfg(any(feature = "average-page", feature = "sync-page"))]
-mod sweep;
 #[cfg(feature = "swarm-page")]
 pub mod swarm;
+#[cfg(any(feature = "average-page", feature = "sync-page"))]
+mod sweep;
 #[cfg(feature = "sync-page")]
 pub mod sync;
 pub mod ticks;

@@ -152,13 +152,7 @@ pub fn draw_means(pen: &Pen, model: &Model, (width, height): (f64, f64)) {
 }
 
 /// The sweep: each mean's error against the outlier share, 0 to 0.5.
-pub fn draw_sweep(
-    pen: &Pen,
-    size: (f64, f64),
-    shares: &[f64],
-    errors: &[f64],
-    current: f64,
-) {
+pub fn draw_sweep(pen: &Pen, size: (f64, f64), shares: &[f64], errors: &[f64], current: f64) {
     let curves = STYLES.map(|s| Curve { name: s.name, colour: s.colour });
     let title = "each mean's error against the outlier share";
     draw_error_sweep(pen, size, title, &curves, 0.5, (shares, errors), current);

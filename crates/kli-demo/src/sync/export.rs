@@ -63,7 +63,11 @@ pub fn export(model: &Model, csv: bool) -> String {
             number(robust_error),
             flags.iter().filter(|&&f| f).count()
         ));
-        text.push_str(&format!("# flow: t {}, cost {}\n", number(model.flow.time()), number(model.flow.cost())));
+        text.push_str(&format!(
+            "# flow: t {}, cost {}\n",
+            number(model.flow.time()),
+            number(model.flow.cost())
+        ));
         text.push_str("i,j,w,x,y,z,wrong,flowResidualDegrees,chordalResidualDegrees,robustResidualDegrees,robustWeight,outlier,weight\n");
         for row in &rows {
             text.push_str(&joined(row, ","));

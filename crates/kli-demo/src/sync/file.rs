@@ -91,7 +91,10 @@ impl SyncFile {
 
     /// The same as an SVG document.
     #[wasm_bindgen(js_name = toSvg)]
-    pub fn to_svg(&self, #[wasm_bindgen(unchecked_param_type = "Frame")] frame: &JsValue) -> String {
+    pub fn to_svg(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Frame")] frame: &JsValue,
+    ) -> String {
         let frame = Frame::read(frame);
         let title = "Your pose graph: the chordal and robust solutions' residuals";
         svg_document(frame.width, frame.height, title, &|pen| {
@@ -108,7 +111,9 @@ fn median_degrees(residuals: &[f64]) -> f64 {
 impl SyncFile {
     fn paint(&self, pen: &Pen, size: (f64, f64)) {
         let certificate = match self.chordal.certificate {
-            Some(c) if c.certified => format!("certified: λmin(S) = {}", exponential(c.lambda_min, 1)),
+            Some(c) if c.certified => {
+                format!("certified: λmin(S) = {}", exponential(c.lambda_min, 1))
+            }
             Some(c) => format!("not certified: λmin(S) = {}", exponential(c.lambda_min, 1)),
             None => String::new(),
         };
@@ -123,7 +128,10 @@ impl SyncFile {
             },
             Side {
                 heading: "robust (reweighted)".into(),
-                lines: vec![format!("flagged {flagged} of {} edges", self.flagged.len()), String::new()],
+                lines: vec![
+                    format!("flagged {flagged} of {} edges", self.flagged.len()),
+                    String::new(),
+                ],
                 residuals: &self.robust.residuals,
                 marked: &self.flagged,
                 marked_label: "flagged by robust",

@@ -178,10 +178,7 @@ fn read_options(value: Option<JsValue>) -> Result<Options, KliError> {
     }
     if let Some(name) = fields.name("graph")? {
         options.shape = Shape::from_name(&name).ok_or_else(|| {
-            KliError::new(
-                "graph",
-                kli::ErrorKind::UnknownName { got: name, allowed: Shape::NAMES },
-            )
+            KliError::new("graph", kli::ErrorKind::UnknownName { got: name, allowed: Shape::NAMES })
         })?;
     }
     if let Some(noise) = fields.number("noise")? {
@@ -207,7 +204,10 @@ fn share(name: &str, x: f64) -> Result<f64, KliError> {
     if (0.0..=1.0).contains(&x) {
         Ok(x)
     } else {
-        Err(KliError::invalid(name, format!("must be a number from 0 to 1 (got {})", crate::format::number(x))))
+        Err(KliError::invalid(
+            name,
+            format!("must be a number from 0 to 1 (got {})", crate::format::number(x)),
+        ))
     }
 }
 
@@ -238,8 +238,11 @@ impl Timed for SyncDemo {
 
     /// Runs on towards `t` (the flow cannot go back), at most [`TASK_WORK`] a call.
     fn seek(&mut self, t: f64) -> bool {
-        let left =
-            if t.is_finite() { ((t - self.model.flow.time()) / self.model.dt).round() } else { 0.0 };
+        let left = if t.is_finite() {
+            ((t - self.model.flow.time()) / self.model.dt).round()
+        } else {
+            0.0
+        };
         if left < 1.0 {
             return true;
         }
@@ -264,11 +267,23 @@ impl Timed for SyncDemo {
 /// plots, and the two solutions side by side; its data, the graph, the truth and the solutions.
 impl Figure for SyncDemo {
     const VIEWS: &'static [View] = &[
-        View { name: "graph", title: "The graph: edges by residual, nodes by error", motion: Motion::Moving },
+        View {
+            name: "graph",
+            title: "The graph: edges by residual, nodes by error",
+            motion: Motion::Moving,
+        },
         View { name: "hopf", title: "Every node and its truth on S²", motion: Motion::Moving },
         View { name: "objects", title: "The first nodes over their truth", motion: Motion::Moving },
-        View { name: "plots", title: "The flow's cost and error over time", motion: Motion::Moving },
-        View { name: "results", title: "The chordal and robust solutions' residuals", motion: Motion::Still },
+        View {
+            name: "plots",
+            title: "The flow's cost and error over time",
+            motion: Motion::Moving,
+        },
+        View {
+            name: "results",
+            title: "The chordal and robust solutions' residuals",
+            motion: Motion::Still,
+        },
     ];
     const NAMES: &'static [&'static str] = &names::<5>(Self::VIEWS);
     const EXPORT: &'static str = "edges";
@@ -294,7 +309,10 @@ impl Figure for SyncDemo {
             .set("lambdaMin", certificate.map_or(f64::NAN, |c| c.lambda_min))
             .set("robustErrorDegrees", p.median_error(&m.robust.rotations).to_degrees())
             .set("flagged", flags.iter().filter(|&&f| f).count() as f64)
-            .set("flaggedWrong", flags.iter().zip(&p.wrong).filter(|&(&f, &w)| f && w).count() as f64)
+            .set(
+                "flaggedWrong",
+                flags.iter().zip(&p.wrong).filter(|&(&f, &w)| f && w).count() as f64,
+            )
             .end()
     }
 

@@ -65,7 +65,11 @@ pub struct Problem {
 }
 
 /// Each node's place and the edges of `shape` on `count` nodes (always connected).
-pub fn layout(shape: Shape, count: usize, random: &mut Random) -> (Vec<(f64, f64)>, Vec<[usize; 2]>) {
+pub fn layout(
+    shape: Shape,
+    count: usize,
+    random: &mut Random,
+) -> (Vec<(f64, f64)>, Vec<[usize; 2]>) {
     let on_circle = |count: usize| -> Vec<(f64, f64)> {
         (0..count)
             .map(|i| {
@@ -88,7 +92,8 @@ pub fn layout(shape: Shape, count: usize, random: &mut Random) -> (Vec<(f64, f64
             let rows = count.div_ceil(columns);
             let place = |i: usize| {
                 let (r, c) = (i / columns, i % columns);
-                let step = |k: usize, of: usize| if of > 1 { k as f64 / (of - 1) as f64 } else { 0.5 };
+                let step =
+                    |k: usize, of: usize| if of > 1 { k as f64 / (of - 1) as f64 } else { 0.5 };
                 (step(c, columns), step(r, rows))
             };
             let mut edges = Vec::new();

@@ -64,7 +64,8 @@ fn measurements_follow_the_recipe() {
     assert_eq!(wrong.wrong.iter().filter(|&&w| w).count(), 45); // 0.25 × 180
     // Consensus: every measurement and every truth the identity.
     let consensus =
-        Problem::new(&Options { consensus: true, ..options(30, Shape::Ring, 5.0, 0.3, 1) }).unwrap();
+        Problem::new(&Options { consensus: true, ..options(30, Shape::Ring, 5.0, 0.3, 1) })
+            .unwrap();
     assert!(consensus.graph.relative().iter().all(|&r| r == DQuat::IDENTITY));
     assert!(consensus.wrong.iter().all(|&w| !w));
 }
@@ -128,5 +129,3 @@ fn consensus_agrees_from_any_start() {
     assert!(model.problem.median_error(model.flow.rotations()) < 1e-6);
     assert!(model.arrived());
 }
-
-

@@ -143,7 +143,7 @@ pub fn draw_objects(pen: &Pen, model: &Model, mesh: &[Face], (width, height): (f
         draw_object(pen, &viewport, &camera, mesh, g * q[i], false);
         let off = fixed(angles[i].to_degrees(), 1);
         // A phone's third of the width holds only the short form.
-        let label = if cell >= 150.0 {
+        let label = if cell >= 130.0 {
             format!("node {}: {off}° off", i + 1)
         } else {
             format!("{}: {off}°", i + 1)
@@ -186,6 +186,11 @@ pub fn draw_plots(pen: &Pen, model: &Model, (width, height): (f64, f64)) {
     cost.frame_with(pen, "the flow's cost f", &ticks, "t");
     let log = costs.iter().map(|&c| if c > 0.0 { c.log10().max(floor) } else { floor });
     cost.series(pen, times, log, NODE, 2.0, &[]);
+    // The flow now, a dot: at the start the line is a single point.
+    if let (Some(&t), Some(&c)) = (times.last(), costs.last()) {
+        let now = if c > 0.0 { c.log10().max(floor) } else { floor };
+        pen.dots(&[cost.at(t, now)], 3.0, NODE);
+    }
     let certified = model.chordal.certificate.is_some_and(|c| c.certified);
     if best > 0.0 {
         let (_, y) = cost.at(x.0, best.log10());
@@ -209,6 +214,9 @@ pub fn draw_plots(pen: &Pen, model: &Model, (width, height): (f64, f64)) {
     let title = "median error to the truth";
     error.frame_with(pen, title, &ticks, "t");
     error.series(pen, times, errors.iter().map(|e| e.to_degrees()), NODE, 2.0, &[]);
+    if let (Some(&t), Some(&e)) = (times.last(), errors.last()) {
+        pen.dots(&[error.at(t, e.to_degrees())], 3.0, NODE);
+    }
     for (value, colour) in [(chordal, KLI), (robust, SLERP)] {
         let (_, y) = error.at(x.0, value);
         pen.line((error.left, y), (error.left + error.width, y), colour, 1.5, &[5.0, 3.0]);
@@ -310,7 +318,11 @@ pub fn draw_results(pen: &Pen, model: &Model, size: (f64, f64)) {
         Side {
             heading: "chordal (least squares)".into(),
             lines: vec![
-                format!("median error {}°, f = {}", error(&chordal.rotations), exponential(chordal.cost, 3)),
+                format!(
+                    "median error {}°, f = {}",
+                    error(&chordal.rotations),
+                    exponential(chordal.cost, 3)
+                ),
                 certificate,
             ],
             residuals: &chordal.residuals,
