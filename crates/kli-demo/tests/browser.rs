@@ -283,7 +283,7 @@ fn text_boxes(svg: &str, ctx: &CanvasRenderingContext2d) -> Vec<([f64; 4], Strin
 #[wasm_bindgen_test]
 fn no_two_labels_of_a_figure_overlap() {
     use js_sys::{Float64Array, Object, Reflect};
-    use kli_demo::{AverageDemo, KeyframesDemo, KliDemo, SwarmDemo};
+    use kli_demo::{AverageDemo, KeyframesDemo, KliDemo, SwarmDemo, SyncDemo};
     use wasm_bindgen::JsValue;
 
     let frame = |width: f64, height: f64, t: f64| {
@@ -312,6 +312,20 @@ fn no_two_labels_of_a_figure_overlap() {
     let shares: Vec<f64> = (0..11).map(|i| i as f64 / 20.0).collect();
     let errors: Vec<f64> =
         shares.iter().flat_map(|&share| AverageDemo::sweep_point(None, share).unwrap()).collect();
+    // 40 nodes: this debug build solves slowly, and the labels do not depend on the count.
+    let small = || {
+        let options = Object::new();
+        Reflect::set(&options, &"count".into(), &40.0.into()).unwrap();
+        Some(JsValue::from(options).unchecked_into())
+    };
+    let mut sync = SyncDemo::new(small()).unwrap();
+    // On the way to agreement, where the plots have a history and the edges every colour.
+    while !sync.seek(1.0) {}
+    let sync_shares = [0.0, 0.1, 0.2, 0.3, 0.4];
+    let sync_errors: Vec<f64> = sync_shares
+        .iter()
+        .flat_map(|&share| SyncDemo::sweep_point(small(), share).unwrap())
+        .collect();
     // (view, wide screen size, phone size) of each class, as the pages lay them out.
     let sphere = [(560.0, 420.0), (358.0, 268.0)];
     let svgs: Vec<(String, String)> = [
@@ -366,6 +380,25 @@ fn no_two_labels_of_a_figure_overlap() {
     .chain([(1100.0, 240.0), (358.0, 240.0)].map(|(w, h)| {
         let svg = AverageDemo::sweep_svg(&frame(w, h, 0.0), &shares, &errors, 0.2);
         (format!("average sweep {w}×{h}"), Ok(svg))
+    }))
+    .chain(
+        [
+            ("graph", [(676.0, 420.0), (340.0, 380.0)]),
+            ("hopf", [(444.0, 420.0), (340.0, 420.0)]),
+            ("objects", [(444.0, 280.0), (340.0, 280.0)]),
+            ("plots", [(1150.0, 240.0), (340.0, 480.0)]),
+            ("results", [(676.0, 280.0), (340.0, 560.0)]),
+        ]
+        .iter()
+        .flat_map(|(view, sizes)| {
+            sizes.map(|(w, h)| {
+                (format!("sync {view} {w}×{h}"), sync.to_svg(view, &frame(w, h, 0.0)))
+            })
+        }),
+    )
+    .chain([(1150.0, 240.0), (340.0, 240.0)].map(|(w, h)| {
+        let svg = SyncDemo::sweep_svg(&frame(w, h, 0.0), &sync_shares, &sync_errors, 0.1);
+        (format!("sync sweep {w}×{h}"), Ok(svg))
     }))
     .map(|(name, svg)| (name, svg.unwrap()))
     .collect();
