@@ -105,13 +105,15 @@ www/pkg/first/.built: www/pkg/.built www/first-pictures.json scripts/first-pictu
 # The pages' modules, one a page (the pages are listed in www/pages.js, the registry): a build of
 # crates/kli-demo with the page's feature `<page>-page`, bound to www/pkg/<page>_demo.js. One
 # target directory serves every page (cargo keeps each feature set's artifacts); each build is
-# bound right after it, before the next overwrites the .wasm.
+# bound right after it, before the next overwrites the .wasm. It is the kli/sync entry's: faer,
+# which the synchronisation page needs, takes a minute to build and is built there already.
+PAGES_TARGET := target/sync-entry
 www/pkg/.built: $(WWW_SOURCES) pkg/.built
 	@test -n "$(PAGES)" || { echo "no pages: node scripts/pages.mjs names printed nothing"; exit 1; }
 	rm -rf www/pkg
 	for page in $(PAGES); do \
-	  cargo build --release -p kli-demo --lib --target $(TARGET) --no-default-features --features $$page-page; \
-	  wasm-bindgen --target web --out-dir www/pkg --out-name $${page}_demo $(RELEASE)/kli_demo.wasm; \
+	  cargo build --release -p kli-demo --lib --target $(TARGET) --target-dir $(PAGES_TARGET) --no-default-features --features $$page-page; \
+	  wasm-bindgen --target web --out-dir www/pkg --out-name $${page}_demo $(PAGES_TARGET)/$(TARGET)/release/kli_demo.wasm; \
 	  node scripts/glue.mjs www/pkg/$${page}_demo.js; \
 	  wasm-opt -O3 $(WASM_FEATURES) www/pkg/$${page}_demo_bg.wasm -o www/pkg/$${page}_demo_bg.wasm; \
 	  echo "www/pkg/$${page}_demo_bg.wasm: $$(stat -c %s www/pkg/$${page}_demo_bg.wasm) bytes, $$(gzip -9c www/pkg/$${page}_demo_bg.wasm | wc -c) gzipped"; \
@@ -168,8 +170,10 @@ publish-check: pkg
 	cargo publish --dry-run --allow-dirty --quiet -p kli-rotations
 	cd pkg && npm publish --dry-run --loglevel=error
 
+# Without kli-bench: it has no tests (clippy checks it, `make bench` runs it), and building it
+# for tests builds criterion and nalgebra once more.
 test-native:
-	cargo test --workspace
+	cargo test --workspace --exclude kli-bench
 
 test-wasm-node: setup-rust
 	WASM_BINDGEN_TEST_ONLY_NODE=1 cargo test -p kli-wasm --all-features --target $(TARGET) --tests

@@ -104,3 +104,33 @@ test("WCAG 2.2 AA, and at 390 px", async () => {
   await narrow.page.screenshot({ path: join(artifacts, "sync-390px.png"), fullPage: true });
   await narrow.context.close();
 });
+
+test("<kli-figure view=\"sync\">: the page's graph in any page, its state as attributes, a refused one named", async () => {
+  const { page, context, problems } = await open("examples/figures.html", { reducedMotion: "reduce" });
+  const drawn = await page.evaluate(async () => {
+    const figure = document.createElement("kli-figure");
+    figure.setAttribute("view", "sync");
+    figure.setAttribute("count", "30");
+    figure.setAttribute("graph", "grid");
+    figure.setAttribute("t", "2");
+    figure.style.width = "360px";
+    document.body.append(figure);
+    const started = performance.now();
+    while (!(figure.run && figure.t === 2) && performance.now() - started < 20000) await new Promise((r) => setTimeout(r, 50));
+    const canvas = figure.shadowRoot.querySelector("canvas");
+    const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
+    let drawn = 0;
+    for (let i = 0; i < data.length; i += 4) if (data[i] < 250 || data[i + 1] < 250 || data[i + 2] < 250) drawn++;
+    const refused = new Promise((resolve) => figure.addEventListener("kli-error", (event) => resolve(event.detail?.message ?? String(event.detail)), { once: true }));
+    figure.setAttribute("wrong", "2");
+    return { drawn, count: figure.run.summary.count, edges: figure.run.summary.edges, t: figure.t, refused: await refused };
+  });
+  // A 30-node grid (6 × 5): 5 · 5 across and 6 · 4 down.
+  assert.equal(drawn.count, 30);
+  assert.equal(drawn.edges, 49);
+  assert.equal(drawn.t, 2);
+  assert.ok(drawn.drawn > 3000, JSON.stringify(drawn));
+  assert.match(drawn.refused, /wrong/);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
