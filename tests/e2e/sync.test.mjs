@@ -134,3 +134,11 @@ test("<kli-figure view=\"sync\">: the page's graph in any page, its state as att
   assert.deepEqual(problems, []);
   await context.close();
 });
+
+test("the complete graph is refused past 120 nodes (7,140 edges), beside the count", async () => {
+  const { page, context, problems } = await open("sync.html?n=200&graph=complete", { reducedMotion: "reduce" });
+  assert.match(await page.textContent("#count-error"), /^count must be at most 120 for the complete graph \(7140 edges; got 200\)/);
+  assert.match(await page.textContent("#note"), /^100 nodes, \d+ edges/, "the preset's run stands in");
+  assert.deepEqual(problems, []);
+  await context.close();
+});

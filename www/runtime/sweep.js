@@ -26,11 +26,13 @@ export class Sweep {
   }
 
   /**
-   * Computes `compute(x)` for each of `xs`, a task each, replacing what was there.
+   * Computes `compute(x, k)` for each of `xs` and each part `k` below `parts`, a task each (so a
+   * point of many costly parts keeps every task short), replacing what was there.
    * @param {readonly number[]} xs
-   * @param {(x: number) => ArrayLike<number>} compute
+   * @param {(x: number, part: number) => ArrayLike<number>} compute
+   * @param {number} [parts]
    */
-  run(xs, compute) {
+  run(xs, compute, parts = 1) {
     const { table, status, redraw, cells, done } = this.parts;
     clearTimeout(this.timer);
     this.xs = [];
@@ -38,21 +40,25 @@ export class Sweep {
     const body = $(table, HTMLTableSectionElement);
     const line = $(status, HTMLOutputElement);
     body.replaceChildren();
-    const next = (/** @type {number} */ i) => {
+    const next = (/** @type {number} */ i, /** @type {number} */ part, /** @type {number[]} */ values) => {
       if (i === xs.length) {
         line.textContent = done(xs.length);
         return;
       }
-      const values = Array.from(compute(xs[i]));
+      if (part === 0) line.textContent = `Sweeping: ${i + 1} of ${xs.length}`;
+      values.push(...Array.from(compute(xs[i], part)));
+      if (part + 1 < parts) {
+        this.timer = setTimeout(() => next(i, part + 1, values));
+        return;
+      }
       this.xs.push(xs[i]);
       this.values.push(...values);
       const row = body.insertRow();
       for (const text of cells(xs[i], values)) row.insertCell().textContent = text;
-      line.textContent = `Sweeping: ${i + 1} of ${xs.length}`;
       redraw();
-      this.timer = setTimeout(() => next(i + 1));
+      this.timer = setTimeout(() => next(i + 1, 0, []));
     };
-    next(0);
+    next(0, 0, []);
   }
 
   /** What the module's drawing takes: the settings, their values and the page's setting. */

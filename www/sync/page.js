@@ -101,10 +101,13 @@ function showValues(/** @type {Host} */ host) {
   host.field("wrong").disabled = consensus;
 }
 
-/** The sweep over the current recipe (at most 200 nodes). */
+/** The sweep's methods, in the order its figure draws them: a task each. */
+const METHODS = ["spectral", "chordal", "robust"];
+
+/** The sweep over the current recipe (at most 60 nodes). */
 function runSweep(/** @type {Host} */ host) {
   const { count, graph, noise, seed } = host.state;
-  sweep.run(SHARES, (share) => SyncDemo.sweepPoint({ count, graph, noise, seed }, share));
+  sweep.run(SHARES, (share, k) => [SyncDemo.sweepError({ count, graph, noise, seed }, share, METHODS[k])], METHODS.length);
 }
 
 /** Opening or dropping a pose graph: read, synchronised a task later (the status shows first). */

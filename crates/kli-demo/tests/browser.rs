@@ -324,7 +324,10 @@ fn no_two_labels_of_a_figure_overlap() {
     let sync_shares = [0.0, 0.1, 0.2, 0.3, 0.4];
     let sync_errors: Vec<f64> = sync_shares
         .iter()
-        .flat_map(|&share| SyncDemo::sweep_point(small(), share).unwrap())
+        .flat_map(|&share| {
+            ["spectral", "chordal", "robust"]
+                .map(|method| SyncDemo::sweep_error(small(), share, method).unwrap())
+        })
         .collect();
     // (view, wide screen size, phone size) of each class, as the pages lay them out.
     let sphere = [(560.0, 420.0), (358.0, 268.0)];
