@@ -114,7 +114,7 @@ impl SyncDemo {
 
     /// One value of the sweep: the median error to the truth (radians) of `method`'s solution
     /// ("spectral", "chordal" or "robust") of the problem these options make with the share
-    /// `wrong` of wrong edges, on at most [`SWEEP_COUNT`] nodes. A call a task keeps each task
+    /// `wrong` of wrong edges, on at most 60 nodes. A call a task keeps each task
     /// short (a few milliseconds): the sweep fills itself while the page is in use.
     #[wasm_bindgen(js_name = sweepError)]
     pub fn sweep_error(
