@@ -87,17 +87,18 @@ pub(crate) fn certify(graph: &Graph, pattern: &Pattern, q: &[DQuat]) -> Certific
     let positive = pattern.factor(graph, &s, tolerance);
     let certified = positive.is_some();
     // The shift below which S − σ I is positive definite: −τ when certified, else Gershgorin's
-    // bound (strictly below every eigenvalue), then a closer one from the first estimate.
-    let (mut sigma, mut factor) = match positive {
+    // bound (strictly below every eigenvalue). Lanczos on (S − σ I)⁻¹ then finds its top, whose
+    // reciprocal plus σ is the lowest eigenvalue off span(Y). From Gershgorin's shift a second
+    // round from a closer one changed λ_min by 1e-14 at most, on graphs of 200 to 500 nodes with
+    // 20–40% wrong edges (2026-11-25): one round is enough.
+    let (sigma, factor) = match positive {
         Some(factor) => (-tolerance, Some(factor)),
         None => {
             let sigma = s.gershgorin_lower(graph) - tolerance.max(f64::MIN_POSITIVE);
             (sigma, pattern.factor(graph, &s, -sigma))
         }
     };
-    let mut gap = f64::NAN;
-    for _round in 0..2 {
-        let Some(f) = factor.as_ref() else { break };
+    let gap = factor.map_or(f64::NAN, |f| {
         let ritz = lanczos::largest(
             3 * n,
             |x, out| {
@@ -109,21 +110,7 @@ pub(crate) fn certify(graph: &Graph, pattern: &Pattern, q: &[DQuat]) -> Certific
             300,
             1e-8,
         );
-        let Some(&theta) = ritz.values.first() else { break };
-        gap = sigma + 1.0 / theta;
-        if certified {
-            break;
-        }
-        // Ritz values of the inverse lie below its top eigenvalue, so `gap` lies above λ_min:
-        // a shift a little below it brings the next round's eigenvalue nearer the operator's top.
-        let closer = gap - 1e-3 * gap.abs() - tolerance;
-        match pattern.factor(graph, &s, -closer) {
-            Some(f) => {
-                sigma = closer;
-                factor = Some(f);
-            }
-            None => break,
-        }
-    }
+        ritz.values.first().map_or(f64::NAN, |&theta| sigma + 1.0 / theta)
+    });
     Certificate { lambda_min: on_y.min(gap), gap, tolerance, certified }
 }
