@@ -36,6 +36,9 @@ export async function open(query = "", options = {}) {
   await page.goto(`${origin}/${query}`);
   // Pages with a load status are ready when it hides; others (the examples) once loaded.
   await page.waitForFunction(() => document.querySelector("#load-status")?.hidden ?? document.readyState === "complete");
+  // The canvases are sized (a ResizeObserver's callback) and drawn in the frames after that:
+  // a cold machine once read a canvas still at its default 300 × 150, blank.
+  await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
   return { page, context, problems };
 }
 
