@@ -33,7 +33,7 @@ const cut = (html, pattern) => {
 const page = cut(cut(readFileSync(join(root, "www/index.html"), "utf8"), /<script[^]*?<\/script>/g),
   /<link rel="(modulepreload|preload)"[^>]*>/g);
 const head = page.slice(0, page.indexOf("<body>") + "<body>".length);
-const noPictures = cut(page, /<picture[^]*?<\/picture>/g);
+const noPictures = cut(cut(page, /<div class="first-picture"[^>]*><\/div>/g), /<link rel="stylesheet" href="pkg\/first\/[^>]*>/g);
 const variants = {
   line: `${head}<p>One line of text.</p></body></html>`,
   header: `${head}${page.match(/<header[^]*?<\/header>/)[0]}</body></html>`,

@@ -1,34 +1,80 @@
-// Each page's first picture, drawn at build time so that the page shows its figures before any
-// script runs (and when the module cannot load, and printed): the page's default state at its
-// first time, drawn by the page's own module in Node through the figure interface (`toSvg`), one
-// SVG a canvas and a layout, at the size that canvas has in that layout. The HTML shows them in a
-// <picture class="first-picture"> before each canvas; the runtime takes a picture away once its
-// canvas is drawn (figures.js).
+// Each page's first picture, drawn at build time so that the page shows its figures in the same
+// paint as its text: the page's default state at its first time, drawn by the page's own module in
+// Node through the figure interface (`toSvg`), a picture a canvas and a layout, at the size that
+// canvas has in that layout. Each page has a style sheet a layout, www/pkg/first/<page>-<layout>.css,
+// that gives each canvas's `<div class="first-picture">` (right before the canvas) its picture as a
+// data: address: the layout's sheet blocks rendering, so the first paint has the pictures with the
+// text (a separate image is fetched and decoded after the text is painted, 40–250 ms later here);
+// the other layout's sheet is fetched without blocking. The runtime takes a picture away once its
+// canvas is drawn (figures.js). Each polyline is simplified to within 0.1 px first (the
+// pictures are only seen until the canvas draws): half the bytes.
 //
-//   node scripts/first-pictures.mjs            writes www/pkg/first/<canvas id>-<layout>.svg (make www)
+//   node scripts/first-pictures.mjs            writes www/pkg/first/<page>-<layout>.css (make www)
 //   node scripts/first-pictures.mjs --measure  measures the canvases in Chromium into
 //                                              www/first-pictures.json (after a change of style.css)
 import { mkdirSync, readFileSync, writeFileSync } from "node:fs";
 import { PAGES } from "../www/pages.js";
 
 const at = (path) => new URL(`../${path}`, import.meta.url);
-/** The layouts a page has a picture for: a wide screen (two columns of views, the widths fixed by
- *  `main`'s max-width) and a phone (one column, 390 px). Between them, the nearer picture is
- *  scaled to fit (`object-fit: contain`) until the live canvas takes over. */
+/** The layouts a page has pictures for: a wide screen (two columns of views, the widths fixed by
+ *  `main`'s max-width) and a phone (one column, 390 px), each with the media its sheet applies
+ *  to. Between them, the picture is scaled to fit (`background-size: contain`) until the live
+ *  canvas takes over. */
 export const LAYOUTS = [
-  { name: "wide", viewport: { width: 1280, height: 900 }, media: null },
+  { name: "wide", viewport: { width: 1280, height: 900 }, media: "not all and (max-width: 800px)" },
   { name: "phone", viewport: { width: 390, height: 844 }, media: "(max-width: 800px)" },
 ];
 const SIZES = "www/first-pictures.json";
+/** How far a simplified polyline may be from the drawn one, px. */
+const TOLERANCE = 0.1;
 
 /** The markup of a canvas's first picture, as the HTML must have it right before the canvas. */
-export function pictureMarkup(id, sizes) {
-  const src = (layout) => `pkg/first/${id}-${layout}.svg`;
-  const [wide, phone] = LAYOUTS;
-  const [width, height] = sizes[wide.name][id].map(Math.round);
-  return `<picture class="first-picture"><source media="${phone.media}" srcset="${src(phone.name)}">` +
-    `<img src="${src(wide.name)}" alt="" width="${width}" height="${height}" decoding="sync" fetchpriority="high" elementtiming="kli-first-picture"></picture>`;
+export const pictureMarkup = (id) => `<div class="first-picture" id="${id}-first" elementtiming="kli-first-picture"></div>`;
+
+/** A page's first-picture style sheet in `layout`, its address in www/. */
+export const pictureSheet = (page, layout) => `pkg/first/${page.name}-${layout.name}.css`;
+
+/** The links to a page's first-picture style sheets, as its HTML has them after style.css. */
+export const pictureLinks = (page) =>
+  LAYOUTS.map((layout) => `<link rel="stylesheet" href="${pictureSheet(page, layout)}" media="${layout.media}">\n`).join("");
+
+/** `points` (x,y pairs) with each point dropped that is within `tolerance` of the line through
+ *  the kept points either side (Ramer–Douglas–Peucker). */
+export function simplify(points, tolerance) {
+  const n = points.length;
+  if (n < 3) return points;
+  const keep = new Uint8Array(n);
+  keep[0] = keep[n - 1] = 1;
+  const spans = [[0, n - 1]];
+  while (spans.length > 0) {
+    const [a, b] = /** @type {[number, number]} */ (spans.pop());
+    const [ax, ay] = points[a], [bx, by] = points[b];
+    const [dx, dy] = [bx - ax, by - ay];
+    const length = Math.hypot(dx, dy);
+    let [far, worst] = [-1, tolerance];
+    for (let i = a + 1; i < b; i++) {
+      const [px, py] = points[i];
+      const d = length > 0 ? Math.abs(dy * (px - ax) - dx * (py - ay)) / length : Math.hypot(px - ax, py - ay);
+      if (d > worst) [far, worst] = [i, d];
+    }
+    if (far >= 0) {
+      keep[far] = 1;
+      spans.push([a, far], [far, b]);
+    }
+  }
+  return points.filter((_, i) => keep[i] === 1);
 }
+
+/** The SVG with every polyline simplified to within `tolerance`. */
+const simplified = (svg, tolerance) => svg.replace(/ points="([^"]*)"/g, (_, list) => {
+  const points = list.trim().split(/\s+/).map((pair) => pair.split(",").map(Number));
+  return ` points="${simplify(points, tolerance).map((point) => point.join(",")).join(" ")}"`;
+});
+
+/** `svg` as a data: address inside a single-quoted CSS string: what would end the string, the
+ *  line or the address escaped, and everything outside printable ASCII as its UTF-8 bytes. */
+const dataAddress = (svg) =>
+  `data:image/svg+xml,${svg.replace(/[^ -~]|[%#'\\<>]/gu, (c) => (c === "'" ? "%27" : encodeURIComponent(c)))}`;
 
 /** The canvases whose first picture the module draws: each page's canvases of its runs' views. */
 function drawn(page, run) {
@@ -75,7 +121,7 @@ async function draw() {
   const sizes = JSON.parse(readFileSync(at(SIZES), "utf8"));
   mkdirSync(at("www/pkg/first"), { recursive: true });
   const problems = [];
-  let bytes = 0, count = 0;
+  let drawnBytes = 0, bytes = 0, count = 0;
   for (const page of PAGES) {
     const module = await import(at(`www/pkg/${page.name}_demo.js`).href);
     module.initSync({ module: readFileSync(at(`www/pkg/${page.name}_demo_bg.wasm`)) });
@@ -83,25 +129,32 @@ async function draw() {
     const run = state.create(module, state.defaults);
     const [azimuth, elevation] = module.defaultCamera();
     const html = readFileSync(at(`www/${page.html}`), "utf8");
+    const sheets = Object.fromEntries(LAYOUTS.map((layout) => [layout.name, [`/* ${page.html}'s first pictures, ${layout.name} (scripts/first-pictures.mjs) */`]]));
     for (const [view, id] of drawn(page, run)) {
       for (const layout of LAYOUTS) {
         const size = sizes[layout.name][id];
         if (!size) throw new Error(`${SIZES} has no size of #${id}: run node scripts/first-pictures.mjs --measure`);
         const [width, height] = size;
         const svg = run.toSvg(view, { width, height, pixelRatio: 1, t: run.time, azimuth, elevation, textScale: 1 });
-        writeFileSync(at(`www/pkg/first/${id}-${layout.name}.svg`), svg);
-        bytes += svg.length;
+        const picture = simplified(svg, TOLERANCE);
+        // Printed without the module, the picture sizes its own box (on screen the canvas does).
+        sheets[layout.name].push(`#${id}-first { background-image: url('${dataAddress(picture)}'); }`,
+          `@media print { #${id}-first { aspect-ratio: ${width} / ${height}; } }`);
+        drawnBytes += svg.length;
+        bytes += picture.length;
         count++;
       }
-      const markup = pictureMarkup(id, sizes);
+      const markup = pictureMarkup(id);
       if (!new RegExp(`${escape(markup)}\\s*<canvas id="${id}"`).test(html)) {
         problems.push(`www/${page.html} must have, right before <canvas id="${id}">:\n  ${markup}`);
       }
     }
+    for (const layout of LAYOUTS) writeFileSync(at(`www/${pictureSheet(page, layout)}`), `${sheets[layout.name].join("\n")}\n`);
+    if (!html.includes(pictureLinks(page))) problems.push(`www/${page.html} must link its first pictures' sheets (node scripts/pages.mjs write)`);
     run.free();
   }
   if (problems.length) throw new Error(`the first pictures are not where the pages show them:\n${problems.join("\n")}`);
-  console.log(`www/pkg/first/: ${count} first pictures, ${bytes} bytes`);
+  console.log(`www/pkg/first/: ${count} first pictures, ${drawnBytes} bytes of SVG drawn, ${bytes} simplified`);
 }
 
 const escape = (text) => text.replace(/[.*+?^${}()|[\]\\]/g, "\\$&");

@@ -11,6 +11,7 @@ import { createHash } from "node:crypto";
 import { existsSync, readFileSync, writeFileSync } from "node:fs";
 import { join, relative, resolve } from "node:path";
 import { MORE_LINKS, PAGES, bundle, script } from "../www/pages.js";
+import { LAYOUTS, pictureLinks, pictureSheet } from "./first-pictures.mjs";
 
 const www = new URL("../www/", import.meta.url).pathname;
 const SCRIPT = /<script type="module" src="[^"]*"><\/script>/;
@@ -43,16 +44,18 @@ function withRegistry(html, page) {
   return html.replace(NAV, navigation(page)).replace(SAVE_LIST, (_, start, end) => start + saveList(page) + end);
 }
 
-/** The page's HTML loading its bundle, and its .wasm from the start (the bundle asks for it
- *  only once it runs). */
+/** The page's HTML loading its first pictures' sheets (render-blocking: the pictures come in the
+ *  text's paint), its bundle, and its .wasm from the start (the bundle asks for it only once it
+ *  runs). */
 function withBundle(html, page) {
   if (!SCRIPT.test(html)) throw new Error(`${page.html}: no <script type="module" src="…"> to point at the bundle`);
   const anchor = '<link rel="stylesheet" href="style.css">\n';
   if (!html.includes(anchor)) throw new Error(`${page.html}: no ${anchor.trim()} to put the preload after`);
-  const preload = `<link rel="modulepreload" href="pkg/${page.name}_demo.js">\n` +
+  const preload = pictureLinks(page) + `<link rel="modulepreload" href="pkg/${page.name}_demo.js">\n` +
     `<link rel="preload" href="pkg/${page.name}_demo_bg.wasm" as="fetch" type="application/wasm" crossorigin>\n`;
   return html
     .replace(/^<link rel="(modulepreload|preload)"[^>]*>\n/gm, "")
+    .replace(/^<link rel="stylesheet" href="pkg\/first\/[^>]*>\n/gm, "")
     .replace(anchor, anchor + preload)
     .replace(SCRIPT, `<script type="module" src="${bundle(page)}"></script>`);
 }
@@ -70,8 +73,8 @@ async function offlineFiles() {
     files.add(bundle(page));
     files.add(`pkg/${page.name}_demo.js`);
     files.add(`pkg/${page.name}_demo_bg.wasm`);
-    // Its first pictures (scripts/first-pictures.mjs), as its HTML names them.
-    for (const [file] of readFileSync(join(www, page.html), "utf8").matchAll(/pkg\/first\/[\w-]+\.svg/g)) files.add(file);
+    // Its first pictures (scripts/first-pictures.mjs).
+    for (const layout of LAYOUTS) files.add(pictureSheet(page, layout));
   }
   return [...files].sort();
 }

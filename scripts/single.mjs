@@ -7,6 +7,7 @@ import { build } from "esbuild";
 import { mkdir, readFile, writeFile } from "node:fs/promises";
 import { join } from "node:path";
 import { MORE_LINKS, PAGES, bundle as bundleOf, script as scriptOf } from "../www/pages.js";
+import { LAYOUTS, pictureSheet } from "./first-pictures.mjs";
 
 const root = new URL("../", import.meta.url).pathname;
 const www = join(root, "www");
@@ -68,11 +69,12 @@ async function single(entry) {
   replace(`<script type="module" src="${bundleOf(entry)}"></script>`, () => `<script type="module">\n${code}</script>`);
   // The examples need the site's import map and vendored files: not part of the one-file pages.
   for (const link of MORE_LINKS) replace(` · <a href="${link.href}">${link.title}</a>`, "");
-  // The first pictures (scripts/first-pictures.mjs) inside, as data: addresses.
-  const pictures = [...html.matchAll(/"(pkg\/first\/[\w-]+\.svg)"/g)].map(([, file]) => file);
-  for (const file of new Set(pictures)) {
-    const svg = await readFile(join(www, file));
-    replace(new RegExp(`"${file}"`, "g"), `"data:image/svg+xml;base64,${svg.toString("base64")}"`);
+  // The first pictures' sheets (scripts/first-pictures.mjs) inside: their pictures are data:
+  // addresses already.
+  for (const layout of LAYOUTS) {
+    const sheet = await readFile(join(www, pictureSheet(entry, layout)), "utf8");
+    replace(`<link rel="stylesheet" href="${pictureSheet(entry, layout)}" media="${layout.media}">`,
+      () => `<style media="${layout.media}">\n${sheet}</style>`);
   }
   await writeFile(join(out, page), html);
   return html.length;

@@ -23,7 +23,7 @@ const TOLERANCE = { mean: 6.5, far: 0.05 };
 
 /** The canvases that have a first picture, by the page's HTML. */
 const pictured = (page) => Object.values(page.canvases).filter((selector) =>
-  readFileSync(join(root, "www", page.html), "utf8").includes(`pkg/first/${selector.slice(1)}-`));
+  readFileSync(join(root, "www", page.html), "utf8").includes(`id="${selector.slice(1)}-first"`));
 
 /** Opens `html` with its .wasm held until `release()` (reduced motion: the live page rests at
  *  its first time, as the picture shows it). */
@@ -69,10 +69,14 @@ for (const layout of LAYOUTS) {
       assert.ok(selectors.length >= 2, `${page.html} has first pictures`);
       const { page: tab, context, problems, release } = await held(page.html, layout.viewport);
       try {
-        // Every picture loaded and shown while the module is still held back.
-        await tab.waitForFunction(() => [...document.querySelectorAll(".first-picture img")].every((image) => image.complete && image.naturalWidth > 0));
+        // Every picture shown while the module is still held back, and in the text's paint: its
+        // sheet blocks rendering, so the first contentful paint is the pictures' (Element Timing).
+        assert.ok(await tab.evaluate(() => [...document.querySelectorAll(".first-picture")].every((picture) =>
+          getComputedStyle(picture).backgroundImage.startsWith('url("data:image/svg+xml'))), "each picture from its sheet");
         await tab.waitForFunction(() => performance.getEntriesByName("kli:first-frame").length > 0);
         assert.equal(await tab.evaluate(() => performance.getEntriesByName("kli:wasm-ready").length), 0, "the module was held back");
+        const [painted, text] = await tab.evaluate(() => ["kli:first-frame", "first-contentful-paint"].map((name) => performance.getEntriesByName(name)[0].startTime));
+        assert.equal(painted, text, "the pictures came in the text's paint");
         const before = await shots(tab, selectors);
         const readout = await tab.textContent("#readout");
         // The handover is watched on the screen the page opens with, as a reader sees it (and as
@@ -123,7 +127,7 @@ test("with no module, the first pictures stay, and print; a URL asking for anoth
       assert.equal(await page.locator(".first-picture").count(), kept ? 3 : 0, query);
       if (!kept) continue;
       await page.emulateMedia({ media: "print" });
-      const box = await page.locator(".first-picture img").first().boundingBox();
+      const box = await page.locator(".first-picture").first().boundingBox();
       assert.ok(box && box.height > 100, `printed: ${JSON.stringify(box)}`);
     } finally {
       await context.close();

@@ -100,17 +100,17 @@ function markFirstPictures() {
   const mark = (/** @type {number} */ startTime) => {
     if (performance.getEntriesByName("kli:first-frame").length === 0) performance.mark("kli:first-frame", { startTime });
   };
-  const onScreen = [...document.querySelectorAll(".first-picture img")].filter((image) => {
-    const box = image.getBoundingClientRect();
+  const onScreen = [...document.querySelectorAll(".first-picture")].filter((picture) => {
+    const box = picture.getBoundingClientRect();
     return box.width > 0 && box.bottom > 0 && box.top < innerHeight;
   }).length;
   if (onScreen === 0 || !PerformanceObserver.supportedEntryTypes.includes("element")) return mark;
   let drawn = Infinity;
-  /** @type {Map<string, number>} each picture's paint, by its address */
+  /** @type {Map<string, number>} each picture's paint, by its element's id */
   const painted = new Map();
   const take = (/** @type {PerformanceEntryList} */ entries) => {
     for (const entry of /** @type {any[]} */ (entries)) {
-      if (entry.identifier === "kli-first-picture") painted.set(entry.url, entry.renderTime || entry.loadTime);
+      if (entry.identifier === "kli-first-picture") painted.set(entry.id, entry.renderTime || entry.loadTime);
     }
     if (painted.size < onScreen) return;
     observer.disconnect();
