@@ -73,6 +73,8 @@ async function offlineFiles() {
     files.add(bundle(page));
     files.add(`pkg/${page.name}_demo.js`);
     files.add(`pkg/${page.name}_demo_bg.wasm`);
+    // Its worker, if it has one (www/<name>/worker.js, loaded by the page as it is).
+    if (existsSync(join(www, page.name, "worker.js"))) files.add(`${page.name}/worker.js`);
     // Its first pictures (scripts/first-pictures.mjs).
     for (const layout of LAYOUTS) files.add(pictureSheet(page, layout));
   }

@@ -11,6 +11,11 @@ const CLASSES = { blue: [59, 91, 219], red: [201, 42, 42] };
 const atOptimum = (page) => page.waitForFunction(() => document.querySelector("#readout").textContent.includes("at the chordal optimum"),
   undefined, { timeout: 60000 });
 const number = (text, pattern) => Number(text.match(pattern)?.[1]);
+/** Waits for the run's solutions (a worker computes them) and returns the note they fill. */
+const solved = async (page) => {
+  await page.waitForFunction(() => !document.querySelector("#note").textContent.endsWith("Solving…"), undefined, { timeout: 60000 });
+  return page.textContent("#note");
+};
 
 test("the flow turns a random start into agreement, on the certified chordal optimum", async () => {
   const { page, context, problems } = await open("sync.html?n=60&graph=random&noise=1&wrong=0&seed=3", { reducedMotion: "reduce" });
@@ -21,7 +26,7 @@ test("the flow turns a random start into agreement, on the certified chordal opt
   for (const selector of ["#sync-hopf", "#sync-plots", "#sync-results", "#sync-objects"]) {
     assert.ok((await canvasStats(page, selector)).drawn > 3000, selector);
   }
-  const note = await page.textContent("#note");
+  const note = await solved(page);
   assert.match(note, /^60 nodes, \d+ edges, 0 wrong\. Chordal: [\d.]+° median error, certified the global optimum/);
   await page.click("#play");
   await atOptimum(page);
@@ -44,7 +49,7 @@ test("with wrong edges the robust solution sets them aside and is nearer the tru
   const { page, context, problems } = await open("sync.html", { reducedMotion: "reduce" });
   assert.equal(await page.inputValue("[name=preset]"), "wrong");
   assert.match(page.url(), /n=100&graph=random&noise=5&wrong=0\.1&seed=1/);
-  const note = await page.textContent("#note");
+  const note = await solved(page);
   const [wrong, caught, good] = [/(\d+) wrong\./, /flags (\d+) of the/, /and (\d+) good ones/].map((p) => number(note, p));
   assert.ok(wrong > 40 && caught >= 0.9 * wrong && good <= 3, note);
   assert.ok(number(note, /Robust: ([\d.]+)°/) < number(note, /Chordal: ([\d.]+)°/), note);
@@ -52,7 +57,7 @@ test("with wrong edges the robust solution sets them aside and is nearer the tru
   await page.selectOption("[name=preset]", "consensus");
   await page.waitForURL(/consensus=1/);
   assert.equal(await page.isDisabled("[name=noise]"), true);
-  assert.match(await page.textContent("#note"), /, 0 wrong\. Chordal: 0\.00° median error/);
+  assert.match(await solved(page), /, 0 wrong\. Chordal: 0\.00° median error/);
   await page.click("#play");
   await atOptimum(page);
   // Arrived is f ≤ 1e-6: about 0.002° an edge, summed along the grid's slowest mode.
@@ -63,6 +68,40 @@ test("with wrong edges the robust solution sets them aside and is nearer the tru
   assert.match(await page.textContent("#seed-error"), /^seed must be a whole number/);
   assert.deepEqual(problems, []);
   await context.close();
+});
+
+test("each run is solved in a worker while the flow runs, the sweep too; without a worker, on the page, alike", async () => {
+  const notes = [];
+  for (const worker of [true, false]) {
+    const { page, context, problems } = await open("sync.html?n=150&graph=random&noise=4&wrong=0.2&seed=5", {
+      reducedMotion: "reduce",
+      init: () => {
+        // What the page saw before its solutions came: the note, the results view's state.
+        window.__early = [];
+        new MutationObserver(() => window.__early.push(document.querySelector("#note")?.textContent ?? "")).observe(document, { subtree: true, childList: true, characterData: true });
+      },
+      prepare: (context) => context.route(/\/sync\/worker\.js$/, (route) => (worker ? route.continue() : route.abort())),
+    });
+    const note = await solved(page);
+    if (worker) assert.deepEqual(page.workers().map((w) => new URL(w.url()).pathname), ["/sync/worker.js"]);
+    // The run was on show, unsolved, before its solutions came.
+    assert.ok(await page.evaluate(() => window.__early.some((text) => text.endsWith("wrong. Solving…"))), "the note said Solving… first");
+    assert.match(note, /^150 nodes, \d+ edges, \d+ wrong\. Chordal: [\d.]+° median error, (certified|not proved)/);
+    notes.push(note);
+    // The sweep fills itself the same way.
+    await page.waitForFunction(() => document.querySelector("#sweep-status").textContent.startsWith("Done"), undefined, { timeout: 120000 });
+    assert.equal(await page.locator("#sweep-table tbody tr").count(), 11);
+    assert.ok((await canvasStats(page, "#sync-results")).drawn > 3000, "the solutions drawn");
+    // A new run supersedes the one being solved: only its solutions are shown.
+    await page.fill("[name=seed]", "6");
+    await page.fill("[name=seed]", "7");
+    await page.waitForURL(/seed=7/);
+    assert.match(await solved(page), /^150 nodes/);
+    const expected = worker ? [] : [problems.find((p) => /failed: .*worker\.js/.test(p))];
+    assert.deepEqual(problems, expected.filter(Boolean));
+    await context.close();
+  }
+  assert.equal(notes[0], notes[1], "the worker's solutions are the page's own");
 });
 
 /** Four nodes a quarter turn apart about z: every edge's relative rotation is the same quarter

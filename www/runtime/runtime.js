@@ -52,6 +52,8 @@ import { videoPanel } from "./video/panel.js";
  * @property {(error: unknown) => void} showError shows an Error of the module beside its fields
  * @property {(t: number) => void} seek pauses and moves to `t`
  * @property {(views?: string[]) => void} redraw draws again (the named views' still parts too)
+ * @property {() => void} changed the run on show changed in place (its solutions came): its note, readout and every
+ *   view drawn again
  * @property {(view: string) => import("./figures.js").Frame | null} frame a view's frame at the time on show
  */
 
@@ -64,6 +66,8 @@ import { videoPanel } from "./video/panel.js";
  * @property {import("../pages.js").Page} entry the page's entry in the registry (www/pages.js): its canvases, its Save
  *   list and its state (schema, presets, defaults, the module's run for a state, the key an Error is about)
  * @property {Module} module
+ * @property {(module: any, state: State) => R} [create] the page's run for a state, when not its state's `create` (the
+ *   synchronisation page builds its runs unsolved and solves them in a worker; <kli-figure> keeps the state's)
  * @property {Record<string, { draw: import("./figures.js").Painter, svg: (frame: import("./figures.js").Frame) => string }>} [own]
  *   views the page draws itself (with the module's static drawing functions), and their SVG
  * @property {string} form the form's selector
@@ -160,7 +164,7 @@ export class Page {
       /** @type {Record<string, State>} */ presets: state.presets,
       /** @type {State} */ defaults: /** @type {State} */ (state.defaults),
       /** the module's run for a state (its constructor checks it) */
-      create: (/** @type {State} */ s) => /** @type {R} */ (state.create(d.module, s)),
+      create: (/** @type {State} */ s) => /** @type {R} */ ((d.create ?? state.create)(d.module, s)),
       /** the state key an Error is about */
       keyOf: (/** @type {unknown} */ error) => /** @type {(keyof State & string) | undefined} */ (state.keyOf(error)),
     };
@@ -170,6 +174,8 @@ export class Page {
     const canvases = Object.fromEntries(Object.entries(d.entry.canvases).map(([view, selector]) => [view, $(selector, HTMLCanvasElement)]));
     const painters = Object.fromEntries(Object.entries(d.own ?? {}).map(([view, { draw }]) => [view, draw]));
     this.figures = new Figures(canvases, painters);
+    // While playing, a view comes back into the frames as it nears the screen.
+    this.figures.watch(() => this.requestDraw());
     this.player = new Player({ draw: () => this.draw(), changed: () => this.playChanged() });
     /** @type {R | null} */
     this.run = null;
@@ -227,6 +233,13 @@ export class Page {
         this.requestDraw();
       },
       frame: (view) => this.figures.frame(view, this.t),
+      changed: () => {
+        if (!this.run) return;
+        if (this.ui.note && this.d.note) this.ui.note.textContent = this.d.note(this.run, this.state);
+        this.figures.invalidate();
+        this.showTime();
+        this.requestDraw();
+      },
     };
     return host;
   }
@@ -323,6 +336,8 @@ export class Page {
   playChanged() {
     this.ui.play.textContent = this.playing ? "Pause" : "Play";
     this.showTime();
+    // Paused, every view shows the time on show (playing, those off screen were left).
+    if (!this.playing) this.requestDraw();
   }
 
   play() {
@@ -355,7 +370,7 @@ export class Page {
   /** Draws the figures at the time on show; while playing, the slider and readout follow. */
   draw() {
     const run = this.run;
-    if (!run || !this.figures.render(this.t)) return;
+    if (!run || !this.figures.render(this.t, this.playing)) return;
     if (this.playing) {
       const readout = this.d.readout(run, this.t);
       if (readout !== this.lastReadout) {

@@ -23,18 +23,22 @@ export class Sweep {
     /** the page's own setting, marked on the figure */
     this.current = 0;
     this.timer = 0;
+    /** which run of the sweep is current: a point of an earlier one that comes late is dropped */
+    this.generation = 0;
   }
 
   /**
    * Computes `compute(x, k)` for each of `xs` and each part `k` below `parts`, a task each (so a
-   * point of many costly parts keeps every task short), replacing what was there.
+   * point of many costly parts keeps every task short), or elsewhere (`compute` may answer with
+   * a promise: a worker's), replacing what was there.
    * @param {readonly number[]} xs
-   * @param {(x: number, part: number) => ArrayLike<number>} compute
+   * @param {(x: number, part: number) => ArrayLike<number> | Promise<ArrayLike<number>>} compute
    * @param {number} [parts]
    */
   run(xs, compute, parts = 1) {
     const { table, status, redraw, cells, done } = this.parts;
     clearTimeout(this.timer);
+    const generation = ++this.generation;
     this.xs = [];
     this.values = [];
     const body = $(table, HTMLTableSectionElement);
@@ -46,7 +50,17 @@ export class Sweep {
         return;
       }
       if (part === 0) line.textContent = `Sweeping: ${i + 1} of ${xs.length}`;
-      values.push(...Array.from(compute(xs[i], part)));
+      const value = compute(xs[i], part);
+      if (value instanceof Promise) {
+        value.then((got) => generation === this.generation && take(i, part, values, got), (error) => {
+          if (generation === this.generation) line.textContent = `The sweep stopped: ${error instanceof Error ? error.message : String(error)}`;
+        });
+      } else {
+        take(i, part, values, value);
+      }
+    };
+    const take = (/** @type {number} */ i, /** @type {number} */ part, /** @type {number[]} */ values, /** @type {ArrayLike<number>} */ got) => {
+      values.push(...Array.from(got));
       if (part + 1 < parts) {
         this.timer = setTimeout(() => next(i, part + 1, values));
         return;

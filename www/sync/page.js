@@ -1,7 +1,8 @@
 // @ts-check
 // The synchronisation page: a descriptor for the page runtime (runtime.js), the sweep over the
 // share of wrong edges, and a user's own pose graph (opened or dropped). The problem, the
-// solutions, the flow and all drawing are the module's (crates/kli-demo/src/sync/).
+// solutions, the flow and all drawing are the module's (crates/kli-demo/src/sync/); each run is
+// built unsolved and its solutions, like the sweep's points, come from a worker (solver.js).
 import * as sync from "../pkg/sync_demo.js";
 import { SyncDemo, SyncFile } from "../pkg/sync_demo.js";
 import { $ } from "../runtime/dom.js";
@@ -9,6 +10,7 @@ import { timeTag } from "../runtime/exports.js";
 import { page as registered } from "../pages.js";
 import { Page } from "../runtime/runtime.js";
 import { Sweep } from "../runtime/sweep.js";
+import { Solver } from "./solver.js";
 
 /** @typedef {import("./state.js").SyncState} SyncState */
 
@@ -25,6 +27,9 @@ const sweep = new Sweep({
   cells: (share, errors) => [String(share), ...errors.map((e) => degrees(e).toFixed(2))],
   done: (count) => `Done: ${count} shares.`,
 });
+/** The worker that solves each run and the sweep's points: started now, so it loads the module
+ *  while the page does. */
+const solver = new Solver();
 /** The user's own pose graph, once one is read. */
 const own = { file: /** @type {SyncFile | null} */ (null), name: "" };
 /** The views' names in file names. */
@@ -37,6 +42,7 @@ const FILE_NAMES = /** @type {Record<string, string>} */ ({
 const page = new Page({
   entry: registered("sync"),
   module: sync,
+  create: (module, state) => module.SyncDemo.unsolved(state),
   own: {
     sweep: {
       draw: (ctx, frame) => SyncDemo.drawSweep(ctx, frame, ...sweep.drawn),
@@ -58,6 +64,7 @@ const page = new Page({
   },
   note: (run) => {
     const s = run.summary;
+    if (!s.solved) return `${s.count} nodes, ${s.edges} edges, ${s.wrong} wrong. Solving…`;
     const proof = s.certified
       ? `certified the global optimum (λmin(S) = ${s.lambdaMin.toExponential(1)})`
       : `not proved optimal: λmin(S) = ${s.lambdaMin.toExponential(1)} < 0, the relaxation is not tight here`;
@@ -74,10 +81,15 @@ const page = new Page({
     title: (run) => `${run.summary.count} rotations synchronising on a graph: the Lohe flow`,
     file: (run) => `kli-sync-${run.summary.count}-nodes`,
   },
-  shown: (host, _, state) => {
+  shown: (host, run, state) => {
     sweep.current = state.wrong;
     showValues(host);
     host.redraw(["sweep"]);
+    solver.solve(state).then((solutions) => {
+      if (!solutions || host.run !== run) return;
+      run.takeSolutions(solutions);
+      host.changed();
+    }, (error) => host.showError(error));
   },
   input: (host) => {
     showValues(host);
@@ -107,7 +119,7 @@ const METHODS = ["spectral", "chordal", "robust"];
 /** The sweep over the current recipe (at most 60 nodes). */
 function runSweep(/** @type {Host} */ host) {
   const { count, graph, noise, seed } = host.state;
-  sweep.run(SHARES, (share, k) => [SyncDemo.sweepError({ count, graph, noise, seed }, share, METHODS[k])], METHODS.length);
+  sweep.run(SHARES, (share, k) => solver.sweepError({ count, graph, noise, seed }, share, METHODS[k]).then((error) => [error]), METHODS.length);
 }
 
 /** Opening or dropping a pose graph: read, synchronised a task later (the status shows first). */

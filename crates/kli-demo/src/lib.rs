@@ -33,6 +33,8 @@ pub mod plots;
 pub mod provenance;
 pub mod scene;
 pub mod sphere_view;
+#[cfg(any(feature = "swarm-page", feature = "sync-page"))]
+mod stepped;
 #[cfg(feature = "swarm-page")]
 pub mod swarm;
 #[cfg(any(feature = "average-page", feature = "sync-page"))]

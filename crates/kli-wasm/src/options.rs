@@ -135,6 +135,26 @@ impl Fields {
         whole(key, value, min, max).map(Some)
     }
 
+    /// A seed: a whole number from 0 to [`MAX_SEED`], or `None` when the key is absent.
+    pub fn seed(&self, key: &str) -> Result<Option<u64>, KliError> {
+        Ok(self.whole(key, 0.0, MAX_SEED)?.map(|seed| seed as u64))
+    }
+
+    /// A share from 0 to 1, or `None` when the key is absent.
+    pub fn share(&self, key: &str) -> Result<Option<f64>, KliError> {
+        self.number(key)?.map(|value| share(key, value)).transpose()
+    }
+
+    /// A spread of angles in degrees, from 0 to 180, or `None` when the key is absent.
+    pub fn degrees(&self, key: &str) -> Result<Option<f64>, KliError> {
+        let Some(value) = self.number(key)? else { return Ok(None) };
+        let value = kli::require(key, value, kli::Requirement::NonNegative)?;
+        if value > 180.0 {
+            return Err(KliError::invalid(key, "must be at most 180 degrees"));
+        }
+        Ok(Some(value))
+    }
+
     /// `true` or `false`, or `None` when the key is absent.
     pub fn boolean(&self, key: &str) -> Result<Option<bool>, KliError> {
         let value = self.get(key)?;
@@ -151,6 +171,17 @@ impl Fields {
         let value = self.get(key)?;
         Ok((!value.is_undefined()).then(|| value.as_string().unwrap_or_else(|| describe(&value))))
     }
+}
+
+/// The largest seed: every whole number up to it is exact in a JavaScript number (2⁵³ − 1).
+pub const MAX_SEED: f64 = 9_007_199_254_740_991.0;
+
+/// `value` if it is a number from 0 to 1, else an Error naming `key`.
+pub fn share(key: &str, value: f64) -> Result<f64, KliError> {
+    if (0.0..=1.0).contains(&value) {
+        return Ok(value);
+    }
+    Err(KliError::invalid(key, format!("must be a number from 0 to 1 (got {})", number(value))))
 }
 
 /// `value` if it is a whole number from `min` to `max`, else an Error naming `key`.

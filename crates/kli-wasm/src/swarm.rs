@@ -49,9 +49,6 @@ extern "C" {
 const KEYS: [&str; 8] =
     ["count", "coupling", "graph", "leaders", "frequency_spread", "start_spread", "seed", "order"];
 
-/// The largest seed: every whole number below it is exact in a JavaScript number.
-const MAX_SEED: f64 = 9_007_199_254_740_991.0;
-
 /// Reads the options object of `new LoheSwarm(options)` into checked [`SwarmOptions`] and the
 /// caller's quaternion [`Order`].
 pub fn read_swarm_options(value: &JsValue) -> Result<(SwarmOptions, Order), KliError> {
@@ -79,8 +76,8 @@ pub fn read_swarm_options(value: &JsValue) -> Result<(SwarmOptions, Order), KliE
     if let Some(v) = fields.number("start_spread")? {
         options.start_spread = Some(v);
     }
-    if let Some(v) = fields.whole("seed", 0.0, MAX_SEED)? {
-        options.seed = v as u64;
+    if let Some(v) = fields.seed("seed")? {
+        options.seed = v;
     }
     options.validate()?;
     Ok((options, order))

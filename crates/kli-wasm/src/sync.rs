@@ -17,8 +17,6 @@ use crate::value::{describe, get, is_array, is_view};
 const MAX_EDGES: usize = 1 << 24;
 /// Node ids and counts are below 2³², the range of the `Uint32Array` `readG2o` returns.
 const MAX_ID: f64 = 4_294_967_295.0;
-/// The largest seed: every whole number below it is exact in a JavaScript number.
-const MAX_SEED: f64 = 9_007_199_254_740_991.0;
 
 #[wasm_bindgen(typescript_custom_section)]
 const TYPES: &'static str = r#"
@@ -311,8 +309,8 @@ impl JsSyncFlow {
         let (mut order, mut seed, mut start) = (Order::Wxyz, 1, None);
         if let Some(fields) = &fields {
             order = Order::parse(fields.name("order")?)?;
-            if let Some(value) = fields.whole("seed", 0.0, MAX_SEED)? {
-                seed = value as u64;
+            if let Some(value) = fields.seed("seed")? {
+                seed = value;
             }
             start = fields.value("start")?;
         }

@@ -10,8 +10,8 @@ mod view;
 use std::cell::OnceCell;
 
 use js_sys::Float64Array;
+use kli::KliError;
 use kli::quaternion::{from_wxyz, to_wxyz};
-use kli::{KliError, Requirement, require};
 use kli_wasm::error::JsResult;
 use kli_wasm::options::Fields;
 use kli_wasm::typed::numbers;
@@ -135,7 +135,7 @@ impl AverageDemo {
     #[wasm_bindgen(js_name = sweepPoint)]
     pub fn sweep_point(options: Option<AverageDemoOptions>, outliers: f64) -> JsResult<Vec<f64>> {
         let options = read_options(options.map(JsValue::from))?;
-        let outliers = share("outliers", outliers)?;
+        let outliers = kli_wasm::options::share("outliers", outliers)?;
         Ok(model::sweep_point(&options, outliers, SWEEP_SETS)?.to_vec())
     }
 
@@ -181,17 +181,14 @@ fn read_options(value: Option<JsValue>) -> Result<Options, KliError> {
     if let Some(count) = fields.whole("count", 1.0, MAX_COUNT)? {
         options.count = count as usize;
     }
-    if let Some(noise) = fields.number("noise")? {
-        options.noise = require("noise", noise, Requirement::NonNegative)?;
-        if noise > 180.0 {
-            return Err(KliError::invalid("noise", "must be at most 180 degrees"));
-        }
+    if let Some(noise) = fields.degrees("noise")? {
+        options.noise = noise;
     }
-    if let Some(outliers) = fields.number("outliers")? {
-        options.outliers = share("outliers", outliers)?;
+    if let Some(outliers) = fields.share("outliers")? {
+        options.outliers = outliers;
     }
-    if let Some(seed) = fields.whole("seed", 0.0, 9_007_199_254_740_991.0)? {
-        options.seed = seed as u64;
+    if let Some(seed) = fields.seed("seed")? {
+        options.seed = seed;
     }
     if let Some(moved) = fields.value("moved")? {
         let flat = numbers("moved", &moved, 5 * MAX_COUNT as usize)?;
@@ -209,15 +206,6 @@ fn read_options(value: Option<JsValue>) -> Result<Options, KliError> {
         }
     }
     Ok(options)
-}
-
-/// A share from 0 to 1, else an Error naming `name`.
-fn share(name: &str, x: f64) -> Result<f64, KliError> {
-    if (0.0..=1.0).contains(&x) {
-        Ok(x)
-    } else {
-        Err(KliError::invalid(name, format!("must be a number from 0 to 1 (got {x})")))
-    }
 }
 
 impl AverageDemo {

@@ -15,11 +15,12 @@ use web_sys::CanvasRenderingContext2d;
 use self::plots::{History, draw_history, draw_sweep};
 use self::view::{draw_swarm_objects, draw_swarm_sphere};
 use crate::aircraft::{Face, aircraft};
-use crate::figure::{Figure, Frame, Layer, Motion, Record, Timed, View, names};
+use crate::figure::{Figure, Frame, Layer, Motion, Record, View, names};
 use crate::format::{Json, csv_table, fixed};
 use crate::palette::BACKGROUND;
 use crate::pen::{Pen, svg_document};
 use crate::provenance::{Provenance, Value};
+use crate::stepped::{Stepped, stepped};
 
 /// How many oscillators the page draws as whole objects.
 const OBJECTS: usize = 3;
@@ -120,39 +121,38 @@ impl SwarmDemo {
 
 crate::figure::figure_class!(SwarmDemo, "SwarmSummary");
 
-/// The swarm's time: the model's, with no end.
-impl Timed for SwarmDemo {
-    fn span(&self) -> (f64, f64) {
-        (0.0, f64::INFINITY)
+/// The swarm's time: the model's, in steps of [`DT`], with no end.
+impl Stepped for SwarmDemo {
+    const PACE: f64 = PACE / DT;
+    const FRAME_WORK: f64 = FRAME_WORK;
+    const TASK_WORK: f64 = TASK_WORK;
+
+    /// An oscillator's step each.
+    fn step_work(&self) -> f64 {
+        self.swarm.len() as f64
     }
 
-    fn time(&self) -> f64 {
+    fn dt(&self) -> f64 {
+        DT
+    }
+
+    fn now(&self) -> f64 {
         self.swarm.time()
     }
 
-    /// Runs on towards `t` (the swarm cannot go back), at most [`TASK_WORK`] a call.
-    fn seek(&mut self, t: f64) -> bool {
-        let left = if t.is_finite() { ((t - self.swarm.time()) / DT).round() } else { 0.0 };
-        if left < 1.0 {
-            return true;
-        }
-        let steps = left.min(self.work(TASK_WORK));
-        self.steps(steps) && steps >= left
+    fn owed(&mut self) -> &mut f64 {
+        &mut self.owed
     }
 
-    /// [`PACE`] model time a second, at most [`FRAME_WORK`] a call (what the bound cuts off is
-    /// not owed: the swarm slows down rather than falls behind). Never at an end.
-    fn advance(&mut self, seconds: f64) -> bool {
-        if seconds.is_finite() && seconds > 0.0 {
-            self.owed = (self.owed + seconds * PACE / DT).min(self.work(FRAME_WORK));
-            let steps = self.owed.floor();
-            if steps >= 1.0 && self.steps(steps) {
-                self.owed -= steps;
-            }
-        }
-        false
+    /// False if the swarm refused (it does not: [`DT`] is a valid step).
+    fn steps(&mut self, steps: f64) -> bool {
+        let done = self.swarm.step(DT, steps as usize).is_ok();
+        self.record();
+        done
     }
 }
+
+stepped!(SwarmDemo);
 
 /// The swarm page's views: the oscillators' Hopf points, the first oscillators as objects, and
 /// the history of R, λmax and the potential; its time, the model's, with no end; its data, the
@@ -230,19 +230,6 @@ impl SwarmDemo {
     fn record(&mut self) {
         let s = &self.swarm;
         self.history.push(s.time(), s.order_parameter(), s.rotation_order(), s.potential());
-    }
-
-    /// Steps a bound of `work` oscillator steps allows (at least one).
-    fn work(&self, work: f64) -> f64 {
-        (work / self.swarm.len() as f64).floor().max(1.0)
-    }
-
-    /// `steps` (a whole number from 1 to a bound of work) steps of [`DT`], then one sample of
-    /// the history; false if the swarm refused (it does not: [`DT`] is a valid step).
-    fn steps(&mut self, steps: f64) -> bool {
-        let done = self.swarm.step(DT, steps as usize).is_ok();
-        self.record();
-        done
     }
 
     fn is_kli(&self) -> bool {

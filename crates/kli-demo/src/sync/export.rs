@@ -5,6 +5,7 @@
 use kli::quaternion::to_wxyz;
 
 use super::model::Model;
+use super::solutions::Solutions;
 use crate::format::{Json, joined, number};
 use crate::provenance::{Provenance, Value};
 
@@ -16,7 +17,18 @@ use crate::provenance::{Provenance, Value};
 pub fn export(model: &Model, csv: bool) -> String {
     let provenance = provenance(model);
     let p = &model.problem;
-    let (chordal, robust) = (&model.chordal, &model.robust);
+    // A run made unsolved may be saved before its solutions are in: they are computed here.
+    let computed;
+    let Solutions { chordal, robust } = match &model.solutions {
+        Some(solutions) => solutions,
+        None => match Solutions::of(p) {
+            Ok(solutions) => {
+                computed = solutions;
+                &computed
+            }
+            Err(error) => return format!("# the problem could not be solved: {error}\n"),
+        },
+    };
     let flow = model.flow.residuals();
     let weights = robust.weights.clone().unwrap_or_default();
     let flags = robust.outliers.clone().unwrap_or_default();

@@ -6,10 +6,11 @@
 mod export;
 mod file;
 mod model;
+mod solutions;
 mod view;
 
+use kli::KliError;
 use kli::sync::Method;
-use kli::{KliError, Requirement, require};
 use kli_wasm::error::JsResult;
 use kli_wasm::options::Fields;
 use wasm_bindgen::prelude::*;
@@ -17,10 +18,12 @@ use web_sys::CanvasRenderingContext2d;
 
 pub use self::file::SyncFile;
 use self::model::{Model, Options, Problem, Shape};
+use self::solutions::Solutions;
 use crate::aircraft::{Face, aircraft};
-use crate::figure::{Figure, Frame, Layer, Motion, Record, Timed, View, names};
+use crate::figure::{Figure, Frame, Layer, Motion, Record, View, names};
 use crate::palette::{BACKGROUND, INK, KLI, SLERP};
 use crate::pen::{Pen, svg_document};
+use crate::stepped::{Stepped, stepped};
 use crate::sweep::{Curve, draw_error_sweep};
 
 /// The most nodes a run takes (the page's slider stops at 300).
@@ -93,6 +96,9 @@ export interface SyncSummary {
   robustErrorDegrees: number;
   flagged: number;
   flaggedWrong: number;
+  /** Whether the solutions are in (a run made by `SyncDemo.unsolved` takes them later); until
+   *  then the solutions' numbers are NaN and `certified` and `arrived` false. */
+  solved: boolean;
 }
 "#;
 
@@ -112,6 +118,31 @@ impl SyncDemo {
         Ok(SyncDemo { model, mesh: aircraft(), owed: 0.0 })
     }
 
+    /// The problem the options describe and the flow at its start, not yet solved (a few
+    /// milliseconds): its solutions come from `SyncDemo.solve` with the same options, run
+    /// elsewhere (a worker), through `takeSolutions`. Until then the views draw the flow alone.
+    pub fn unsolved(options: Option<SyncDemoOptions>) -> JsResult<SyncDemo> {
+        let model = Model::unsolved(read_options(options.map(JsValue::from))?)?;
+        Ok(SyncDemo { model, mesh: aircraft(), owed: 0.0 })
+    }
+
+    /// Both solutions of the problem the options describe, as numbers for `takeSolutions` (the
+    /// long part of `new`: run it in a worker).
+    pub fn solve(options: Option<SyncDemoOptions>) -> JsResult<Vec<f64>> {
+        let problem = Problem::new(&read_options(options.map(JsValue::from))?)?;
+        Ok(Solutions::of(&problem)?.pack())
+    }
+
+    /// Takes the solutions `SyncDemo.solve` computed for this run's options; an Error naming
+    /// `solutions` when they are not that call's numbers for a problem of this size.
+    #[wasm_bindgen(js_name = takeSolutions)]
+    pub fn take_solutions(&mut self, solutions: &[f64]) -> JsResult<()> {
+        let p = &self.model.problem;
+        self.model.solutions =
+            Some(Solutions::unpack(solutions, p.truth.len(), p.graph.edges().len())?);
+        Ok(())
+    }
+
     /// One value of the sweep: the median error to the truth (radians) of `method`'s solution
     /// ("spectral", "chordal" or "robust") of the problem these options make with the share
     /// `wrong` of wrong edges, on at most 60 nodes. A call a task keeps each task
@@ -123,7 +154,7 @@ impl SyncDemo {
         method: &str,
     ) -> JsResult<f64> {
         let mut options = read_options(options.map(JsValue::from))?;
-        options.wrong = share("wrong", wrong)?;
+        options.wrong = kli_wasm::options::share("wrong", wrong)?;
         options.count = options.count.min(SWEEP_COUNT);
         let method: Method = method.parse()?;
         let problem = Problem::new(&options)?;
@@ -197,17 +228,14 @@ fn read_options(value: Option<JsValue>) -> Result<Options, KliError> {
         );
         return Err(KliError::invalid("count", problem));
     }
-    if let Some(noise) = fields.number("noise")? {
-        options.noise = require("noise", noise, Requirement::NonNegative)?;
-        if noise > 180.0 {
-            return Err(KliError::invalid("noise", "must be at most 180 degrees"));
-        }
+    if let Some(noise) = fields.degrees("noise")? {
+        options.noise = noise;
     }
-    if let Some(wrong) = fields.number("wrong")? {
-        options.wrong = share("wrong", wrong)?;
+    if let Some(wrong) = fields.share("wrong")? {
+        options.wrong = wrong;
     }
-    if let Some(seed) = fields.whole("seed", 0.0, 9_007_199_254_740_991.0)? {
-        options.seed = seed as u64;
+    if let Some(seed) = fields.seed("seed")? {
+        options.seed = seed;
     }
     if let Some(consensus) = fields.boolean("consensus")? {
         options.consensus = consensus;
@@ -215,69 +243,38 @@ fn read_options(value: Option<JsValue>) -> Result<Options, KliError> {
     Ok(options)
 }
 
-/// A share from 0 to 1, else an Error naming `name`.
-fn share(name: &str, x: f64) -> Result<f64, KliError> {
-    if (0.0..=1.0).contains(&x) {
-        Ok(x)
-    } else {
-        Err(KliError::invalid(
-            name,
-            format!("must be a number from 0 to 1 (got {})", crate::format::number(x)),
-        ))
-    }
-}
+crate::figure::figure_class!(SyncDemo, "SyncSummary");
 
-impl SyncDemo {
-    /// Steps a bound of `work` edge visits allows (at least one).
-    fn work(&self, work: f64) -> f64 {
-        (work / self.model.problem.graph.edges().len() as f64).floor().max(1.0)
+/// The flow's time, in steps of `0.1 / d_max`, with no end.
+impl Stepped for SyncDemo {
+    const PACE: f64 = PACE;
+    const FRAME_WORK: f64 = FRAME_WORK;
+    const TASK_WORK: f64 = TASK_WORK;
+
+    /// A visit of each edge.
+    fn step_work(&self) -> f64 {
+        self.model.problem.graph.edges().len() as f64
     }
 
-    /// `steps` (a whole number from 1 to a bound of work) steps, then one sample of the history;
-    /// false if the flow refused (it does not: its step is valid and the count bounded).
+    fn dt(&self) -> f64 {
+        self.model.dt
+    }
+
+    fn now(&self) -> f64 {
+        self.model.flow.time()
+    }
+
+    fn owed(&mut self) -> &mut f64 {
+        &mut self.owed
+    }
+
+    /// False if the flow refused (it does not: its step is valid and the count bounded).
     fn steps(&mut self, steps: f64) -> bool {
         self.model.step(steps as usize).is_ok()
     }
 }
 
-crate::figure::figure_class!(SyncDemo, "SyncSummary");
-
-/// The flow's time, with no end.
-impl Timed for SyncDemo {
-    fn span(&self) -> (f64, f64) {
-        (0.0, f64::INFINITY)
-    }
-
-    fn time(&self) -> f64 {
-        self.model.flow.time()
-    }
-
-    /// Runs on towards `t` (the flow cannot go back), at most [`TASK_WORK`] a call.
-    fn seek(&mut self, t: f64) -> bool {
-        let left = if t.is_finite() {
-            ((t - self.model.flow.time()) / self.model.dt).round()
-        } else {
-            0.0
-        };
-        if left < 1.0 {
-            return true;
-        }
-        let steps = left.min(self.work(TASK_WORK));
-        self.steps(steps) && steps >= left
-    }
-
-    /// [`PACE`] steps a second, at most [`FRAME_WORK`] a call. Never at an end.
-    fn advance(&mut self, seconds: f64) -> bool {
-        if seconds.is_finite() && seconds > 0.0 {
-            self.owed = (self.owed + seconds * PACE).min(self.work(FRAME_WORK));
-            let steps = self.owed.floor();
-            if steps >= 1.0 && self.steps(steps) {
-                self.owed -= steps;
-            }
-        }
-        false
-    }
-}
+stepped!(SyncDemo);
 
 /// The synchronisation page's views: the graph, the Hopf sphere, the first nodes, the flow's
 /// plots, and the two solutions side by side; its data, the graph, the truth and the solutions.
@@ -305,30 +302,34 @@ impl Figure for SyncDemo {
     const EXPORT: &'static str = "edges";
 
     /// `{ count, edges, wrong, time, cost, errorDegrees, arrived, chordalCost,
-    /// chordalErrorDegrees, certified, lambdaMin, robustErrorDegrees, flagged, flaggedWrong }`.
+    /// chordalErrorDegrees, certified, lambdaMin, robustErrorDegrees, flagged, flaggedWrong,
+    /// solved }`.
     fn summary(&self) -> JsValue {
         let m = &self.model;
         let p = &m.problem;
-        let certificate = m.chordal.certificate;
-        let flags = m.robust.outliers.as_deref().unwrap_or(&[]);
+        let solved = m.solutions.as_ref();
+        let certificate = solved.and_then(|s| s.chordal.certificate);
+        let flags = solved.and_then(|s| s.robust.outliers.as_deref()).unwrap_or(&[]);
+        let error = |q: &[glam::DQuat]| p.median_error(q).to_degrees();
         Record::new()
             .set("count", p.truth.len() as f64)
             .set("edges", p.graph.edges().len() as f64)
             .set("wrong", p.wrong.iter().filter(|&&w| w).count() as f64)
             .set("time", m.flow.time())
             .set("cost", m.flow.cost())
-            .set("errorDegrees", p.median_error(m.flow.rotations()).to_degrees())
+            .set("errorDegrees", error(m.flow.rotations()))
             .set("arrived", m.arrived())
-            .set("chordalCost", m.chordal.cost)
-            .set("chordalErrorDegrees", p.median_error(&m.chordal.rotations).to_degrees())
+            .set("chordalCost", solved.map_or(f64::NAN, |s| s.chordal.cost))
+            .set("chordalErrorDegrees", solved.map_or(f64::NAN, |s| error(&s.chordal.rotations)))
             .set("certified", certificate.is_some_and(|c| c.certified))
             .set("lambdaMin", certificate.map_or(f64::NAN, |c| c.lambda_min))
-            .set("robustErrorDegrees", p.median_error(&m.robust.rotations).to_degrees())
+            .set("robustErrorDegrees", solved.map_or(f64::NAN, |s| error(&s.robust.rotations)))
             .set("flagged", flags.iter().filter(|&&f| f).count() as f64)
             .set(
                 "flaggedWrong",
                 flags.iter().zip(&p.wrong).filter(|&(&f, &w)| f && w).count() as f64,
             )
+            .set("solved", solved.is_some())
             .end()
     }
 

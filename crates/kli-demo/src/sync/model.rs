@@ -11,6 +11,8 @@ use kli::quaternion::exp;
 use kli::swarm::Random;
 use kli::sync::{Graph, Method, SyncFlow, SyncOptions, Synchronized, errors_to_truth, synchronize};
 
+use super::solutions::Solutions;
+
 /// The graphs the page draws, by the word its URL uses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Shape {
@@ -276,8 +278,8 @@ impl History {
 pub struct Model {
     pub options: Options,
     pub problem: Problem,
-    pub chordal: Synchronized,
-    pub robust: Synchronized,
+    /// Both solutions, once solved (the page solves in a worker and hands them over).
+    pub solutions: Option<Solutions>,
     pub flow: SyncFlow,
     /// The flow's step: `0.1 / d_max`, stable for every graph (the pull on a node is at most
     /// `2 d_i`).
@@ -286,10 +288,16 @@ pub struct Model {
 }
 
 impl Model {
+    /// The problem, solved both ways, and the flow at its start.
     pub fn new(options: Options) -> Result<Model, KliError> {
+        let mut model = Model::unsolved(options)?;
+        model.solutions = Some(Solutions::of(&model.problem)?);
+        Ok(model)
+    }
+
+    /// The problem and the flow at its start, not yet solved.
+    pub fn unsolved(options: Options) -> Result<Model, KliError> {
         let problem = Problem::new(&options)?;
-        let chordal = problem.solve(Method::Chordal)?;
-        let robust = problem.solve(Method::Robust)?;
         let mut degree = vec![0.0; options.count];
         for &[i, j] in problem.graph.edges() {
             degree[i] += 1.0;
@@ -299,7 +307,7 @@ impl Model {
         // Not the problem's seed: the start is not the truth's draw.
         let flow = SyncFlow::random(problem.graph.clone(), options.seed ^ 0x5eed_f10e);
         let mut model =
-            Model { options, problem, chordal, robust, flow, dt, history: History::default() };
+            Model { options, problem, solutions: None, flow, dt, history: History::default() };
         model.record();
         Ok(model)
     }
@@ -319,9 +327,9 @@ impl Model {
     }
 
     /// Whether the flow's cost is within `1e-6` (relative, or absolutely for an optimum of 0) of
-    /// the chordal optimum: it has arrived.
+    /// the chordal optimum: it has arrived (false while the problem is not solved).
     pub fn arrived(&self) -> bool {
-        let (f, best) = (self.flow.cost(), self.chordal.cost);
-        f - best <= 1e-6 * best.max(1.0)
+        let Some(best) = self.solutions.as_ref().map(|s| s.chordal.cost) else { return false };
+        self.flow.cost() - best <= 1e-6 * best.max(1.0)
     }
 }

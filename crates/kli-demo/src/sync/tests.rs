@@ -7,7 +7,13 @@ use kli::average::angle;
 use kli::sync::{Method, errors_to_truth};
 
 use super::model::{Model, Options, Problem, Shape, layout, median};
+use super::solutions::Solutions;
 use kli::swarm::Random;
+
+/// The model's solutions (solved by `Model::new`).
+fn solved(model: &Model) -> &Solutions {
+    model.solutions.as_ref().expect("Model::new solves")
+}
 
 fn options(count: usize, shape: Shape, noise: f64, wrong: f64, seed: u64) -> Options {
     Options { count, shape, noise, wrong, seed, consensus: false }
@@ -75,19 +81,20 @@ fn the_solutions_are_the_cores_and_robust_beats_chordal_on_wrong_edges() {
     // Noise alone: the chordal solution is the core's, and certified.
     let noisy = Model::new(options(120, Shape::Random, 3.0, 0.0, 7)).unwrap();
     let chordal = kli::sync::synchronize(&noisy.problem.graph, &Default::default()).unwrap();
-    assert_eq!(noisy.chordal.rotations, chordal.rotations);
-    assert!(noisy.chordal.certificate.unwrap().certified);
+    assert_eq!(solved(&noisy).chordal.rotations, chordal.rotations);
+    assert!(solved(&noisy).chordal.certificate.unwrap().certified);
     // A fifth of the edges wrong: the robust solution is nearer the truth.
     let model = Model::new(options(120, Shape::Random, 3.0, 0.2, 7)).unwrap();
     let errors = |q: &[DQuat]| median(errors_to_truth(q, &model.problem.truth)).to_degrees();
-    let (c, r) = (errors(&model.chordal.rotations), errors(&model.robust.rotations));
+    let (c, r) =
+        (errors(&solved(&model).chordal.rotations), errors(&solved(&model).robust.rotations));
     assert!(r < c, "robust {r}° against chordal {c}°");
     // Without noise or wrong edges both are the truth.
     let clean = Model::new(options(50, Shape::Grid, 0.0, 0.0, 2)).unwrap();
-    for q in [&clean.chordal.rotations, &clean.robust.rotations] {
+    for q in [&solved(&clean).chordal.rotations, &solved(&clean).robust.rotations] {
         assert!(clean.problem.median_error(q) < 1e-7);
     }
-    assert!(clean.chordal.cost < 1e-20);
+    assert!(solved(&clean).chordal.cost < 1e-20);
     let spectral = clean.problem.solve(Method::Spectral).unwrap();
     assert!(clean.problem.median_error(&spectral.rotations) < 1e-6);
 }
@@ -102,12 +109,12 @@ fn the_flow_settles_on_the_certified_optimum() {
         model.step(2000).unwrap();
         steps += 2000;
     }
-    assert!(model.arrived(), "f = {} against {}", model.flow.cost(), model.chordal.cost);
+    assert!(model.arrived(), "f = {} against {}", model.flow.cost(), solved(&model).chordal.cost);
     assert!(model.flow.cost() < start);
     // Where the flow arrived, it agrees with the chordal solution up to the gauge.
     let q = model.flow.rotations();
     // Within 1e-6 of f*, a node may still be ~√(1e-6 f*/λ) away: a tenth of a degree here.
-    let apart = median(errors_to_truth(q, &model.chordal.rotations));
+    let apart = median(errors_to_truth(q, &solved(&model).chordal.rotations));
     assert!(apart.to_degrees() < 0.2, "{}° from the chordal solution", apart.to_degrees());
     // The history keeps a sample a call (and the first), its times the flow's.
     let h = &model.history;
@@ -124,8 +131,66 @@ fn the_flow_settles_on_the_certified_optimum() {
 fn consensus_agrees_from_any_start() {
     let options = Options { consensus: true, ..options(30, Shape::Complete, 0.0, 0.0, 4) };
     let mut model = Model::new(options).unwrap();
-    assert!(model.chordal.cost < 1e-20);
+    assert!(solved(&model).chordal.cost < 1e-20);
     model.step(20_000).unwrap();
     assert!(model.problem.median_error(model.flow.rotations()) < 1e-6);
     assert!(model.arrived());
+}
+
+#[test]
+fn a_run_made_unsolved_takes_the_solutions_a_worker_computed() {
+    let recipe = options(60, Shape::Random, 4.0, 0.2, 9);
+    let whole = Model::new(recipe.clone()).unwrap();
+    let mut model = Model::unsolved(recipe.clone()).unwrap();
+    // Unsolved, the flow runs and has arrived nowhere.
+    assert!(model.solutions.is_none());
+    assert!(!model.arrived());
+    model.step(10).unwrap();
+    // The numbers a worker sends (the problem rebuilt from the same recipe, as
+    // `SyncDemo.solve` does) give back exactly the solutions `Model::new` found: both
+    // methods' every field, the certificate and the robust flags included.
+    let packed = Solutions::of(&Problem::new(&recipe).unwrap()).unwrap().pack();
+    let (n, m) = (recipe.count, whole.problem.graph.edges().len());
+    assert_eq!(packed.len(), 2 + 2 * (4 * n + 3 * m + 11));
+    let taken = Solutions::unpack(&packed, n, m).unwrap();
+    assert_eq!(taken.chordal, solved(&whole).chordal);
+    assert_eq!(taken.robust, solved(&whole).robust);
+    assert!(taken.chordal.certificate.is_some() && taken.robust.outliers.is_some());
+    assert!(taken.robust.outliers.as_ref().unwrap().iter().any(|&o| o), "some edges flagged");
+    model.solutions = Some(taken);
+    assert!(!model.arrived(), "ten steps from a random start are not the optimum");
+}
+
+#[test]
+fn numbers_that_are_not_this_problems_solutions_are_refused_by_name() {
+    let recipe = options(20, Shape::Ring, 5.0, 0.0, 1);
+    let problem = Problem::new(&recipe).unwrap();
+    let good = Solutions::of(&problem).unwrap().pack();
+    let (n, m) = (20, 20);
+    let refused = |data: &[f64], says: &str| {
+        let error = Solutions::unpack(data, n, m).unwrap_err();
+        assert_eq!(error.argument(), "solutions");
+        assert!(error.to_string().contains(says), "{error}");
+    };
+    refused(&good[..good.len() - 1], "got");
+    refused(&[], "got");
+    // Another problem of the same length's worth of numbers: its header says so.
+    let mut other = good.clone();
+    other[0] = 21.0;
+    refused(&other, "another problem");
+    // A rotation off the unit sphere, a NaN among them, a flag of 0.5, a count of 1.5.
+    let mut long = good.clone();
+    long[2] = 2.0;
+    refused(&long, "unit length");
+    let mut nan = good.clone();
+    nan[5] = f64::NAN;
+    refused(&nan, "unit length");
+    let iterations = 2 + 4 * n + 1 + m;
+    let mut count = good.clone();
+    count[iterations] = 1.5;
+    refused(&count, "whole");
+    let mut flag = good.clone();
+    flag[iterations + 1] = 0.5;
+    refused(&flag, "flag");
+    assert!(Solutions::unpack(&good, n, m).is_ok());
 }

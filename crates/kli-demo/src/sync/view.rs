@@ -7,6 +7,7 @@ use glam::{DQuat, DVec3};
 use kli::hopf::hopf;
 
 use super::model::{History, Model};
+use super::solutions::Solutions;
 use crate::aircraft::Face;
 use crate::camera::{Camera, Viewport};
 use crate::format::{exponential, fixed};
@@ -173,10 +174,18 @@ pub fn draw_plots(pen: &Pen, model: &Model, (width, height): (f64, f64)) {
         (Some(&a), Some(&b)) if b > a => (a, b),
         _ => (0.0, 1.0),
     };
-    // The cost, log10, from the optimum's decade (or 1e-12 for consensus) to the largest.
-    let best = model.chordal.cost;
-    let floor = if best > 0.0 { best.log10().floor() } else { -12.0 };
-    let high = costs.iter().fold(best.max(1e-12), |h, &c| h.max(c)).log10().ceil().max(floor + 1.0);
+    // The cost, log10, from the optimum's decade (or 1e-12 for consensus; the flow's lowest
+    // while the problem is being solved) to the largest.
+    let solved = model.solutions.as_ref();
+    let best = solved
+        .map_or_else(|| costs.iter().fold(f64::INFINITY, |l, &c| l.min(c)), |s| s.chordal.cost);
+    let floor = if best > 0.0 && best.is_finite() { best.log10().floor() } else { -12.0 };
+    let high = costs
+        .iter()
+        .fold(best.clamp(1e-12, f64::MAX), |h, &c| h.max(c))
+        .log10()
+        .ceil()
+        .max(floor + 1.0);
     let cost = panel(cell(0), x, (floor, high));
     let every = ((high - floor) / 4.0).ceil().max(1.0);
     let ticks: Vec<(f64, String)> = (0..=((high - floor) / every) as usize)
@@ -191,21 +200,29 @@ pub fn draw_plots(pen: &Pen, model: &Model, (width, height): (f64, f64)) {
         let now = if c > 0.0 { c.log10().max(floor) } else { floor };
         pen.dots(&[cost.at(t, now)], 3.0, NODE);
     }
-    let certified = model.chordal.certificate.is_some_and(|c| c.certified);
-    if best > 0.0 {
+    let certified = solved.and_then(|s| s.chordal.certificate).is_some_and(|c| c.certified);
+    if solved.is_some() && best > 0.0 {
         let (_, y) = cost.at(x.0, best.log10());
         pen.line((cost.left, y), (cost.left + cost.width, y), KLI, 1.5, &[5.0, 3.0]);
     }
-    let optimum = if certified { "chordal optimum, certified" } else { "chordal optimum" };
+    let optimum = match solved {
+        Some(_) if certified => "chordal optimum, certified",
+        Some(_) => "chordal optimum",
+        None => "chordal optimum: solving…",
+    };
     let key = [
         Entry { mark: Mark::Line(NODE, 2.0, &[]), label: "flow" },
         Entry { mark: Mark::Line(KLI, 1.5, &[5.0, 3.0]), label: optimum },
     ];
     draw_plot_key(pen, &cost, "the flow's cost f", &key);
 
-    let chordal = model.problem.median_error(&model.chordal.rotations).to_degrees();
-    let robust = model.problem.median_error(&model.robust.rotations).to_degrees();
-    let largest = errors.iter().fold(chordal.max(robust), |h, &e| h.max(e.to_degrees()));
+    let median = |q: &[DQuat]| model.problem.median_error(q).to_degrees();
+    let both =
+        solved.map(|s| [(median(&s.chordal.rotations), KLI), (median(&s.robust.rotations), SLERP)]);
+    let lines = both.as_ref().map_or(&[][..], |b| &b[..]);
+    let largest = errors
+        .iter()
+        .fold(lines.iter().fold(0.0_f64, |h, &(e, _)| h.max(e)), |h, &e| h.max(e.to_degrees()));
     let step = nice_step(1.1 * largest.max(0.5));
     let top = step * (1.1 * largest.max(0.5) / step).ceil();
     let error = panel(cell(1), x, (0.0, top));
@@ -217,7 +234,7 @@ pub fn draw_plots(pen: &Pen, model: &Model, (width, height): (f64, f64)) {
     if let (Some(&t), Some(&e)) = (times.last(), errors.last()) {
         pen.dots(&[error.at(t, e.to_degrees())], 3.0, NODE);
     }
-    for (value, colour) in [(chordal, KLI), (robust, SLERP)] {
+    for &(value, colour) in lines {
         let (_, y) = error.at(x.0, value);
         pen.line((error.left, y), (error.left + error.width, y), colour, 1.5, &[5.0, 3.0]);
     }
@@ -303,8 +320,11 @@ pub fn draw_sides(pen: &Pen, sides: &[Side], (width, height): (f64, f64)) {
 pub fn draw_results(pen: &Pen, model: &Model, size: (f64, f64)) {
     let p = &model.problem;
     let wrong = p.wrong.iter().filter(|&&w| w).count();
-    let chordal = &model.chordal;
-    let robust = &model.robust;
+    let Some(Solutions { chordal, robust }) = &model.solutions else {
+        let (width, height) = size;
+        pen.text("Solving…", (0.5 * width, 0.5 * height), MUTED, 14.0, "center");
+        return;
+    };
     let certificate = match chordal.certificate {
         Some(c) if c.certified => format!("certified: λmin(S) = {}", exponential(c.lambda_min, 1)),
         Some(c) => format!("not certified: λmin(S) = {}", exponential(c.lambda_min, 1)),
