@@ -26,7 +26,11 @@ pub fn export(model: &Model, csv: bool) -> String {
                 computed = solutions;
                 &computed
             }
-            Err(error) => return format!("# the problem could not be solved: {error}\n"),
+            Err(error) => {
+                // In JavaScript's names and numbers, as a thrown Error says it.
+                let message = error.message(&kli_wasm::error::js_name, &number);
+                return format!("# the problem could not be solved: {message}\n");
+            }
         },
     };
     let flow = model.flow.residuals();

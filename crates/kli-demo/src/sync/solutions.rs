@@ -13,6 +13,7 @@ use kli::sync::{Certificate, Method, Synchronized};
 use kli::{KliError, from_wxyz, to_wxyz};
 
 use super::model::Problem;
+use crate::format::number;
 
 /// The chordal optimum (with its certificate) and the robust solution of one problem.
 #[derive(Debug, Clone, PartialEq)]
@@ -82,7 +83,8 @@ impl Solutions {
         if data[0] != n as f64 || data[1] != m as f64 {
             return Err(wrong(&format!(
                 "another problem's ({} nodes, {} edges)",
-                data[0], data[1]
+                number(data[0]),
+                number(data[1])
             )));
         }
         let mut at = 2;
