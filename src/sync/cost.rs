@@ -20,11 +20,11 @@ pub(crate) fn residual(q: &[DQuat], edge: [usize; 2], relative: DQuat) -> f64 {
     2.0 * DVec3::new(e.x, e.y, e.z).length().atan2(e.w.abs())
 }
 
-/// The edge's term `‖R_i R_ij − R_j‖²_F = 8 |e_xyz|²` (for unit `e`, `|e_xyz| = sin(θ/2)`).
+/// The edge's term `‖R_i R_ij − R_j‖²_F = 8 |e_xyz|²` (`e` is a unit quaternion, a product of
+/// the unit rotations every caller keeps, so `|e_xyz| = sin(θ/2)`).
 fn term(q: &[DQuat], edge: [usize; 2], relative: DQuat) -> f64 {
     let e = miss(q, edge, relative);
-    let s2 = (e.x * e.x + e.y * e.y + e.z * e.z) / e.length_squared();
-    8.0 * s2
+    8.0 * (e.x * e.x + e.y * e.y + e.z * e.z)
 }
 
 /// `f = Σ w_ij ‖R_i R_ij − R_j‖²_F`.

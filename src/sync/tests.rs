@@ -683,3 +683,21 @@ fn one_flow_step_is_maths_euler_step_on_weighted_edges() {
         assert!((theta - angle(rotations[i] * r, rotations[j])).abs() < 1e-12);
     }
 }
+
+#[test]
+fn each_edges_term_is_8_sin_squared_of_half_its_residual_up_to_a_half_turn() {
+    // MATH.md: ‖R_i R_ij − R_j‖²_F = 8 sin²(θ_ij/2), weighted. Two nodes at the identity and
+    // measurements of θ = 60°, 120° and exactly 180° (w = 0: the term's largest, 8) on a path
+    // of weights 1, 2 and 3.
+    let half_turn = DQuat::from_xyzw(1.0, 0.0, 0.0, 0.0);
+    let relative = [about_x(60.0), about_x(120.0), half_turn];
+    let graph =
+        Graph::new(None, &[[0, 1], [1, 2], [2, 3]], &relative, Some(&[1.0, 2.0, 3.0])).unwrap();
+    let flow = SyncFlow::new(graph, &[DQuat::IDENTITY; 4]).unwrap();
+    let expected = 8.0 * (0.25 + 2.0 * 0.75 + 3.0 * 1.0);
+    assert!((flow.cost() - expected).abs() < 1e-12, "{} against {expected}", flow.cost());
+    let residuals = flow.residuals();
+    for (r, degrees) in residuals.iter().zip([60.0, 120.0, 180.0]) {
+        assert!((r.to_degrees() - degrees).abs() < 1e-12, "{residuals:?}");
+    }
+}
