@@ -143,10 +143,10 @@ export class Figures {
 
   /**
    * From now on, while the page plays, a view far from the screen is not drawn (its canvas keeps
-   * its frame) until it comes near, when `near` is called: a phone shows about one view at a
-   * time, and drawing the others each frame was most of a frame's work (the synchronisation page,
-   * 412 px wide: 18.5 ms a frame with every view, 4.7 ms with none, software canvas). Paused,
-   * every view is drawn.
+   * its frame, a still view that changed stays due) until it comes near, when `near` is called:
+   * a phone shows about one view at a time, and drawing the others each frame was most of a
+   * frame's work (the synchronisation page, 412 px wide: 18.5 ms a frame with every view, 4.7 ms
+   * with none, software canvas). Paused, every view is drawn.
    * @param {() => void} near
    */
   watch(near) {
@@ -177,13 +177,14 @@ export class Figures {
       const frame = this.frame(name, t);
       if (!frame) continue;
       drawn = true;
+      // While playing, a view far from the screen waits (a still one stays stale) till it nears.
+      if (playing && this.near && !this.near.has(name)) continue;
       const ctx = context(this.canvases[name]);
       const kind = this.kind(name);
       if (kind === "still") {
         if (this.stale.has(name)) this.paintLater(name, t);
         continue;
       }
-      if (playing && this.near && !this.near.has(name)) continue;
       if (kind === "layered") this.layered(name, ctx, frame);
       else this.paint(name, ctx, frame);
       this.stale.delete(name);
