@@ -68,14 +68,13 @@ async function offlineFiles() {
     external: ["./pkg/*"], logLevel: "error", plugins: [sharedModules],
   });
   const modules = Object.keys(element.metafile.inputs).map((input) => relative(www, resolve(input)));
-  const files = new Set(["style.css", "kli-figure.css", "vendor/codecs.js", ...modules]);
+  // The pages' worker (runtime/offload.js starts it as it is, unbundled).
+  const files = new Set(["style.css", "kli-figure.css", "vendor/codecs.js", "runtime/worker.js", ...modules]);
   for (const page of PAGES) {
     files.add(page.html);
     files.add(bundle(page));
     files.add(`pkg/${page.name}_demo.js`);
     files.add(`pkg/${page.name}_demo_bg.wasm`);
-    // Its worker, if it has one (www/<name>/worker.js, loaded by the page as it is).
-    if (existsSync(join(www, page.name, "worker.js"))) files.add(`${page.name}/worker.js`);
     // Its first pictures (scripts/first-pictures.mjs).
     for (const layout of LAYOUTS) files.add(pictureSheet(page, layout));
   }

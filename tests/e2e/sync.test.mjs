@@ -80,10 +80,10 @@ test("each run is solved in a worker while the flow runs, the sweep too; without
         window.__early = [];
         new MutationObserver(() => window.__early.push(document.querySelector("#note")?.textContent ?? "")).observe(document, { subtree: true, childList: true, characterData: true });
       },
-      prepare: (context) => context.route(/\/sync\/worker\.js$/, (route) => (worker ? route.continue() : route.abort())),
+      prepare: (context) => context.route(/\/runtime\/worker\.js$/, (route) => (worker ? route.continue() : route.abort())),
     });
     const note = await solved(page);
-    if (worker) assert.deepEqual(page.workers().map((w) => new URL(w.url()).pathname), ["/sync/worker.js"]);
+    if (worker) assert.deepEqual(page.workers().map((w) => new URL(w.url()).pathname), ["/runtime/worker.js"]);
     // The run was on show, unsolved, before its solutions came.
     assert.ok(await page.evaluate(() => window.__early.some((text) => text.endsWith("wrong. Solving…"))), "the note said Solving… first");
     assert.match(note, /^150 nodes, \d+ edges, \d+ wrong\. Chordal: [\d.]+° median error, (certified|not proved)/);

@@ -1,12 +1,14 @@
 // @ts-check
-// The swarm page: a descriptor for the page runtime (runtime.js), and the K sweep. The model, its
-// checks and all drawing are the module's (crates/kli-demo/src/swarm/).
+// The swarm page: a descriptor for the page runtime (runtime.js), and the K sweep, its points
+// computed by the page's worker (runtime/offload.js). The model, its checks and all drawing are
+// the module's (crates/kli-demo/src/swarm/).
 import * as swarm from "../pkg/swarm_demo.js";
 import { SwarmDemo } from "../pkg/swarm_demo.js";
 import { $ } from "../runtime/dom.js";
 import { timeTag } from "../runtime/exports.js";
 import { page as registered } from "../pages.js";
 import { Page } from "../runtime/runtime.js";
+import { Offload } from "../runtime/offload.js";
 import { Sweep } from "../runtime/sweep.js";
 
 /** @typedef {import("./state.js").SwarmState} SwarmState */
@@ -81,10 +83,14 @@ function showValues(/** @type {Host} */ host) {
   host.field("startSpread").disabled = /** @type {HTMLInputElement} */ (host.field("uniform")).checked;
 }
 
+/** The sweep's points are computed in a worker: started now, so it loads the module while the
+ *  page does. */
+const offload = new Offload(swarm, new URL("../pkg/swarm_demo.js", import.meta.url));
+
 /** The sweep over the current swarm (at most 200 oscillators). */
 function runSweep(/** @type {Host} */ host) {
   const options = { ...host.state, count: Math.min(host.state.count, 200) };
-  sweep.run(SWEEP, (coupling) => [SwarmDemo.sweepOrder(options, coupling, 30)]);
+  sweep.run(SWEEP, (coupling) => offload.call("SwarmDemo", "sweepOrder", [options, coupling, 30]).then((order) => [order]));
 }
 
 // The sweep fills itself once the page is interactive (a point a task, as the button runs it):

@@ -2,7 +2,8 @@
 // The synchronisation page: a descriptor for the page runtime (runtime.js), the sweep over the
 // share of wrong edges, and a user's own pose graph (opened or dropped). The problem, the
 // solutions, the flow and all drawing are the module's (crates/kli-demo/src/sync/); each run is
-// built unsolved and its solutions, like the sweep's points, come from a worker (solver.js).
+// built unsolved and its solutions, like the sweep's points, come from the page's worker
+// (runtime/offload.js).
 import * as sync from "../pkg/sync_demo.js";
 import { SyncDemo, SyncFile } from "../pkg/sync_demo.js";
 import { $ } from "../runtime/dom.js";
@@ -10,7 +11,7 @@ import { timeTag } from "../runtime/exports.js";
 import { page as registered } from "../pages.js";
 import { Page } from "../runtime/runtime.js";
 import { Sweep } from "../runtime/sweep.js";
-import { Solver } from "./solver.js";
+import { Offload } from "../runtime/offload.js";
 
 /** @typedef {import("./state.js").SyncState} SyncState */
 
@@ -29,7 +30,7 @@ const sweep = new Sweep({
 });
 /** The worker that solves each run and the sweep's points: started now, so it loads the module
  *  while the page does. */
-const solver = new Solver();
+const offload = new Offload(sync, new URL("../pkg/sync_demo.js", import.meta.url));
 /** The user's own pose graph, once one is read. */
 const own = { file: /** @type {SyncFile | null} */ (null), name: "" };
 /** The views' names in file names. */
@@ -85,7 +86,7 @@ const page = new Page({
     sweep.current = state.wrong;
     showValues(host);
     host.redraw(["sweep"]);
-    solver.solve(state).then((solutions) => {
+    offload.call("SyncDemo", "solve", [state], "solve").then((solutions) => {
       if (!solutions || host.run !== run) return;
       run.takeSolutions(solutions);
       host.changed();
@@ -119,7 +120,7 @@ const METHODS = ["spectral", "chordal", "robust"];
 /** The sweep over the current recipe (at most 60 nodes). */
 function runSweep(/** @type {Host} */ host) {
   const { count, graph, noise, seed } = host.state;
-  sweep.run(SHARES, (share, k) => solver.sweepError({ count, graph, noise, seed }, share, METHODS[k]).then((error) => [error]), METHODS.length);
+  sweep.run(SHARES, (share, k) => offload.call("SyncDemo", "sweepError", [{ count, graph, noise, seed }, share, METHODS[k]]).then((error) => [error]), METHODS.length);
 }
 
 /** Opening or dropping a pose graph: read, synchronised a task later (the status shows first). */
