@@ -61,6 +61,12 @@ export class Offload {
     });
   }
 
+  /** Answers `null` to every call of `call` not yet started, and drops them (a sweep run again). */
+  drop(/** @type {string} */ call) {
+    for (const job of this.queue.filter((job) => job.call === call)) job.resolve(null);
+    this.queue = this.queue.filter((job) => job.call !== call);
+  }
+
   /** Starts the next job when none is running. */
   pump() {
     if (this.running || this.queue.length === 0) return;

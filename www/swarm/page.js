@@ -90,6 +90,7 @@ const offload = new Offload(swarm, new URL("../pkg/swarm_demo.js", import.meta.u
 /** The sweep over the current swarm (at most 200 oscillators). */
 function runSweep(/** @type {Host} */ host) {
   const options = { ...host.state, count: Math.min(host.state.count, 200) };
+  offload.drop("sweepOrder");
   sweep.run(SWEEP, (coupling) => offload.call("SwarmDemo", "sweepOrder", [options, coupling, 30]).then((order) => [order]));
 }
 

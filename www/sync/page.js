@@ -120,6 +120,7 @@ const METHODS = ["spectral", "chordal", "robust"];
 /** The sweep over the current recipe (at most 60 nodes). */
 function runSweep(/** @type {Host} */ host) {
   const { count, graph, noise, seed } = host.state;
+  offload.drop("sweepError");
   sweep.run(SHARES, (share, k) => offload.call("SyncDemo", "sweepError", [{ count, graph, noise, seed }, share, METHODS[k]]).then((error) => [error]), METHODS.length);
 }
 
