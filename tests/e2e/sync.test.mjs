@@ -102,6 +102,27 @@ test("each run is solved in a worker while the flow runs, the sweep too; without
     await context.close();
   }
   assert.equal(notes[0], notes[1], "the worker's solutions are the page's own");
+  // What a run takes as its solutions, hostile: each refused by name, the run still working.
+  const { page, context } = await open("sync.html?n=20&graph=ring&noise=1&wrong=0&seed=1", { reducedMotion: "reduce" });
+  const refusals = await page.evaluate(async () => {
+    const { SyncDemo } = await import("./pkg/sync_demo.js");
+    const run = SyncDemo.unsolved({ count: 20, graph: "ring" });
+    const good = SyncDemo.solve({ count: 20, graph: "ring" });
+    const trap = new Proxy([], { get() { throw new Error("trap"); } });
+    const other = Float64Array.from(good, (x, i) => (i === 0 ? 21 : x));
+    const bad = [null, "abc", trap, [1, 2], new Float64Array(good.length).fill(NaN), other, new Float64Array(good.length + 1)];
+    const arguments_ = [];
+    for (let k = 0; k < 700; k++) {
+      try { run.takeSolutions(bad[k % bad.length]); arguments_.push("taken"); } catch (error) { arguments_.push(error instanceof Error ? error.argument : "not an Error"); }
+    }
+    run.takeSolutions(good);
+    run.advance(0.5);
+    const s = run.summary;
+    run.free();
+    return { arguments: [...new Set(arguments_)], solved: s.solved, certified: s.certified, moved: s.time > 0 };
+  });
+  assert.deepEqual(refusals, { arguments: ["solutions"], solved: true, certified: true, moved: true });
+  await context.close();
 });
 
 /** Four nodes a quarter turn apart about z: every edge's relative rotation is the same quarter

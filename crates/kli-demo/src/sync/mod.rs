@@ -13,6 +13,7 @@ use kli::KliError;
 use kli::sync::Method;
 use kli_wasm::error::JsResult;
 use kli_wasm::options::Fields;
+use kli_wasm::typed::numbers;
 use wasm_bindgen::prelude::*;
 use web_sys::CanvasRenderingContext2d;
 
@@ -136,10 +137,15 @@ impl SyncDemo {
     /// Takes the solutions `SyncDemo.solve` computed for this run's options; an Error naming
     /// `solutions` when they are not that call's numbers for a problem of this size.
     #[wasm_bindgen(js_name = takeSolutions)]
-    pub fn take_solutions(&mut self, solutions: &[f64]) -> JsResult<()> {
+    pub fn take_solutions(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array")] solutions: &JsValue,
+    ) -> JsResult<()> {
         let p = &self.model.problem;
-        self.model.solutions =
-            Some(Solutions::unpack(solutions, p.truth.len(), p.graph.edges().len())?);
+        let (n, m) = (p.truth.len(), p.graph.edges().len());
+        // Read through the input layer, so a Proxy, null or a string is refused by name too.
+        let data = numbers("solutions", solutions, Solutions::length(n, m))?;
+        self.model.solutions = Some(Solutions::unpack(&data, n, m)?);
         Ok(())
     }
 

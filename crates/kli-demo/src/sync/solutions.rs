@@ -35,10 +35,15 @@ impl Solutions {
         })
     }
 
+    /// How many numbers the array has for `n` nodes and `m` edges.
+    pub const fn length(n: usize, m: usize) -> usize {
+        2 + 2 * one(n, m)
+    }
+
     /// The array the module's doc describes.
     pub fn pack(&self) -> Vec<f64> {
         let (n, m) = (self.chordal.rotations.len(), self.chordal.residuals.len());
-        let mut out = Vec::with_capacity(2 + 2 * one(n, m));
+        let mut out = Vec::with_capacity(Solutions::length(n, m));
         out.extend([n as f64, m as f64]);
         for s in [&self.chordal, &self.robust] {
             s.rotations.iter().for_each(|&q| out.extend(to_wxyz(q)));
@@ -72,10 +77,10 @@ impl Solutions {
                 format!("must be what solve returns for this problem: {what}"),
             )
         };
-        if data.len() != 2 + 2 * one(n, m) {
+        if data.len() != Solutions::length(n, m) {
             return Err(wrong(&format!(
                 "{} numbers for {n} nodes and {m} edges, got {}",
-                2 + 2 * one(n, m),
+                Solutions::length(n, m),
                 data.len()
             )));
         }
