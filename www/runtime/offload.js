@@ -49,10 +49,7 @@ export class Offload {
    * @returns {Promise<any>}
    */
   call(target, call, args, latest) {
-    if (latest) {
-      for (const job of this.queue.filter((job) => job.latest === latest)) job.resolve(null);
-      this.queue = this.queue.filter((job) => job.latest !== latest);
-    }
+    if (latest) this.dropWhere((job) => job.latest === latest);
     return new Promise((resolve, reject) => {
       const job = { target, call, args, latest, resolve, reject };
       if (latest) this.queue.unshift(job);
@@ -63,8 +60,13 @@ export class Offload {
 
   /** Answers `null` to every call of `call` not yet started, and drops them (a sweep run again). */
   drop(/** @type {string} */ call) {
-    for (const job of this.queue.filter((job) => job.call === call)) job.resolve(null);
-    this.queue = this.queue.filter((job) => job.call !== call);
+    this.dropWhere((job) => job.call === call);
+  }
+
+  /** Answers `null` to the waiting calls `which` picks, and drops them. */
+  dropWhere(/** @type {(job: Job) => boolean} */ which) {
+    for (const job of this.queue.filter(which)) job.resolve(null);
+    this.queue = this.queue.filter((job) => !which(job));
   }
 
   /** Starts the next job when none is running. */
