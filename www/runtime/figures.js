@@ -177,8 +177,9 @@ export class Figures {
       const frame = this.frame(name, t);
       if (!frame) continue;
       drawn = true;
-      // While playing, a view far from the screen waits (a still one stays stale) till it nears.
-      if (playing && this.near && !this.near.has(name)) continue;
+      // While playing, a view far from the screen waits till it nears, once it has been drawn
+      // for its run (stale: a new run, size or camera; every canvas shows its figure).
+      if (playing && this.near && !this.near.has(name) && !this.stale.has(name)) continue;
       const ctx = context(this.canvases[name]);
       const kind = this.kind(name);
       if (kind === "still") {
