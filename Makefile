@@ -13,7 +13,11 @@ WASM_BINDGEN_VERSION = $(shell awk '/^name = "wasm-bindgen"$$/ {getline; gsub(/v
 # Features the Rust wasm32 target emits; wasm-opt must accept them.
 WASM_FEATURES := --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
                  --enable-mutable-globals --enable-reference-types --enable-multivalue --enable-simd
-RELEASE := target/$(TARGET)/release
+# The release builds of the package's entries and the pages' modules: one target directory for
+# all (cargo keeps each feature set's artifacts apart; the dependencies they share, wasm-bindgen's
+# macros above all, are built once: the entries' builds took 145 s cold in five directories, 87 s
+# in one), each bound right after its build, before the next overwrites the .wasm.
+BUILDS := target/builds
 
 .PHONY: mutants fixtures help setup setup-rust setup-node setup-browser pkg www single demo serve test lint publish-check \
         test-native test-wasm-node test-wasm-portable test-wasm-browser test-package test-page bench clean
@@ -53,8 +57,8 @@ setup-browser:
 
 # The npm package: crates/kli-wasm, the JavaScript API only, in entries with a module each:
 # `kli` (kli.js, the default features), `kli/swarm` (swarm.js), `kli/spline` (spline.js),
-# `kli/average` (average.js) and `kli/sync` (sync.js), each built with its feature alone, in a target directory of its
-# own so every build stays cached.
+# `kli/average` (average.js) and `kli/sync` (sync.js), each built with its feature alone (in BUILDS, where cargo keeps each
+# feature set's artifacts, so every build stays cached).
 ENTRIES := swarm spline average sync
 # What each build reads: a build runs again only when one of these is newer than its stamp, so
 # `make demo` serves at once when nothing changed (tests/e2e/contract.test.mjs checks it).
@@ -67,18 +71,17 @@ WWW_SOURCES := $(PKG_SOURCES) crates/kli-demo/Cargo.toml $(shell find crates/kli
 pkg: setup-rust setup-node pkg/.built
 	@cmp -s README.md pkg/README.md || cp README.md pkg/
 pkg/.built: $(PKG_SOURCES)
-	cargo build --release -p kli-wasm --lib --target $(TARGET)
-	for entry in $(ENTRIES); do \
-	  cargo build --release -p kli-wasm --lib --target $(TARGET) --target-dir target/$$entry-entry \
-	    --no-default-features --features $$entry,small-allocator; \
-	done
 	rm -rf pkg
-	wasm-bindgen --target web --out-dir pkg --out-name kli $(RELEASE)/kli_wasm.wasm
+	cargo build --release -p kli-wasm --lib --target $(TARGET) --target-dir $(BUILDS)
+	wasm-bindgen --target web --out-dir pkg --out-name kli $(BUILDS)/$(TARGET)/release/kli_wasm.wasm
 	for entry in $(ENTRIES); do \
-	  wasm-bindgen --target web --out-dir pkg --out-name $$entry target/$$entry-entry/$(TARGET)/release/kli_wasm.wasm; \
+	  cargo build --release -p kli-wasm --lib --target $(TARGET) --target-dir $(BUILDS) \
+	    --no-default-features --features $$entry,small-allocator; \
+	  wasm-bindgen --target web --out-dir pkg --out-name $$entry $(BUILDS)/$(TARGET)/release/kli_wasm.wasm; \
 	done
 	node scripts/glue.mjs pkg/kli.js $(foreach entry,$(ENTRIES),pkg/$(entry).js)
-	for module in kli $(ENTRIES); do wasm-opt -O3 $(WASM_FEATURES) pkg/$${module}_bg.wasm -o pkg/$${module}_bg.wasm; done
+	@# Two at a time: wasm-opt (binaryen's npm build) keeps one core busy.
+	printf '%s\n' kli $(ENTRIES) | xargs -P 2 -I '{}' wasm-opt -O3 $(WASM_FEATURES) pkg/{}_bg.wasm -o pkg/{}_bg.wasm
 	@# kli/three and kli/gltf: plain JavaScript over kli/spline (resample.js shared).
 	cp crates/kli-wasm/js/*.js crates/kli-wasm/js/*.d.ts pkg/
 	cp README.md pkg/
@@ -98,24 +101,23 @@ www: setup-rust setup-node pkg www/pkg/.built www/pkg/first/.built www/vendor/co
 # Each page's first picture, drawn by its module in Node at the size of each canvas in each
 # layout (www/first-pictures.json; `node scripts/first-pictures.mjs --measure` after a change of
 # the pages' layout), shown by the HTML before any script runs.
-www/pkg/first/.built: www/pkg/.built www/first-pictures.json scripts/first-pictures.mjs www/pages.js $(wildcard www/*/state.js) $(wildcard www/*.html)
+www/pkg/first/.built: www/pkg/.built www/first-pictures.json scripts/first-pictures.mjs www/pages.js $(wildcard www/*/state.js) $(wildcard www/*/page.html)
 	node scripts/first-pictures.mjs
 	@touch $@
 
 # The pages' modules, one a page (the pages are listed in www/pages.js, the registry): a build of
-# crates/kli-demo with the page's feature `<page>-page`, bound to www/pkg/<page>_demo.js. One
-# target directory serves every page (cargo keeps each feature set's artifacts); each build is
-# bound right after it, before the next overwrites the .wasm. It is the kli/sync entry's: faer,
-# which the synchronisation page needs, takes a minute to build and is built there already.
-PAGES_TARGET := target/sync-entry
+# crates/kli-demo with the page's feature `<page>-page`, bound to www/pkg/<page>_demo.js, in the
+# entries' target directory (BUILDS: faer, which the synchronisation page needs, is built there).
 www/pkg/.built: $(WWW_SOURCES) pkg/.built
 	@test -n "$(PAGES)" || { echo "no pages: node scripts/pages.mjs names printed nothing"; exit 1; }
 	rm -rf www/pkg
 	for page in $(PAGES); do \
-	  cargo build --release -p kli-demo --lib --target $(TARGET) --target-dir $(PAGES_TARGET) --no-default-features --features $$page-page; \
-	  wasm-bindgen --target web --out-dir www/pkg --out-name $${page}_demo $(PAGES_TARGET)/$(TARGET)/release/kli_demo.wasm; \
+	  cargo build --release -p kli-demo --lib --target $(TARGET) --target-dir $(BUILDS) --no-default-features --features $$page-page; \
+	  wasm-bindgen --target web --out-dir www/pkg --out-name $${page}_demo $(BUILDS)/$(TARGET)/release/kli_demo.wasm; \
 	  node scripts/glue.mjs www/pkg/$${page}_demo.js; \
-	  wasm-opt -O3 $(WASM_FEATURES) www/pkg/$${page}_demo_bg.wasm -o www/pkg/$${page}_demo_bg.wasm; \
+	done
+	printf '%s\n' $(PAGES) | xargs -P 2 -I '{}' wasm-opt -O3 $(WASM_FEATURES) www/pkg/{}_demo_bg.wasm -o www/pkg/{}_demo_bg.wasm
+	@for page in $(PAGES); do \
 	  echo "www/pkg/$${page}_demo_bg.wasm: $$(stat -c %s www/pkg/$${page}_demo_bg.wasm) bytes, $$(gzip -9c www/pkg/$${page}_demo_bg.wasm | wc -c) gzipped"; \
 	done
 	@touch $@

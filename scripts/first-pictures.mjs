@@ -11,7 +11,7 @@
 //
 //   node scripts/first-pictures.mjs            writes www/pkg/first/<page>-<layout>.css (make www)
 //   node scripts/first-pictures.mjs --measure  measures the canvases in Chromium into
-//                                              www/first-pictures.json (after a change of style.css)
+//                                              www/first-pictures.json (after a change of the styles)
 import { mkdirSync, readFileSync, writeFileSync } from "node:fs";
 import { PAGES } from "../www/pages.js";
 
@@ -128,7 +128,7 @@ async function draw() {
     const state = page.state;
     const run = state.create(module, state.defaults);
     const [azimuth, elevation] = module.defaultCamera();
-    const html = readFileSync(at(`www/${page.html}`), "utf8");
+    const html = readFileSync(at(`www/${page.name}/page.html`), "utf8");
     const sheets = Object.fromEntries(LAYOUTS.map((layout) => [layout.name, [`/* ${page.html}'s first pictures, ${layout.name} (scripts/first-pictures.mjs) */`]]));
     for (const [view, id] of drawn(page, run)) {
       for (const layout of LAYOUTS) {
@@ -146,11 +146,10 @@ async function draw() {
       }
       const markup = pictureMarkup(id);
       if (!new RegExp(`${escape(markup)}\\s*<canvas id="${id}"`).test(html)) {
-        problems.push(`www/${page.html} must have, right before <canvas id="${id}">:\n  ${markup}`);
+        problems.push(`www/${page.name}/page.html must have, right before <canvas id="${id}">:\n  ${markup}`);
       }
     }
     for (const layout of LAYOUTS) writeFileSync(at(`www/${pictureSheet(page, layout)}`), `${sheets[layout.name].join("\n")}\n`);
-    if (!html.includes(pictureLinks(page))) problems.push(`www/${page.html} must link its first pictures' sheets (node scripts/pages.mjs write)`);
     run.free();
   }
   if (problems.length) throw new Error(`the first pictures are not where the pages show them:\n${problems.join("\n")}`);

@@ -1,12 +1,13 @@
 // What follows from the pages' registry (www/pages.js):
 //   node scripts/pages.mjs names   the pages' names, for the Makefile
-//   node scripts/pages.mjs write   in each page's HTML: the pages' navigation, its Save list and its
-//                                  script tag pointing at its bundle; each page's bundle (its
+//   node scripts/pages.mjs write   each page's HTML at its address (www/<html>) from its folder
+//                                  (`compose`); each page's bundle (its
 //                                  descriptor, www/<name>/page.js, and every module it imports,
 //                                  minified: one request beside the .wasm module's glue instead of
 //                                  a dozen) into www/pkg/<name>-page.js; and www/pkg/build.js, the
 //                                  service worker's file list and cache name (a hash of those files)
-//   node scripts/pages.mjs check   exits 1 when a page's HTML is not what `write` makes of it
+//   node scripts/pages.mjs check   exits 1 when a page's folder lacks what its HTML is made from,
+//                                  or a page's HTML on disk is not what `write` makes of it
 import { createHash } from "node:crypto";
 import { existsSync, readFileSync, writeFileSync } from "node:fs";
 import { join, relative, resolve } from "node:path";
@@ -14,10 +15,6 @@ import { MORE_LINKS, PAGES, bundle, script } from "../www/pages.js";
 import { LAYOUTS, pictureLinks, pictureSheet } from "./first-pictures.mjs";
 
 const www = new URL("../www/", import.meta.url).pathname;
-const SCRIPT = /<script type="module" src="[^"]*"><\/script>/;
-
-const NAV = /<nav aria-label="Pages">.*<\/nav>/;
-const SAVE_LIST = /(<section id="save"[^]*?<ul>\n)[^]*?(    <\/ul>)/;
 
 /** The pages' navigation as `page` shows it: every page of the registry, then the examples. */
 function navigation(page) {
@@ -27,38 +24,74 @@ function navigation(page) {
   return `<nav aria-label="Pages">${links.join(" · ")}</nav>`;
 }
 
-/** The page's Save list: each view as PNG and SVG, its data as CSV and JSON (the registry's `save`). */
-function saveList(page) {
-  return Object.entries(page.save).map(([what, [label, noun]]) => {
+/** The page's Save section: its own sentence, then each view as PNG and SVG and its data as CSV
+ *  and JSON (the registry's `save`), and the status the runtime writes to. */
+function saveSection(page, intro) {
+  const items = Object.entries(page.save).map(([what, [label, noun]]) => {
     const formats = Object.hasOwn(page.canvases, what) ? ["png", "svg"] : ["csv", "json"];
     const [first, second] = formats.map((format) =>
       `<button type="button" data-save="${what}" data-format="${format}" aria-label="${noun} as ${format.toUpperCase()}">${format.toUpperCase()}</button>`);
     return `      <li>${label} ${first}\n        ${second}</li>\n`;
   }).join("");
+  return `<section id="save" class="save" aria-labelledby="save-title">
+    <h2 id="save-title">Save</h2>
+${intro}    <ul>
+${items}    </ul>
+    <p id="save-status" class="visually-hidden" role="status"></p>
+  </section>`;
 }
 
-/** The page's HTML with the registry's navigation and Save list. */
-function withRegistry(html, page) {
-  if (!NAV.test(html)) throw new Error(`${page.html}: no <nav aria-label="Pages"> on one line to fill`);
-  if (!SAVE_LIST.test(html)) throw new Error(`${page.html}: no <section id="save"> with a <ul> to fill`);
-  return html.replace(NAV, navigation(page)).replace(SAVE_LIST, (_, start, end) => start + saveList(page) + end);
+/** One piece of the page's own HTML, or an Error saying what `www/<name>/page.html` lacks. */
+function piece(source, page, pattern, what) {
+  const found = pattern.exec(source);
+  if (!found) throw new Error(`www/${page.name}/page.html: ${what}`);
+  return found;
 }
 
-/** The page's HTML loading its first pictures' sheets (render-blocking: the pictures come in the
- *  text's paint) and its bundle, with the module's glue preloaded. Not its .wasm: the pictures
- *  are on screen before the module matters, and on Lighthouse's slow phone network a preloaded
- *  .wasm (57–252 KB gzipped) competes with them: the largest contentful paint came 0.4–1.4 s
- *  later with it, on every page (2026-11-26). */
-function withBundle(html, page) {
-  if (!SCRIPT.test(html)) throw new Error(`${page.html}: no <script type="module" src="…"> to point at the bundle`);
-  const anchor = '<link rel="stylesheet" href="style.css">\n';
-  if (!html.includes(anchor)) throw new Error(`${page.html}: no ${anchor.trim()} to put the preload after`);
-  const preload = pictureLinks(page) + `<link rel="modulepreload" href="pkg/${page.name}_demo.js">\n`;
-  return html
-    .replace(/^<link rel="(modulepreload|preload)"[^>]*>\n/gm, "")
-    .replace(/^<link rel="stylesheet" href="pkg\/first\/[^>]*>\n/gm, "")
-    .replace(anchor, anchor + preload)
-    .replace(SCRIPT, `<script type="module" src="${bundle(page)}"></script>`);
+/**
+ * A page's HTML at its address, `www/<html>`, from its folder: `page.html` (its <title>, its
+ * description, then its body: the header, <main> with `<section id="save">` holding only its
+ * sentence, and the footer) and `style.css` (its own rules). Everything a page shares is written
+ * here once: the head, the pages' navigation at the header's foot, the module's load status at
+ * the top of <main>, the Save list (the registry's), and its first pictures' sheets (render-
+ * blocking: the pictures come in the text's paint) and its bundle, with the module's glue
+ * preloaded. Not its .wasm: the pictures are on screen before the module matters, and on
+ * Lighthouse's slow phone network a preloaded .wasm (57–252 KB gzipped) competes with them: the
+ * largest contentful paint came 0.4–1.4 s later with it, on every page (2026-11-26).
+ */
+export function compose(page) {
+  const source = readFileSync(join(www, page.name, "page.html"), "utf8");
+  const style = readFileSync(join(www, page.name, "style.css"), "utf8");
+  const [title] = piece(source, page, /^<title>[^<]+<\/title>$/m, "no <title> on a line of its own");
+  const [description] = piece(source, page, /^<meta name="description" content="[^"]+">$/m, 'no <meta name="description"> on a line of its own');
+  const [body] = piece(source, page, /^<header class="page-header">$[^]*^<\/footer>$/m, 'no body from <header class="page-header"> to </footer>');
+  piece(body, page, /^<\/header>$/m, "no </header> on a line of its own");
+  piece(body, page, /^<main>$/m, "no <main> on a line of its own");
+  const [, intro] = piece(body, page, /^  <section id="save">\n(    <p>[^]*?<\/p>\n)  <\/section>$/m,
+    'no <section id="save"> holding its one sentence, <p>…</p>');
+  return `<!doctype html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+${description}
+<link rel="icon" href="data:,">
+<link rel="stylesheet" href="style.css">
+<style>
+${style.trimEnd()}
+</style>
+${pictureLinks(page)}<link rel="modulepreload" href="pkg/${page.name}_demo.js">
+${title}
+</head>
+<body>
+${body
+    .replace(/^<\/header>$/m, `  ${navigation(page)}\n</header>`)
+    .replace(/^<main>$/m, '<main>\n  <p id="load-status" class="status" role="status">Loading the WebAssembly module…</p>\n')
+    .replace(/^  <section id="save">\n[^]*?^  <\/section>$/m, () => `  ${saveSection(page, intro)}`)}
+<script type="module" src="${bundle(page)}"></script>
+</body>
+</html>
+`;
 }
 
 /** Every file the pages need offline, relative to www/: the element and its modules too. */
@@ -101,15 +134,15 @@ if (command === "names") {
   const stale = [];
   for (const page of PAGES) {
     const path = join(www, page.html);
-    const html = readFileSync(path, "utf8");
-    const wanted = withBundle(withRegistry(html, page), page);
-    if (wanted === html) continue;
+    const wanted = compose(page);
+    if (existsSync(path) && readFileSync(path, "utf8") === wanted) continue;
     if (command === "write") writeFileSync(path, wanted);
-    stale.push(page.html);
+    // Not written yet is no fault: `make www` writes them.
+    if (command === "write" || existsSync(path)) stale.push(page.html);
   }
   if (command === "check") {
     if (stale.length) {
-      console.error(`not as the registry makes them (navigation, Save list, bundle): ${stale.join(", ")}: run node scripts/pages.mjs write`);
+      console.error(`not as their folders and the registry make them: ${stale.join(", ")}: run node scripts/pages.mjs write`);
       process.exit(1);
     }
   } else {
@@ -134,7 +167,7 @@ self.KLI_BUILD = ${JSON.stringify({ cache: `kli-${hash.digest("hex").slice(0, 12
 `;
     const out = join(www, "pkg/build.js");
     if (!existsSync(out) || readFileSync(out, "utf8") !== build_) writeFileSync(out, build_);
-    if (stale.length) console.log(`navigation, Save lists and script tags written from the registry in ${stale.join(", ")}`);
+    if (stale.length) console.log(`written from their folders and the registry: ${stale.join(", ")}`);
   }
 } else {
   console.error("usage: node scripts/pages.mjs names | write | check");

@@ -1,4 +1,4 @@
-// End-to-end tests of the averaging page (www/average.html) in Debian's headless Chromium.
+// End-to-end tests of the averaging page (average.html, made from www/average/) in Debian's headless Chromium.
 import { test } from "node:test";
 import assert from "node:assert/strict";
 import { join } from "node:path";

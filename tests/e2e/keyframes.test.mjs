@@ -1,4 +1,4 @@
-// End-to-end tests of the keyframes page (www/keyframes.html) in Debian's headless Chromium.
+// End-to-end tests of the keyframes page (keyframes.html, made from www/keyframes/) in Debian's headless Chromium.
 import { test } from "node:test";
 import assert from "node:assert/strict";
 import { join } from "node:path";

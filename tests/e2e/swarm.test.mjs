@@ -1,4 +1,4 @@
-// End-to-end tests of the swarm page (www/swarm.html) in Debian's headless Chromium.
+// End-to-end tests of the swarm page (swarm.html, made from www/swarm/) in Debian's headless Chromium.
 import { test } from "node:test";
 import assert from "node:assert/strict";
 import { join } from "node:path";

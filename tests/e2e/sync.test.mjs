@@ -1,4 +1,4 @@
-// End-to-end tests of the synchronisation page (www/sync.html) in Debian's headless Chromium.
+// End-to-end tests of the synchronisation page (sync.html, made from www/sync/) in Debian's headless Chromium.
 import { test } from "node:test";
 import assert from "node:assert/strict";
 import { join } from "node:path";

@@ -1,6 +1,7 @@
 // The pages' registry (www/pages.js) against what is on disk: a page is one folder a side (its
 // run class in crates/kli-demo/src/<name>/, its descriptor and state in www/<name>/), its
-// Cargo feature, its HTML at its address, and one entry. A page on disk that the registry does
+// Cargo feature, its HTML (www/<name>/page.html and style.css, which `make www` makes into the page
+// at its address) and one entry. A page on disk that the registry does
 // not name fails here, and so does an entry with nothing on disk; so do the pages' navigation
 // and Save lists when they are not what the registry makes, and docs/architecture.md's lists of
 // pages and crates when they drift.
@@ -19,15 +20,22 @@ const folders = (/** @type {string} */ dir) =>
 
 test("every page on disk is in the registry, and every entry is on disk", () => {
   // www/: each folder with a descriptor is a page; the runtime, the examples and built files are not.
-  const www = folders("www").filter((dir) => existsSync(join(root, "www", dir, "page.js")));
-  assert.deepEqual(sorted(www), names, "www/<name>/page.js");
+  const www = folders("www").filter((dir) => ["page.js", "page.html"].some((file) => existsSync(join(root, "www", dir, file))));
+  assert.deepEqual(sorted(www), names, "www/<name>/ with page.js or page.html");
   for (const page of PAGES) {
     assert.ok(existsSync(join(root, "www", script(page))), `www/${script(page)}`);
-    assert.ok(existsSync(join(root, "www", page.name, "state.js")), `www/${page.name}/state.js`);
+    for (const file of ["state.js", "page.html", "style.css"]) {
+      assert.ok(existsSync(join(root, "www", page.name, file)), `www/${page.name}/${file}`);
+    }
   }
-  // The pages' HTML at the top of www/, at the addresses first published.
+  // The pages' HTML at the top of www/ is built, at the addresses first published: none there is
+  // a source (git tracks none), and none there is a page the registry does not name.
+  const tracked = execFileSync("git", ["ls-files", "www/*.html"], { cwd: root, encoding: "utf8" }).split("\n")
+    .filter((file) => file && !file.includes("/", "www/".length));
+  assert.deepEqual(tracked, [], "www/*.html tracked by git");
   const html = readdirSync(join(root, "www")).filter((file) => file.endsWith(".html"));
-  assert.deepEqual(sorted(html), sorted(PAGES.map((page) => page.html)), "www/*.html");
+  const addresses = PAGES.map((page) => page.html);
+  assert.deepEqual(html.filter((file) => !addresses.includes(file)), [], "www/*.html that no page has as its address");
   // crates/kli-demo/src/: a folder a page, named as the page.
   assert.deepEqual(sorted(folders("crates/kli-demo/src")), names, "crates/kli-demo/src/<name>/");
   // Its Cargo feature, `<name>-page`, and nothing else of that form.
@@ -50,15 +58,15 @@ test("each entry says what its page shows: views, canvases and a Save list that 
     // Each <kli-figure> view is drawn by a view of the run that has a canvas on the page.
     for (const drawn of Object.values(page.views)) assert.ok(canvases.includes(drawn), `${page.name}: ${drawn}`);
     // A page's own views are in its HTML.
-    const html = readFileSync(join(root, "www", page.html), "utf8");
-    for (const selector of Object.values(page.canvases)) assert.match(html, new RegExp(`<canvas id="${selector.slice(1)}"`), `${page.html} ${selector}`);
+    const html = readFileSync(join(root, "www", page.name, "page.html"), "utf8");
+    for (const selector of Object.values(page.canvases)) assert.match(html, new RegExp(`<canvas id="${selector.slice(1)}"`), `${page.name}/page.html ${selector}`);
   }
   // The <kli-figure> views are unique across pages.
   const views = PAGES.flatMap((page) => Object.keys(page.views));
   assert.equal(new Set(views).size, views.length, "a view belongs to one page");
 });
 
-test("the pages' navigation and Save lists are the registry's", () => {
+test("each page's HTML is made from its folder and the registry (navigation, Save list, head)", () => {
   execFileSync("node", ["scripts/pages.mjs", "check"], { cwd: root, stdio: "pipe" });
 });
 
