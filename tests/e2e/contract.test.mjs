@@ -319,7 +319,7 @@ test("printed, every page shows no control and keeps each figure whole on one pa
   }
 });
 
-test("no empty figure: a page's sweep fills itself once the page is interactive, and its button runs it again", async () => {
+test("no empty figure: a page's sweep fills itself once the page is interactive, in the page's worker, and its button runs it again", async () => {
   for (const { html } of PAGES) {
     const { page, context, problems } = await open(html, { reducedMotion: "reduce" });
     try {
@@ -329,6 +329,8 @@ test("no empty figure: a page's sweep fills itself once the page is interactive,
       await done();
       const rows = await page.locator("#sweep-table tbody tr").count();
       assert.ok(rows >= 10, `${html}: ${rows} sweep points with no click`);
+      // Its points are computed in the page's worker (runtime/offload.js), off the page's tasks.
+      assert.deepEqual(page.workers().map((worker) => new URL(worker.url()).pathname), ["/runtime/worker.js"], html);
       // The button starts the sweep afresh in its click's own task (a short sweep may finish
       // before a poll would see it running).
       const started = await page.evaluate(() => {

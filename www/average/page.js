@@ -1,12 +1,14 @@
 // @ts-check
 // The averaging page: a descriptor for the page runtime (runtime.js), dragging a measurement on
-// the sphere, the means' table and the outlier sweep. The measurements, the means, the flow and
-// all drawing are the module's (crates/kli-demo/src/average/).
+// the sphere, the means' table and the outlier sweep, its points computed by the page's worker
+// (runtime/offload.js). The measurements, the means, the flow and all drawing are the module's
+// (crates/kli-demo/src/average/).
 import * as average from "../pkg/average_demo.js";
 import { AverageDemo } from "../pkg/average_demo.js";
 import { $ } from "../runtime/dom.js";
 import { timeTag } from "../runtime/exports.js";
 import { grabPoint } from "../runtime/input.js";
+import { Offload } from "../runtime/offload.js";
 import { page as registered } from "../pages.js";
 import { Page } from "../runtime/runtime.js";
 import { Sweep } from "../runtime/sweep.js";
@@ -116,10 +118,15 @@ function grabMeasurement(host, x, y) {
   });
 }
 
+/** The sweep's points are computed in a worker: started now, so it loads the module while the
+ *  page does. */
+const offload = new Offload(average, new URL("../pkg/average_demo.js", import.meta.url));
+
 /** The sweep over the current measurements' recipe. */
 function runSweep(/** @type {Host} */ host) {
   const { count, noise, seed } = host.state;
-  sweep.run(SHARES, (share) => AverageDemo.sweepPoint({ count, noise, seed }, share));
+  offload.drop("sweepPoint");
+  sweep.run(SHARES, (share) => offload.call("AverageDemo", "sweepPoint", [{ count, noise, seed }, share]));
 }
 
 // The sweep fills itself once the page is interactive (a point a task, as the button runs it):
