@@ -70,6 +70,55 @@ test("with wrong edges the robust solution sets them aside and is nearer the tru
   await context.close();
 });
 
+test("until its solutions come, the first run's results view keeps its first picture; a new run takes it away", async () => {
+  // The worker's script held back until released: the first run waits for its solutions.
+  /** @type {() => void} */
+  let release = () => {};
+  const held = new Promise((resolve) => { release = () => resolve(undefined); });
+  const { page, context, problems } = await open("sync.html", {
+    reducedMotion: "reduce",
+    prepare: (context) => context.route(/\/runtime\/worker\.js$/, async (route) => { await held; await route.continue(); }),
+  });
+  try {
+    assert.match(await page.textContent("#note"), /Solving…$/);
+    // The views that need no solutions are drawn, and their pictures gone; the results' stays.
+    await page.waitForFunction(() => !document.querySelector("#sync-graph-first"));
+    await page.evaluate(() => new Promise((resolve) => setTimeout(resolve, 200)));
+    assert.equal(await page.locator("#sync-results-first").count(), 1, "the results' first picture while solving");
+    const covered = await page.evaluate(() => {
+      const canvas = /** @type {HTMLCanvasElement} */ (document.querySelector("#sync-results"));
+      return canvas.getContext("2d")?.getImageData(0, 0, canvas.width, canvas.height).data.some((value, i) => i % 4 === 3 && value > 0);
+    });
+    assert.equal(covered, false, "nothing drawn over it");
+    release();
+    await solved(page);
+    await page.waitForFunction(() => !document.querySelector("#sync-results-first"));
+    assert.ok((await canvasStats(page, "#sync-results")).drawn > 3000, "the solutions drawn");
+  } finally {
+    release();
+    await context.close();
+  }
+  // A new run before the first one's solutions: the picture (of the first run) goes at once.
+  let again = () => {};
+  const heldAgain = new Promise((resolve) => { again = () => resolve(undefined); });
+  const second = await open("sync.html", {
+    reducedMotion: "reduce",
+    prepare: (context) => context.route(/\/runtime\/worker\.js$/, async (route) => { await heldAgain; await route.continue(); }),
+  });
+  try {
+    assert.equal(await second.page.locator("#sync-results-first").count(), 1);
+    await second.page.fill("[name=seed]", "9");
+    await second.page.waitForURL(/seed=9/);
+    await second.page.waitForFunction(() => !document.querySelector("#sync-results-first"));
+    again();
+    assert.match(await solved(second.page), /nodes/);
+    assert.deepEqual([...problems, ...second.problems], []);
+  } finally {
+    again();
+    await second.context.close();
+  }
+});
+
 test("each run is solved in a worker while the flow runs, the sweep too; without a worker, on the page, alike", async () => {
   const notes = [];
   for (const worker of [true, false]) {

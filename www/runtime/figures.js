@@ -51,6 +51,10 @@ export class Figures {
     this.near = null;
     /** @type {Map<Name, Element>} each canvas's first picture (scripts/first-pictures.mjs), until the canvas is drawn */
     this.pictures = new Map();
+    /** Whether the run on show has yet to compute view `name` (the synchronisation page's
+     *  solutions come from a worker): meanwhile the view keeps its first picture, which shows it
+     *  complete, rather than being drawn waiting. */
+    this.waiting = (/** @type {Name} */ name) => false;
     for (const name of /** @type {Name[]} */ (Object.keys(canvases))) {
       const picture = canvases[name].previousElementSibling;
       if (picture?.classList.contains("first-picture")) this.pictures.set(name, picture);
@@ -65,6 +69,8 @@ export class Figures {
 
   /** Shows a new run (a new module object): every still part is drawn again. */
   show(/** @type {Figure} */ figure) {
+    // The first pictures show the first run: one a waiting view kept goes with it.
+    if (this.figure) for (const name of [...this.pictures.keys()]) this.uncover(name);
     this.figure = figure;
     this.kinds = Object.fromEntries(figure.views.map(({ name, kind }) => [name, kind]));
     this.invalidate();
@@ -180,6 +186,7 @@ export class Figures {
       // While playing, a view far from the screen waits till it nears, once it has been drawn
       // for its run (stale: a new run, size or camera; every canvas shows its figure).
       if (playing && this.near && !this.near.has(name) && !this.stale.has(name)) continue;
+      if (this.pictures.has(name) && this.waiting(name)) continue;
       const ctx = context(this.canvases[name]);
       const kind = this.kind(name);
       if (kind === "still") {

@@ -84,6 +84,8 @@ import { videoPanel } from "./video/panel.js";
  * @property {(state: State) => number} [stride] the smallest step of ← and → and the slider (else 1/200 of the span)
  * @property {boolean} [timeInUrl] whether a paused page writes its time into the URL
  * @property {(host: Host<State, R>, run: R, state: State) => void} [shown] what the page adds when a run is shown
+ * @property {(run: R, view: string) => boolean} [waiting] whether `run` has yet to compute `view` (until `changed`): the
+ *   view keeps its first picture meanwhile
  * @property {(host: Host<State, R>, name: string) => boolean} [input] a form field the page handles itself
  * @property {(host: Host<State, R>) => void} [wire] the page's own buttons
  * @property {(host: Host<State, R>, x: number, y: number) => ((x: number, y: number) => void) | null} [grab]
@@ -176,6 +178,7 @@ export class Page {
     this.figures = new Figures(canvases, painters);
     // While playing, a view comes back into the frames as it nears the screen.
     this.figures.watch(() => this.requestDraw());
+    this.figures.waiting = (name) => this.run !== null && (this.d.waiting?.(this.run, name) ?? false);
     this.player = new Player({ draw: () => this.draw(), changed: () => this.playChanged() });
     /** @type {R | null} */
     this.run = null;

@@ -82,6 +82,9 @@ const page = new Page({
     title: (run) => `${run.summary.count} rotations synchronising on a graph: the Lohe flow`,
     file: (run) => `kli-sync-${run.summary.count}-nodes`,
   },
+  // Until its solutions come, the first run's results view keeps its first picture (the same
+  // solutions, drawn by make www) rather than showing "Solving…".
+  waiting: (run, view) => view === "results" && !run.summary.solved,
   shown: (host, run, state) => {
     sweep.current = state.wrong;
     showValues(host);
