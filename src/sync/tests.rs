@@ -230,6 +230,40 @@ fn the_certificate_agrees_with_a_dense_eigensolver() {
     }
 }
 
+/// The solvers see the largest weight as 1; the certificate is given back in the caller's units
+/// (`S` is linear in the weights): against the dense eigensolver of the caller's `S`, with
+/// uneven weights whose largest is 250, then 1e-3. Noise only, certified: `λ₄` and `τ`; with
+/// wrong edges, where the chordal relaxation is not tight (not certified): `λ_min` too.
+#[test]
+fn the_certificate_is_in_the_callers_units() {
+    for largest in [250.0, 1e-3] {
+        for (wrong, certified) in [(0.0, true), (0.3, false)] {
+            let s = synthetic(16, 0.35, 0.1, wrong, 0);
+            let uneven: Vec<f64> =
+                (0..s.graph.edges().len()).map(|k| [0.3, 0.7, 1.0][k % 3] * largest).collect();
+            let graph =
+                Graph::new(Some(16), s.graph.edges(), s.graph.relative(), Some(&uneven)).unwrap();
+            let result = synchronize(&graph, &SyncOptions::default()).unwrap();
+            let certificate = result.certificate.unwrap();
+            assert_eq!(certificate.certified, certified, "{largest}, {wrong}");
+            let dense = dense_certificate_eigenvalues(&graph, &result.rotations);
+            let (got, want) = if certified {
+                (certificate.gap, dense[3])
+            } else {
+                (certificate.lambda_min, dense[0])
+            };
+            assert!((got - want).abs() < 1e-7 * want.abs(), "{largest}, {wrong}: {got} vs {want}");
+            let mut degrees = vec![0.0; 16];
+            for (&[i, j], &w) in graph.edges().iter().zip(graph.weights()) {
+                degrees[i] += w;
+                degrees[j] += w;
+            }
+            let tolerance = 1e-9 * degrees.iter().copied().fold(0.0, f64::max);
+            assert!((certificate.tolerance - tolerance).abs() < 1e-12 * tolerance, "{largest}");
+        }
+    }
+}
+
 /// The twisted state of a ring with every measurement the identity: node k turned by
 /// 2πk/n about z. Each edge is off by the same angle, so every node is pulled equally both ways:
 /// a stationary point with `f > 0`, while the consensus has `f = 0`.
