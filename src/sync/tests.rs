@@ -253,7 +253,7 @@ fn the_certificate_is_in_the_callers_units() {
                 (certificate.lambda_min, dense[0])
             };
             assert!((got - want).abs() < 1e-7 * want.abs(), "{largest}, {wrong}: {got} vs {want}");
-            let mut degrees = vec![0.0; 16];
+            let mut degrees = [0.0; 16];
             for (&[i, j], &w) in graph.edges().iter().zip(graph.weights()) {
                 degrees[i] += w;
                 degrees[j] += w;
