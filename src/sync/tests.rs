@@ -164,9 +164,8 @@ fn the_second_order_model_matches_finite_differences() {
 }
 
 #[allow(clippy::needless_range_loop)]
-/// `S = L − Λ` written densely from MATH.md's formulas, and its eigenvalues by faer's dense
-/// self-adjoint solver.
-fn dense_certificate_eigenvalues(graph: &Graph, q: &[DQuat]) -> Vec<f64> {
+/// `S = L − Λ` written densely from MATH.md's formulas.
+fn dense_certificate(graph: &Graph, q: &[DQuat]) -> Mat<f64> {
     let n = graph.count();
     let mut l = Mat::<f64>::zeros(3 * n, 3 * n);
     let r: Vec<DMat3> = q.iter().map(|&q| DMat3::from_quat(q)).collect();
@@ -205,7 +204,35 @@ fn dense_certificate_eigenvalues(graph: &Graph, q: &[DQuat]) -> Vec<f64> {
             }
         }
     }
-    s.self_adjoint_eigenvalues(Side::Lower).unwrap()
+    s
+}
+
+/// The eigenvalues of the dense `S`, by faer's dense self-adjoint solver.
+fn dense_certificate_eigenvalues(graph: &Graph, q: &[DQuat]) -> Vec<f64> {
+    dense_certificate(graph, q).self_adjoint_eigenvalues(Side::Lower).unwrap()
+}
+
+/// Gershgorin's bound of the block `S`, the shift the certificate's Lanczos starts from where it
+/// is not certified, is the dense matrix's `min_i (s_ii − Σ_{j≠i} |s_ij|)`, and below every
+/// eigenvalue: at the optimum (certified) and where wrong edges leave the relaxation loose.
+#[test]
+fn gershgorins_bound_is_the_dense_matrixs() {
+    for wrong in [0.0, 0.3] {
+        let s = synthetic(16, 0.35, 0.1, wrong, 0);
+        let q = synchronize(&s.graph, &SyncOptions::default()).unwrap().rotations;
+        let dense = dense_certificate(&s.graph, &q);
+        let rows = dense.nrows();
+        let bound = (0..rows)
+            .map(|i| {
+                dense[(i, i)]
+                    - (0..rows).filter(|&j| j != i).map(|j| dense[(i, j)].abs()).sum::<f64>()
+            })
+            .fold(f64::INFINITY, f64::min);
+        let got = certificate::certificate_matrix(&s.graph, &q).gershgorin_lower(&s.graph);
+        assert!((got - bound).abs() < 1e-12 * bound.abs(), "{wrong}: {got} vs {bound}");
+        let lowest = dense_certificate_eigenvalues(&s.graph, &q)[0];
+        assert!(got < lowest, "{wrong}: {got} vs {lowest}");
+    }
 }
 
 #[test]
