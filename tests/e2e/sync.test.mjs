@@ -154,7 +154,7 @@ test("each run is solved in a worker while the flow runs, the sweep too; without
   // What a run takes as its solutions, hostile: each refused by name, the run still working.
   const { page, context } = await open("sync.html?n=20&graph=ring&noise=1&wrong=0&seed=1", { reducedMotion: "reduce" });
   const refusals = await page.evaluate(async () => {
-    const { SyncDemo } = await import("./pkg/sync_demo.js");
+    const { SyncDemo, SyncFile } = await import("./pkg/sync_demo.js");
     const run = SyncDemo.unsolved({ count: 20, graph: "ring" });
     const good = SyncDemo.solve({ count: 20, graph: "ring" });
     const trap = new Proxy([], { get() { throw new Error("trap"); } });
@@ -164,13 +164,22 @@ test("each run is solved in a worker while the flow runs, the sweep too; without
     for (let k = 0; k < 700; k++) {
       try { run.takeSolutions(bad[k % bad.length]); arguments_.push("taken"); } catch (error) { arguments_.push(error instanceof Error ? error.argument : "not an Error"); }
     }
+    // A user's pose graph from its numbers likewise (a ring of 20: SyncFile.solve's numbers).
+    const ring = Array.from({ length: 20 }, (_, i) => `EDGE_SE3:QUAT ${i} ${(i + 1) % 20} 0 0 0 0 0 0.0523359562 0.9986295348 ${"1 0 0 0 0 0 1 0 0 0 0 1 0 0 0 1 0 0 1 0 1"}`).join("\n");
+    const fileGood = SyncFile.solve(ring);
+    for (let k = 0; k < 70; k++) {
+      try { SyncFile.solved(ring, bad[k % bad.length]).free(); arguments_.push("taken"); } catch (error) { arguments_.push(error instanceof Error ? error.argument : "not an Error"); }
+    }
+    const file = SyncFile.solved(ring, fileGood);
+    const fileSolved = file.summary.certified && file.summary.count === 20;
+    file.free();
     run.takeSolutions(good);
     run.advance(0.5);
     const s = run.summary;
     run.free();
-    return { arguments: [...new Set(arguments_)], solved: s.solved, certified: s.certified, moved: s.time > 0 };
+    return { arguments: [...new Set(arguments_)], solved: s.solved, certified: s.certified, moved: s.time > 0, fileSolved };
   });
-  assert.deepEqual(refusals, { arguments: ["solutions"], solved: true, certified: true, moved: true });
+  assert.deepEqual(refusals, { arguments: ["solutions"], solved: true, certified: true, moved: true, fileSolved: true });
   await context.close();
 });
 
@@ -180,8 +189,19 @@ const SQUARE = [[0, 1], [1, 2], [2, 3], [3, 0]]
   .map(([i, j]) => `EDGE_SE3:QUAT ${i} ${j} 1 0 0 0 0 ${Math.SQRT1_2} ${Math.SQRT1_2} ${"1 0 0 0 0 0 1 0 0 0 0 1 0 0 0 1 0 0 1 0 1"}`)
   .join("\n");
 
-test("a user's own pose graph, opened or dropped, is synchronised with its certificate and residuals", async () => {
-  const { page, context, problems } = await open("sync.html", { reducedMotion: "reduce" });
+test("a user's own pose graph, opened or dropped, is synchronised in the page's worker, with its certificate and residuals", async () => {
+  const { page, context, problems } = await open("sync.html", {
+    reducedMotion: "reduce",
+    // The calls the page sends its worker (runtime/offload.js), by name.
+    init: () => {
+      window.__sent = [];
+      const post = Worker.prototype.postMessage;
+      Worker.prototype.postMessage = function (message, ...rest) {
+        window.__sent.push(`${message?.target}.${message?.call}`);
+        return post.call(this, message, ...rest);
+      };
+    },
+  });
   assert.equal(await page.isHidden("#file-figure"), true, "no empty figure before a file");
   await page.setInputFiles("#file-input", { name: "square.g2o", mimeType: "text/plain", buffer: Buffer.from(SQUARE) });
   await page.waitForFunction(() => document.querySelector("#file-status").textContent.startsWith("square.g2o: 4 nodes"));
@@ -190,6 +210,7 @@ test("a user's own pose graph, opened or dropped, is synchronised with its certi
   assert.ok(Math.abs(Number(rows["Chordal cost f"])) < 1e-20, JSON.stringify(rows));
   assert.match(rows.Certificate, /^certified/);
   assert.ok((await canvasStats(page, "#sync-file")).drawn > 3000);
+  assert.ok(await page.evaluate(() => window.__sent.includes("SyncFile.solve")), "solved in the worker");
   // Dropped: a bad line is refused with its number, and the graph on show stays.
   await page.evaluate(() => {
     const data = new DataTransfer();

@@ -127,29 +127,34 @@ function runSweep(/** @type {Host} */ host) {
   sweep.run(SHARES, (share, k) => offload.call("SyncDemo", "sweepError", [{ count, graph, noise, seed }, share, METHODS[k]]).then((error) => [error]), METHODS.length);
 }
 
-/** Opening or dropping a pose graph: read, synchronised a task later (the status shows first). */
+/** Opening or dropping a pose graph: synchronised in the page's worker (a large graph takes
+ *  seconds), then read on the page with its solutions. A file opened while one is being
+ *  synchronised supersedes it. */
 function wireFile(/** @type {Host} */ host) {
   const input = $("#file-input", HTMLInputElement);
   const zone = $("#file-section", HTMLElement);
   const status = $("#file-status", HTMLOutputElement);
+  let opened = 0;
   const open = async (/** @type {File | undefined} */ file) => {
     if (!file) return;
+    const mine = ++opened;
     status.textContent = `Reading ${file.name}…`;
     const text = await file.text();
+    if (mine !== opened) return;
     status.textContent = `Synchronising ${file.name}…`;
-    setTimeout(() => {
-      let read = null;
-      try {
-        read = new SyncFile(text);
-      } catch (error) {
-        status.textContent = `${file.name}: ${error instanceof Error ? error.message : String(error)}`;
-        return;
-      }
-      own.file?.free();
-      own.file = read;
-      own.name = file.name;
-      showFile(host);
-    });
+    let read = null;
+    try {
+      const solutions = await offload.call("SyncFile", "solve", [text], "file");
+      if (!solutions || mine !== opened) return;
+      read = SyncFile.solved(text, solutions);
+    } catch (error) {
+      if (mine === opened) status.textContent = `${file.name}: ${error instanceof Error ? error.message : String(error)}`;
+      return;
+    }
+    own.file?.free();
+    own.file = read;
+    own.name = file.name;
+    showFile(host);
   };
   input.addEventListener("change", () => open(input.files?.[0]));
   zone.addEventListener("dragover", (event) => {

@@ -2,11 +2,14 @@
 //! [`kli::sync::read_g2o`]): synchronised both ways, summed up and drawn as the two solutions'
 //! residuals side by side, robust's flagged edges stacked.
 
+use kli::KliError;
 use kli::sync::{Graph, Method, SyncOptions, Synchronized, read_g2o, synchronize};
 use kli_wasm::error::JsResult;
+use kli_wasm::typed::numbers;
 use wasm_bindgen::prelude::*;
 use web_sys::CanvasRenderingContext2d;
 
+use super::solutions::Solutions;
 use super::view::{Side, draw_sides};
 use crate::figure::{Frame, Record};
 use crate::format::exponential;
@@ -45,12 +48,26 @@ impl SyncFile {
     /// Reads `text` (an Error naming the bad line), then synchronises it (node 0 anchored).
     #[wasm_bindgen(constructor)]
     pub fn new(text: &str) -> JsResult<SyncFile> {
-        let pose = read_g2o(text)?;
-        let graph = Graph::new(Some(pose.count), &pose.edges, &pose.relative, None)?;
-        let solve = |method| synchronize(&graph, &SyncOptions { method, ..SyncOptions::default() });
-        let (chordal, robust) = (solve(Method::Chordal)?, solve(Method::Robust)?);
-        let flagged = robust.outliers.clone().unwrap_or_default();
-        Ok(SyncFile { count: pose.count, chordal, robust, flagged })
+        let graph = read(text)?;
+        Ok(SyncFile::of(graph.count(), solve_both(&graph)?))
+    }
+
+    /// Reads and synchronises `text` both ways: the solutions as numbers for `SyncFile.solved`
+    /// (the long part of `new`: the page runs it in its worker, as it does `SyncDemo.solve`).
+    pub fn solve(text: &str) -> JsResult<Vec<f64>> {
+        Ok(solve_both(&read(text)?)?.pack())
+    }
+
+    /// The pose graph `text` with the solutions `SyncFile.solve(text)` computed; an Error naming
+    /// `solutions` when they are not that call's numbers for a graph of this size.
+    pub fn solved(
+        text: &str,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array")] solutions: &JsValue,
+    ) -> JsResult<SyncFile> {
+        let graph = read(text)?;
+        let (n, m) = (graph.count(), graph.edges().len());
+        let data = numbers("solutions", solutions, Solutions::length(n, m))?;
+        Ok(SyncFile::of(n, Solutions::unpack(&data, n, m)?))
     }
 
     /// `{ count, edges, chordalCost, certified, lambdaMin, chordalMedianResidualDegrees,
@@ -104,11 +121,28 @@ impl SyncFile {
     }
 }
 
+/// The pose graph `text` holds (an Error naming the bad line).
+fn read(text: &str) -> Result<Graph, KliError> {
+    let pose = read_g2o(text)?;
+    Graph::new(Some(pose.count), &pose.edges, &pose.relative, None)
+}
+
+/// `graph` synchronised by the chordal and the robust method, node 0 anchored.
+fn solve_both(graph: &Graph) -> Result<Solutions, KliError> {
+    let solve = |method| synchronize(graph, &SyncOptions { method, ..SyncOptions::default() });
+    Ok(Solutions { chordal: solve(Method::Chordal)?, robust: solve(Method::Robust)? })
+}
+
 fn median_degrees(residuals: &[f64]) -> f64 {
     super::model::median(residuals.to_vec()).to_degrees()
 }
 
 impl SyncFile {
+    fn of(count: usize, Solutions { chordal, robust }: Solutions) -> SyncFile {
+        let flagged = robust.outliers.clone().unwrap_or_default();
+        SyncFile { count, chordal, robust, flagged }
+    }
+
     fn paint(&self, pen: &Pen, size: (f64, f64)) {
         let certificate = match self.chordal.certificate {
             Some(c) if c.certified => {

@@ -1,7 +1,8 @@
-//! Both solutions of the page's problem, and their transfer as one array of numbers: the page
-//! solves in a worker (the solve is the only long work of a run: 230 ms on its first call in
-//! Chromium, some 900 ms on Lighthouse's phone, one task), so that building a run never blocks
-//! the page, and hands the numbers to its run (`SyncDemo.takeSolutions`).
+//! Both solutions of the page's problem (or of a user's pose graph), and their transfer as one
+//! array of numbers: the page solves in a worker (the solve is the only long work of a run: 230
+//! ms on its first call in Chromium, some 900 ms on Lighthouse's phone, one task; a large pose
+//! graph takes seconds), so that building a run never blocks the page, and hands the numbers to
+//! its run (`SyncDemo.takeSolutions`) or to the file's reading (`SyncFile.solved`).
 //!
 //! The array, for `n` nodes and `m` edges: `[n, m]`, then each of the chordal and the robust
 //! solution as `4n` rotations (`w, x, y, z`), the cost, `m` residuals, the iterations, the
