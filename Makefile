@@ -220,10 +220,12 @@ bench: pkg www setup-browser
 	node bench/lighthouse.mjs
 	node bench/targets.mjs
 
-# Mutation testing of the core crate (cargo-mutants; not in `make test`: some 2,200 mutants at
-# about 10 s each here). MUTANTS_ARGS passes its flags: `-f src/average/median.rs` for a file,
-# `--in-diff change.diff` for a change (`git diff main > change.diff`), `--shard 3/8` for a share.
-# Results in mutants.out/; docs/testing.md keeps the survivors and why each cannot change a result.
+# Mutation testing of the core crate (cargo-mutants; not in `make test`: some 2,200 mutants, about
+# six a minute here with `-j 2`, a build and the tests each). MUTANTS_ARGS passes its flags:
+# `-f src/average/median.rs` for a file, `--in-diff change.diff` for a change (`git diff main >
+# change.diff`), `--shard 3/8` for a share, `--iterate` to run again only what was not caught;
+# after `--`, the tests to run (`-- --lib sync::`: a module's own). Results in mutants.out/;
+# docs/testing.md keeps the survivors and why each cannot change a result.
 MUTANTS_ARGS ?=
 mutants: setup-rust
 	@command -v cargo-mutants >/dev/null || cargo install cargo-mutants --version '^27'
