@@ -88,8 +88,12 @@ for (const layout of LAYOUTS) {
         const handover = await tab.evaluate(() => performance.now());
         release();
         await tab.waitForFunction(() => performance.getEntriesByName("kli:interactive").length > 0);
-        // The still views are painted in a task after the first frame.
+        // The still views are painted in a task after the first frame; a view whose run is still
+        // computing it (the synchronisation page's solutions, from its worker) keeps its picture
+        // till then.
         await tab.waitForTimeout(600);
+        await tab.waitForFunction(() => document.querySelectorAll(".first-picture").length === 0, null, { timeout: 20000 })
+          .catch(() => {});
         assert.equal(await tab.locator(".first-picture").count(), 0, "the live canvases took over");
         const shifts = await tab.evaluate((from) => window.__shifts.filter((shift) => shift.at >= from).map((shift) => shift.text), handover);
         const after = await shots(tab, selectors);
