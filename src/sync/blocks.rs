@@ -210,7 +210,7 @@ impl Pattern {
 
     /// Preconditioned conjugate gradients (Saad, "Iterative Methods for Sparse Linear Systems",
     /// Algorithm 9.1) with the inverses of the 3×3 diagonal blocks, to `‖r‖ ≤ tolerance ‖b‖`.
-    fn conjugate_gradients(
+    pub(super) fn conjugate_gradients(
         &self,
         graph: &Graph,
         a: &Blocks,
@@ -280,7 +280,8 @@ impl Pattern {
 }
 
 /// How conjugate gradients ended.
-enum Solved {
+#[derive(Debug)]
+pub(super) enum Solved {
     Yes(Vec<f64>),
     /// A direction of non-positive curvature: the matrix is not positive definite.
     Indefinite,

@@ -684,6 +684,94 @@ fn conjugate_gradients_solve_as_cholesky_does_where_the_factor_fills_in() {
     assert!(!blocks::Pattern::new(&ring, Some(0)).fills());
 }
 
+/// Conjugate gradients on their own (`solve` falls back to Cholesky when they are slow, so its
+/// test cannot tell a wrong step from a slow one): on the expander's shifted Hessian they
+/// converge, well within their 500 steps, to Cholesky's solution, the node left out at 0 whatever
+/// `b` holds there; a matrix that is not positive definite is refused as such, by a diagonal
+/// block (a shift below minus the largest degree) or, where every diagonal block is positive
+/// definite, by a direction of negative curvature: the certificate `S` of the twisted ring
+/// (`λ_min < −0.1`, a dense eigensolver says), which Cholesky refuses too.
+#[test]
+fn conjugate_gradients_converge_on_their_own_and_refuse_an_indefinite_matrix() {
+    let s = synthetic(600, 0.025, 0.1, 0.0, 31);
+    let pattern = blocks::Pattern::new(&s.graph, Some(0));
+    let (_, h) = cost::model(&s.graph, &s.truth, true);
+    let mut random = Random::new(2);
+    let b: Vec<f64> = (0..1800).map(|_| random.gaussian()).collect();
+    let factor = pattern.factor(&s.graph, &h, 1e-3).unwrap();
+    let mut by_cholesky = b[3..].to_vec();
+    factor.solve(&mut by_cholesky);
+    for tolerance in [1e-6, 1e-12] {
+        let blocks::Solved::Yes(x) = pattern.conjugate_gradients(&s.graph, &h, 1e-3, &b, tolerance)
+        else {
+            panic!("not converged to {tolerance}");
+        };
+        assert_eq!(&x[..3], &[0.0; 3]);
+        // The error is within the condition number times the residual asked for; far within it.
+        let scale = by_cholesky.iter().map(|v| v.abs()).fold(0.0, f64::max);
+        let gap = x[3..].iter().zip(&by_cholesky).map(|(a, c)| (a - c).abs()).fold(0.0, f64::max);
+        assert!(gap < 1e3 * tolerance * scale, "{tolerance}: {gap}");
+        // And the residual itself, from the blocks: ‖(H + 1e-3 I) x − b‖ ≤ tolerance ‖b‖ on the
+        // nodes kept.
+        let mut hx = vec![0.0; 1800];
+        h.apply(&s.graph, &x, &mut hx);
+        let residual = (3..1800).map(|k| (hx[k] + 1e-3 * x[k] - b[k]).powi(2)).sum::<f64>().sqrt();
+        let size = b[3..].iter().map(|v| v * v).sum::<f64>().sqrt();
+        assert!(residual <= 1.000001 * tolerance * size, "{tolerance}: {residual} vs {size}");
+    }
+    let largest = s.graph.degrees().into_iter().fold(0.0, f64::max);
+    // The tolerance is relative to ‖b‖: a right side 1e4 times smaller converges as well, not at
+    // once.
+    let small: Vec<f64> = b.iter().map(|v| v * 1e-4).collect();
+    let blocks::Solved::Yes(x) = pattern.conjugate_gradients(&s.graph, &h, 1e-3, &small, 1e-9)
+    else {
+        panic!("not converged on a small right side");
+    };
+    let gap =
+        x[3..].iter().zip(&by_cholesky).map(|(a, c)| (a - 1e-4 * c).abs()).fold(0.0, f64::max);
+    assert!(gap < 1e-10, "{gap}");
+    // A long ring (a path once its anchor is left out: condition number ~ (2n/π)², some 4e6)
+    // needs thousands of steps to 1e-12: slow after its 500.
+    let long = 3000;
+    let edges: Vec<[usize; 2]> = (0..long).map(|i| [i, (i + 1) % long]).collect();
+    let path = Graph::new(None, &edges, &vec![DQuat::IDENTITY; long], None).unwrap();
+    let (_, h_path) = cost::model(&path, &vec![DQuat::IDENTITY; long], true);
+    let ones = vec![1.0; 3 * long];
+    assert!(matches!(
+        blocks::Pattern::new(&path, Some(0)).conjugate_gradients(&path, &h_path, 0.0, &ones, 1e-12),
+        blocks::Solved::Slow
+    ));
+    // A large shift is as positive definite (and its diagonal blocks with it).
+    assert!(matches!(
+        pattern.conjugate_gradients(&s.graph, &h, 10.0 * largest, &b, 1e-9),
+        blocks::Solved::Yes(_)
+    ));
+    assert!(matches!(
+        pattern.conjugate_gradients(&s.graph, &h, -2.0 * largest, &b, 1e-9),
+        blocks::Solved::Indefinite
+    ));
+    // The twisted ring's S: positive definite blocks, an indefinite matrix.
+    let n = 10;
+    let edges: Vec<[usize; 2]> = (0..n).map(|i| [i, (i + 1) % n]).collect();
+    let ring = Graph::new(None, &edges, &vec![DQuat::IDENTITY; n], None).unwrap();
+    let twisted: Vec<DQuat> =
+        (0..n).map(|k| DQuat::from_rotation_z(2.0 * PI * k as f64 / n as f64)).collect();
+    assert!(dense_certificate_eigenvalues(&ring, &twisted)[0] < -0.1);
+    let s_twisted = certificate::certificate_matrix(&ring, &twisted);
+    for d in &s_twisted.diag {
+        let minors =
+            [d.col(0)[0], d.col(0)[0] * d.col(1)[1] - d.col(1)[0] * d.col(0)[1], d.determinant()];
+        assert!(minors.iter().all(|&m| m > 0.0), "{d:?}");
+    }
+    let full = blocks::Pattern::new(&ring, None);
+    let ones = vec![1.0; 3 * n];
+    assert!(matches!(
+        full.conjugate_gradients(&ring, &s_twisted, 0.0, &ones, 1e-12),
+        blocks::Solved::Indefinite
+    ));
+    assert!(full.factor(&ring, &s_twisted, 0.0).is_none());
+}
+
 #[test]
 fn the_flow_takes_exactly_a_million_steps_a_call() {
     let mut flow = SyncFlow::random(triangle(), 3);
