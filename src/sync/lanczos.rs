@@ -127,3 +127,141 @@ fn ritz(
     }
     (values, vectors, converged)
 }
+
+#[cfg(test)]
+mod tests {
+    use faer::{Mat, Side};
+
+    use super::largest;
+    use crate::swarm::Random;
+
+    /// A symmetric 60×60 matrix `B Bᵀ / 60 + diag(k / 60)`, and its eigenpairs by faer's dense
+    /// solver, largest first.
+    fn matrix() -> (Mat<f64>, Vec<f64>, Vec<Vec<f64>>) {
+        let n = 60;
+        let mut random = Random::new(7);
+        let b = Mat::<f64>::from_fn(n, n, |_, _| random.gaussian());
+        let a = Mat::<f64>::from_fn(n, n, |r, c| {
+            (0..n).map(|k| b[(r, k)] * b[(c, k)]).sum::<f64>() / n as f64
+                + if r == c { r as f64 / n as f64 } else { 0.0 }
+        });
+        let eigen = a.self_adjoint_eigen(Side::Lower).unwrap();
+        let (s, u) = (eigen.S().column_vector(), eigen.U());
+        let values = (0..n).rev().map(|k| s[k]).collect();
+        let vectors = (0..n).rev().map(|k| (0..n).map(|r| u[(r, k)]).collect()).collect();
+        (a, values, vectors)
+    }
+
+    fn times(a: &Mat<f64>, x: &[f64], y: &mut [f64]) {
+        for (r, out) in y.iter_mut().enumerate() {
+            *out = (0..x.len()).map(|c| a[(r, c)] * x[c]).sum();
+        }
+    }
+
+    /// The three largest eigenpairs, each to its residual `‖A v − θ v‖ ≤ 1e-10 |θ|`, against the
+    /// dense solver; a step is one product with `A`, and the count says so.
+    #[test]
+    fn the_largest_eigenpairs_agree_with_a_dense_solver() {
+        let (a, values, vectors) = matrix();
+        let mut products = 0;
+        let ritz = largest(
+            60,
+            |x, y| {
+                products += 1;
+                times(&a, x, y)
+            },
+            &[],
+            3,
+            60,
+            1e-10,
+        );
+        assert_eq!(ritz.steps, products);
+        assert!(ritz.steps < 60, "{}", ritz.steps);
+        assert_eq!(ritz.values.len(), 3);
+        let mut av = vec![0.0; 60];
+        for k in 0..3 {
+            assert!((ritz.values[k] - values[k]).abs() < 1e-9 * values[k], "{k}");
+            let v = &ritz.vectors[k];
+            times(&a, v, &mut av);
+            let residual =
+                av.iter().zip(v).map(|(p, q)| (p - ritz.values[k] * q).powi(2)).sum::<f64>();
+            assert!(residual.sqrt() <= 1e-9 * values[k], "{k}: {}", residual.sqrt());
+            // The eigenvector itself (up to its sign), of unit length.
+            let along: f64 = v.iter().zip(&vectors[k]).map(|(p, q)| p * q).sum();
+            assert!((along.abs() - 1.0).abs() < 1e-8, "{k}: {along}");
+        }
+    }
+
+    /// Stopped by its step bound, it returns its best estimates all the same, after exactly that
+    /// many products; on the complement of the top eigenvector, the largest is the second.
+    #[test]
+    fn the_step_bound_and_the_deflation() {
+        let (a, values, vectors) = matrix();
+        let mut products = 0;
+        let short = largest(
+            60,
+            |x, y| {
+                products += 1;
+                times(&a, x, y)
+            },
+            &[],
+            2,
+            5,
+            1e-14,
+        );
+        assert_eq!((short.steps, products), (5, 5));
+        assert_eq!(short.values.len(), 2);
+        // Ritz values from below: a five-step estimate is no larger than the eigenvalue.
+        assert!(short.values[0] <= values[0] * (1.0 + 1e-12) && short.values[0] > 0.5 * values[0]);
+        let deflated = largest(60, |x, y| times(&a, x, y), &vectors[..1], 1, 60, 1e-10);
+        assert!((deflated.values[0] - values[1]).abs() < 1e-9 * values[1]);
+    }
+
+    /// `s (I + 2 u uᵀ)` has two distinct eigenvalues: its Krylov space from any start has two
+    /// dimensions, so Lanczos ends after two steps with both, exactly, at any scale `s` (what is
+    /// left after them is rounding, relative to the operator's size).
+    #[test]
+    fn an_exhausted_krylov_space_ends_the_run() {
+        let n = 40;
+        let u: Vec<f64> = (0..n).map(|k| ((k + 1) as f64).sqrt()).collect();
+        let length = u.iter().map(|x| x * x).sum::<f64>().sqrt();
+        let u: Vec<f64> = u.iter().map(|x| x / length).collect();
+        for scale in [1.0, 1e6, 1e-6] {
+            let apply = |x: &[f64], y: &mut [f64]| {
+                let c: f64 = x.iter().zip(&u).map(|(p, q)| p * q).sum();
+                y.iter_mut()
+                    .zip(x)
+                    .zip(&u)
+                    .for_each(|((out, xi), ui)| *out = scale * (xi + 2.0 * c * ui));
+            };
+            let ritz = largest(n, apply, &[], 2, 40, 1e-12);
+            assert_eq!(ritz.steps, 2, "{scale}");
+            let [first, second] = [ritz.values[0] / scale, ritz.values[1] / scale];
+            assert!(
+                (first - 3.0).abs() < 1e-12 && (second - 1.0).abs() < 1e-12,
+                "{scale}: {first}, {second}"
+            );
+        }
+    }
+
+    /// With no room left beside the deflation space there is nothing to find: no product, no
+    /// value.
+    #[test]
+    fn no_room_no_product() {
+        let axes: Vec<Vec<f64>> =
+            (0..3).map(|k| (0..3).map(|r| if r == k { 1.0 } else { 0.0 }).collect()).collect();
+        let mut products = 0;
+        let ritz = largest(
+            3,
+            |x, y| {
+                products += 1;
+                y.copy_from_slice(x)
+            },
+            &axes,
+            1,
+            10,
+            1e-10,
+        );
+        assert_eq!((ritz.steps, products, ritz.values.len()), (0, 0, 0));
+    }
+}
