@@ -850,3 +850,58 @@ fn each_edges_term_is_8_sin_squared_of_half_its_residual_up_to_a_half_turn() {
         assert!((r.to_degrees() - degrees).abs() < 1e-12, "{residuals:?}");
     }
 }
+
+/// Newton's method as the solver calls it, on its own: its step bound is exact (0 steps leave the
+/// start as it is, 1 takes one); at an exact optimum (consistent measurements, the truth) it takes
+/// none; from the spectral start it converges in a handful of steps (quadratic convergence: the
+/// module says so); and from random starts, where the Hessian is indefinite and the damping
+/// works, it reaches the same certified optimum as from the spectral start.
+#[test]
+fn newton_stops_where_it_should_and_converges_from_anywhere() {
+    let s = synthetic(30, 0.3, 0.1, 0.0, 5);
+    let reduced = blocks::Pattern::new(&s.graph, Some(0));
+    let full = blocks::Pattern::new(&s.graph, None);
+    let mut random = Random::new(9);
+    let start: Vec<DQuat> = (0..30).map(|_| random.unit_quaternion()).collect();
+    let none = newton::refine(&s.graph, &reduced, start.clone(), 0, newton::Accuracy::Full);
+    assert_eq!((none.iterations, &none.q), (0, &start));
+    let one = newton::refine(&s.graph, &reduced, start.clone(), 1, newton::Accuracy::Full);
+    assert_eq!(one.iterations, 1);
+    assert!(cost::cost(&s.graph, &one.q) < cost::cost(&s.graph, &start));
+    // Consistent measurements at the truth: the gradient is 0 to rounding; no step.
+    let consistent = synthetic(30, 0.3, 0.0, 0.0, 6);
+    let at_truth = newton::refine(
+        &consistent.graph,
+        &blocks::Pattern::new(&consistent.graph, Some(0)),
+        consistent.truth.clone(),
+        newton::MAX_ITERATIONS,
+        newton::Accuracy::Full,
+    );
+    assert_eq!(at_truth.iterations, 0);
+    // From the spectral start: a handful of steps to the certified optimum.
+    let (spectral_start, _) = spectral::spectral(&s.graph, &full);
+    let best = newton::refine(
+        &s.graph,
+        &reduced,
+        spectral_start,
+        newton::MAX_ITERATIONS,
+        newton::Accuracy::Full,
+    );
+    assert!(best.iterations <= 8, "{}", best.iterations);
+    let optimum = cost::cost(&s.graph, &best.q);
+    assert!(certificate::certify(&s.graph, &full, &best.q).certified);
+    for seed in 0..4 {
+        let mut random = Random::new(100 + seed);
+        let start: Vec<DQuat> = (0..30).map(|_| random.unit_quaternion()).collect();
+        let refined = newton::refine(
+            &s.graph,
+            &reduced,
+            start,
+            newton::MAX_ITERATIONS,
+            newton::Accuracy::Full,
+        );
+        assert!(refined.iterations < newton::MAX_ITERATIONS, "{seed}");
+        let f = cost::cost(&s.graph, &refined.q);
+        assert!((f - optimum).abs() < 1e-9 * optimum, "{seed}: {f} vs {optimum}");
+    }
+}
