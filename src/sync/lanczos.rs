@@ -192,6 +192,34 @@ mod tests {
         }
     }
 
+    /// Its tolerance is relative: the operator scaled by 1e4 or 1e-4 takes the same steps to the
+    /// scaled values (the Krylov spaces are the same).
+    #[test]
+    fn the_tolerance_is_relative_to_the_values() {
+        let (a, _, _) = matrix();
+        let run = |scale: f64| {
+            largest(
+                60,
+                |x, y| {
+                    times(&a, x, y);
+                    y.iter_mut().for_each(|v| *v *= scale);
+                },
+                &[],
+                3,
+                60,
+                1e-10,
+            )
+        };
+        let plain = run(1.0);
+        for scale in [1e4, 1e-4] {
+            let scaled = run(scale);
+            assert_eq!(scaled.steps, plain.steps, "{scale}");
+            for (p, q) in plain.values.iter().zip(&scaled.values) {
+                assert!((q / scale - p).abs() < 1e-10 * p, "{scale}: {p} vs {q}");
+            }
+        }
+    }
+
     /// Stopped by its step bound, it returns its best estimates all the same, after exactly that
     /// many products; on the complement of the top eigenvector, the largest is the second.
     #[test]

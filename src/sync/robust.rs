@@ -112,3 +112,20 @@ impl Rounds {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{median, moved};
+
+    #[test]
+    fn median_and_largest_relative_change() {
+        assert_eq!(median(&[3.0, 1.0, 2.0]), 2.0);
+        assert_eq!(median(&[4.0, 1.0, 3.0, 2.0]), 2.5);
+        assert_eq!(median(&[7.0]), 7.0);
+        assert_eq!(median(&[2.0, 10.0]), 6.0);
+        // |1 − 1|/1, |2 − 3|/3, |4 − 2|/4: the largest is 1/2, relative to the larger of each pair.
+        assert_eq!(moved(&[1.0, 2.0, 4.0], &[1.0, 3.0, 2.0]), 0.5);
+        assert_eq!(moved(&[5.0, 5.0], &[5.0, 5.0]), 0.0);
+        assert!((moved(&[0.2], &[0.1]) - 0.5).abs() < 1e-15);
+    }
+}

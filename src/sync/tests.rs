@@ -905,3 +905,80 @@ fn newton_stops_where_it_should_and_converges_from_anywhere() {
         assert!((f - optimum).abs() < 1e-9 * optimum, "{seed}: {f} vs {optimum}");
     }
 }
+
+/// The nearest rotation in the Frobenius norm, against the textbook one from a dense SVD
+/// (`U diag(1, 1, det(U Vᵀ)) Vᵀ`, faer's): on random matrices, on a rotation itself, and on
+/// matrices whose SVD has a negative determinant (the reflection the SVD route must undo).
+#[test]
+fn the_nearest_rotation_is_the_svds() {
+    let mut random = Random::new(21);
+    for k in 0..40 {
+        let a = DMat3::from_cols_array(&std::array::from_fn(|_| random.gaussian()));
+        let m = Mat::<f64>::from_fn(3, 3, |r, c| a.col(c)[r]);
+        let svd = m.svd().unwrap();
+        let (u, v) = (svd.U(), svd.V());
+        let uvt = u * v.transpose();
+        let det =
+            DMat3::from_cols_array(&std::array::from_fn(|i| uvt[(i % 3, i / 3)])).determinant();
+        let mut d = Mat::<f64>::identity(3, 3);
+        d[(2, 2)] = det.signum();
+        let best = u * d * v.transpose();
+        let got = DMat3::from_quat(spectral::nearest_rotation(a));
+        for r in 0..3 {
+            for c in 0..3 {
+                assert!((got.col(c)[r] - best[(r, c)]).abs() < 1e-9, "{k}: {got:?} vs {best:?}");
+            }
+        }
+        assert!(spectral::nearest_rotation(a).w >= 0.0);
+    }
+    let q = DQuat::from_axis_angle(DVec3::new(1.0, -2.0, 0.5).normalize(), 2.5);
+    let back = spectral::nearest_rotation(DMat3::from_quat(q) * 3.0);
+    assert!(back.dot(q).abs() > 1.0 - 1e-14, "{back:?} vs {q:?}");
+}
+
+/// The connection Laplacian from MATH.md's definition, with uneven weights: `d_i I₃` on the
+/// diagonal (the weighted degree) and `−w_ij R_ij` off it.
+#[test]
+fn the_connection_laplacian_is_maths() {
+    let s = synthetic(10, 0.4, 0.2, 0.0, 4);
+    let weights: Vec<f64> =
+        (0..s.graph.edges().len()).map(|k| 0.5 + 0.25 * (k % 5) as f64).collect();
+    let graph = Graph::new(Some(10), s.graph.edges(), s.graph.relative(), Some(&weights)).unwrap();
+    let l = spectral::laplacian(&graph);
+    let mut degree = [0.0; 10];
+    for (&[i, j], &w) in graph.edges().iter().zip(&weights) {
+        degree[i] += w;
+        degree[j] += w;
+    }
+    for (i, block) in l.diag.iter().enumerate() {
+        assert!((*block - DMat3::IDENTITY * degree[i]).abs_diff_eq(DMat3::ZERO, 1e-12), "{i}");
+    }
+    for (k, block) in l.off.iter().enumerate() {
+        let want = DMat3::from_quat(graph.relative()[k]) * -weights[k];
+        assert!(block.abs_diff_eq(want, 1e-12), "{k}");
+    }
+}
+
+/// The robust method with the caller's Geman–McClure scale `σ`: an edge is flagged exactly when
+/// its final residual exceeds `3σ`; each weight is MATH.md's `w (σ²/(σ² + θ²))²` at the settled
+/// residuals (the last round's, which the final step moved by little); the rounds take at least
+/// one step and at most their bounds' (15 L1 and 30 Geman–McClure rounds of one step each).
+#[test]
+fn robust_with_the_callers_scale_flags_beyond_three_sigma() {
+    let s = synthetic(80, 0.12, 3f64.to_radians(), 0.2, 23);
+    let sigma = 4f64.to_radians();
+    let options = SyncOptions { method: Method::Robust, scale: Some(sigma), ..Default::default() };
+    let robust = synchronize(&s.graph, &options).unwrap();
+    assert_eq!(robust.scale, Some(sigma));
+    let outliers = robust.outliers.unwrap();
+    for (k, (&t, &o)) in robust.residuals.iter().zip(&outliers).enumerate() {
+        assert_eq!(o, t > 3.0 * sigma, "{k}: {}°", t.to_degrees());
+    }
+    assert!(outliers.iter().any(|&o| o) && !outliers.iter().all(|&o| o));
+    let weights = robust.weights.unwrap();
+    for (k, (&w, &t)) in weights.iter().zip(&robust.residuals).enumerate() {
+        let r = sigma * sigma / (sigma * sigma + t * t);
+        assert!((w - r * r).abs() < 1e-3 * r * r + 1e-9, "{k}: {w} vs {}", r * r);
+    }
+    assert!(robust.iterations >= 1 && robust.iterations <= 45, "{}", robust.iterations);
+}
