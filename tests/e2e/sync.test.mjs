@@ -170,6 +170,15 @@ test("each run is solved in a worker while the flow runs, the sweep too; without
     for (let k = 0; k < 70; k++) {
       try { SyncFile.solved(ring, bad[k % bad.length]).free(); arguments_.push("taken"); } catch (error) { arguments_.push(error instanceof Error ? error.argument : "not an Error"); }
     }
+    // Its text must be a string: anything else refused naming text (a number or an object
+    // trapped in the glue's string copy before).
+    const texts = new Set();
+    for (let k = 0; k < 400; k++) {
+      const text = [null, 42, {}, trap][k % 4];
+      for (const call of [() => SyncFile.solve(text), () => SyncFile.solved(text, fileGood), () => new SyncFile(text)]) {
+        try { call(); texts.add("taken"); } catch (error) { texts.add(error instanceof Error ? error.argument : "not an Error"); }
+      }
+    }
     const file = SyncFile.solved(ring, fileGood);
     const fileSolved = file.summary.certified && file.summary.count === 20;
     file.free();
@@ -177,9 +186,9 @@ test("each run is solved in a worker while the flow runs, the sweep too; without
     run.advance(0.5);
     const s = run.summary;
     run.free();
-    return { arguments: [...new Set(arguments_)], solved: s.solved, certified: s.certified, moved: s.time > 0, fileSolved };
+    return { arguments: [...new Set(arguments_)], solved: s.solved, certified: s.certified, moved: s.time > 0, fileSolved, texts: [...texts] };
   });
-  assert.deepEqual(refusals, { arguments: ["solutions"], solved: true, certified: true, moved: true, fileSolved: true });
+  assert.deepEqual(refusals, { arguments: ["solutions"], solved: true, certified: true, moved: true, fileSolved: true, texts: ["text"] });
   await context.close();
 });
 

@@ -6,6 +6,7 @@ use kli::KliError;
 use kli::sync::{Graph, Method, SyncOptions, Synchronized, read_g2o, synchronize};
 use kli_wasm::error::JsResult;
 use kli_wasm::typed::numbers;
+use kli_wasm::value::describe;
 use wasm_bindgen::prelude::*;
 use web_sys::CanvasRenderingContext2d;
 
@@ -47,21 +48,25 @@ export interface SyncFileSummary {
 impl SyncFile {
     /// Reads `text` (an Error naming the bad line), then synchronises it (node 0 anchored).
     #[wasm_bindgen(constructor)]
-    pub fn new(text: &str) -> JsResult<SyncFile> {
+    pub fn new(
+        #[wasm_bindgen(unchecked_param_type = "string")] text: &JsValue,
+    ) -> JsResult<SyncFile> {
         let graph = read(text)?;
         Ok(SyncFile::of(graph.count(), solve_both(&graph)?))
     }
 
     /// Reads and synchronises `text` both ways: the solutions as numbers for `SyncFile.solved`
     /// (the long part of `new`: the page runs it in its worker, as it does `SyncDemo.solve`).
-    pub fn solve(text: &str) -> JsResult<Vec<f64>> {
+    pub fn solve(
+        #[wasm_bindgen(unchecked_param_type = "string")] text: &JsValue,
+    ) -> JsResult<Vec<f64>> {
         Ok(solve_both(&read(text)?)?.pack())
     }
 
     /// The pose graph `text` with the solutions `SyncFile.solve(text)` computed; an Error naming
     /// `solutions` when they are not that call's numbers for a graph of this size.
     pub fn solved(
-        text: &str,
+        #[wasm_bindgen(unchecked_param_type = "string")] text: &JsValue,
         #[wasm_bindgen(unchecked_param_type = "Float64Array")] solutions: &JsValue,
     ) -> JsResult<SyncFile> {
         let graph = read(text)?;
@@ -121,9 +126,16 @@ impl SyncFile {
     }
 }
 
-/// The pose graph `text` holds (an Error naming the bad line).
-fn read(text: &str) -> Result<Graph, KliError> {
-    let pose = read_g2o(text)?;
+/// The pose graph `text` holds (an Error naming the bad line, or `text` when it is not a
+/// string: read as JavaScript's value, so that no other value reaches the glue's string copy).
+fn read(text: &JsValue) -> Result<Graph, KliError> {
+    let Some(text) = text.as_string() else {
+        return Err(KliError::invalid(
+            "text",
+            format!("must be a string (got {})", describe(text)),
+        ));
+    };
+    let pose = read_g2o(&text)?;
     Graph::new(Some(pose.count), &pose.edges, &pose.relative, None)
 }
 
