@@ -129,7 +129,8 @@ impl KliSpline {
         &self.samples
     }
 
-    /// The relative residual reached, `max_j |g_j| / max_j |(Lx)_j|`.
+    /// The relative residual reached, `max_j |g_j| / max_j |(Lx)_j|` (0 for a chain at rest,
+    /// such as equal keys, where `Lx` is within rounding of 0).
     pub fn residual(&self) -> f64 {
         self.residual
     }
@@ -195,6 +196,8 @@ impl KliSpline {
 struct Chain {
     bands: [Vec<f64>; 3],
     pinned: Vec<bool>,
+    /// `max_a Σ_b |L_ab|`, the largest `|(Lx)_a|` could be for unit samples.
+    norm: f64,
 }
 
 /// The unit quaternions `i`, `j`, `k`.
@@ -210,6 +213,12 @@ fn pure(v: DVec3) -> DQuat {
 
 fn vector(q: DQuat) -> DVec3 {
     DVec3::new(q.x, q.y, q.z)
+}
+
+/// `L[a][b]` from its bands.
+fn bands_at(bands: &[Vec<f64>; 3], a: usize, b: usize) -> f64 {
+    let (a, b) = (a.min(b), a.max(b));
+    if b - a > 2 { 0.0 } else { bands[b - a][a] }
 }
 
 impl Chain {
@@ -233,12 +242,16 @@ impl Chain {
                 }
             }
         }
-        Self { bands, pinned }
+        let n = pinned.len();
+        let row = |a: usize| {
+            (a.saturating_sub(2)..=(a + 2).min(n - 1)).map(|b| bands_at(&bands, a, b).abs()).sum()
+        };
+        let norm = (0..n).map(row).fold(0.0, f64::max);
+        Self { bands, pinned, norm }
     }
 
     fn l(&self, a: usize, b: usize) -> f64 {
-        let (a, b) = (a.min(b), a.max(b));
-        if b - a > 2 { 0.0 } else { self.bands[b - a][a] }
+        bands_at(&self.bands, a, b)
     }
 
     fn apply(&self, x: &[DQuat]) -> Vec<DQuat> {
@@ -255,12 +268,14 @@ impl Chain {
         0.5 * x.iter().zip(self.apply(x)).map(|(a, la)| a.dot(la)).sum::<f64>()
     }
 
-    /// The gradients `g_j` at the free samples, and the relative residual.
+    /// The gradients `g_j` at the free samples, and the relative residual (0 for a chain at
+    /// rest: where every `|(Lx)_j|` is within rounding of `L`'s own size, as for equal keys, the
+    /// ratio would be rounding over rounding).
     fn gradient(&self, x: &[DQuat], lx: &[DQuat], free: &[usize]) -> (Vec<DVec3>, f64) {
         let g: Vec<DVec3> = free.iter().map(|&a| vector(x[a].conjugate() * lx[a])).collect();
         let scale = free.iter().map(|&a| lx[a].length()).fold(0.0, f64::max);
         let largest = g.iter().map(|v| v.length()).fold(0.0, f64::max);
-        (g, if scale > 0.0 { largest / scale } else { 0.0 })
+        (g, if scale > 8.0 * f64::EPSILON * self.norm { largest / scale } else { 0.0 })
     }
 
     /// Runs Newton to [`TOLERANCE`] (or until rounding stops progress); returns the iterations

@@ -357,3 +357,64 @@ fn the_chain_is_stationary_for_the_energy_on_uneven_times() {
     assert!(scale > 0.1, "the terms' derivatives: {scale}");
     assert!(worst < 1e-7 * scale, "not stationary: a derivative {worst:e} against {scale:e}");
 }
+
+/// What the chain reports of itself: its span (the first and last key times), the relative
+/// residual its Newton solve reached (`max_j |g_j| / max_j |(Lx)_j|`, measured here afresh from
+/// MATH.md's energy: `(Lx)_j = ∂E/∂x_j` in ℝ⁴ by central differences, exact to rounding for a
+/// quadratic, and `g_j` its part tangent to S³ at `x_j`), and its iterations (from piecewise SLERP,
+/// a residual of order 0.1, quadratic convergence needs more than one step to reach 1e-12).
+/// Equal keys make a constant chain, for which `Lx = 0`: no step, a residual of exactly 0.
+#[test]
+fn the_chain_reports_its_span_residual_and_iterations() {
+    let quaternions = random_keys(3, 4, 1.5);
+    let times = [2.0, 3.5, 4.0, 7.0];
+    let smoothness = 0.6;
+    let options = ChainOptions { smoothness, samples_per_segment: 6 };
+    let curve = KliSpline::new(keys(&quaternions, Some(&times)), &options).unwrap();
+    assert_eq!((curve.start_time(), curve.end_time()), (2.0, 7.0));
+    let (x, t) = (curve.samples().quaternions().to_vec(), curve.samples().times().to_vec());
+    let energy = |y: &[DQuat]| {
+        let (a, b) = chain_energy(y, &t, 1.0 - smoothness, smoothness);
+        a + b
+    };
+    let (mut largest_g, mut largest_lx): (f64, f64) = (0.0, 0.0);
+    let s = 1e-3;
+    for j in 0..x.len() {
+        let mut lx = [0.0; 4];
+        for (c, slot) in lx.iter_mut().enumerate() {
+            let moved = |s: f64| {
+                let mut y = x.clone();
+                let mut v = y[j].to_array();
+                v[c] += s;
+                y[j] = DQuat::from_array(v);
+                energy(&y)
+            };
+            *slot = (moved(s) - moved(-s)) / (2.0 * s);
+        }
+        let lx = DQuat::from_array(lx);
+        largest_lx = largest_lx.max(lx.length());
+        if j % 6 != 0 {
+            let g = x[j].conjugate() * lx;
+            largest_g = largest_g.max(DVec3::new(g.x, g.y, g.z).length());
+        }
+    }
+    assert!(largest_g < 1e-9 * largest_lx, "{largest_g:e} against {largest_lx:e}");
+    assert!(
+        curve.residual() > 0.0 && curve.residual() <= chain::TOLERANCE,
+        "{:e}",
+        curve.residual()
+    );
+    assert!((2..=12).contains(&curve.iterations()), "{}", curve.iterations());
+
+    let a = from_wxyz([0.6, 0.0, 0.8, 0.0]);
+    for (times, per) in [([0.0, 1.0, 2.0], 32), ([0.0, 0.3, 1.7], 7), ([1e3, 1e3 + 0.1, 1e4], 255)]
+    {
+        for smoothness in [0.5, 1.0] {
+            let options = ChainOptions { smoothness, samples_per_segment: per };
+            let constant = KliSpline::new(keys(&[a, a, a], Some(&times)), &options).unwrap();
+            assert_eq!((constant.iterations(), constant.residual()), (0, 0.0), "{times:?}");
+            let x = constant.samples().quaternions();
+            assert!(x.iter().all(|&x| (x - a).length() < 1e-15), "{times:?}");
+        }
+    }
+}

@@ -199,7 +199,8 @@ impl RotationSpline {
         self.curve().end_time()
     }
 
-    /// For kliSpline: the relative residual `max_j |g_j| / max_j |(Lx)_j|` its solve reached.
+    /// For kliSpline: the relative residual `max_j |g_j| / max_j |(Lx)_j|` its solve reached (0
+    /// for a chain at rest, such as equal keys).
     #[wasm_bindgen(getter)]
     pub fn residual(&self) -> Option<f64> {
         if let Kind::Chain(c) = &self.kind { Some(c.residual()) } else { None }
