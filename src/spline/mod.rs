@@ -57,11 +57,12 @@ pub trait Curve {
         if b <= a {
             return DVec3::ZERO;
         }
-        let (qa, qb) = (self.at(a), self.at(b));
-        // The same sign on both sides (they are 2e-6 of the span apart).
-        let qb = if qa.dot(qb) < 0.0 { -qb } else { qb };
-        let derivative = (qb - qa) / (b - a);
-        let w = derivative * self.at(t).conjugate() * 2.0;
+        let (qa, qb, q) = (self.at(a), self.at(b), self.at(t));
+        // The same sign on both sides and at t (they are 2e-6 of the span apart): a curve may
+        // answer with either sign of each rotation.
+        let same = |x: DQuat| if qa.dot(x) < 0.0 { -x } else { x };
+        let derivative = (same(qb) - qa) / (b - a);
+        let w = derivative * same(q).conjugate() * 2.0;
         DVec3::new(w.x, w.y, w.z)
     }
 }

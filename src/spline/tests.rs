@@ -418,3 +418,65 @@ fn the_chain_reports_its_span_residual_and_iterations() {
         }
     }
 }
+
+/// A rotation at the constant world-frame rate `ω` from `q0` at `start`, `q(t) = exp(ω(t −
+/// start)/2) q0`, whose `at` answers with the sign flipped on alternate stretches of 1.3e-6 of
+/// its span (both signs are the same rotation), to test `Curve`'s provided methods on their own.
+struct Flipping {
+    q0: DQuat,
+    omega: DVec3,
+    start: f64,
+    end: f64,
+}
+
+impl Flipping {
+    fn flipped(&self, t: f64) -> bool {
+        ((t - self.start) / (1.3e-6 * (self.end - self.start))).floor() as i64 % 2 != 0
+    }
+}
+
+impl Curve for Flipping {
+    fn at(&self, t: f64) -> DQuat {
+        let t = t.clamp(self.start, self.end);
+        let q = exp(self.omega * (0.5 * (t - self.start))) * self.q0;
+        if self.flipped(t) { -q } else { q }
+    }
+    fn start_time(&self) -> f64 {
+        self.start
+    }
+    fn end_time(&self) -> f64 {
+        self.end
+    }
+}
+
+/// `Curve`'s provided `angular_velocity` is `ω` wherever its two samples differ in sign, on a
+/// long span far from 0 (its step, 1e-6 of the span, is then 1e-2: central differences right
+/// to 1e-9 of `ω`, one-sided ones at the ends to 1e-4), and `sample_into` is `at` at each time.
+#[test]
+fn curves_provided_methods_on_a_constant_rate() {
+    let slow = DVec3::new(0.3, -0.2, 0.6) * 1e-3;
+    for (omega, start, end) in [(slow, 5e3, 1.5e4), (slow * 500.0, 1e6, 1e6 + 10.0)] {
+        let curve = Flipping { q0: from_wxyz([0.6, 0.0, 0.8, 0.0]), omega, start, end };
+        let h = 1e-6 * (end - start);
+        let mut straddled = 0;
+        for k in 1..40 {
+            let t = start + (k as f64 + 0.013) * (end - start) / 40.0;
+            let w = curve.angular_velocity(t);
+            assert!((w - omega).length() < 1e-9 * omega.length(), "t = {t}: {w:?}");
+            straddled += usize::from(curve.flipped(t - h) != curve.flipped(t + h));
+        }
+        assert!(straddled > 5, "{straddled}");
+        for t in [start, end, start - 1.0, end + 1.0] {
+            let w = curve.angular_velocity(t);
+            assert!((w - omega).length() < 1e-4 * omega.length(), "t = {t}: {w:?}");
+        }
+    }
+    let curve =
+        Flipping { q0: from_wxyz([0.6, 0.0, 0.8, 0.0]), omega: slow, start: 5e3, end: 1.5e4 };
+    let times = [5e3, 7e3 + 0.01, 1.2e4, 1.5e4];
+    let mut out = [f64::NAN; 16];
+    curve.sample_into(&times, &mut out);
+    for (t, slot) in times.iter().zip(out.chunks_exact(4)) {
+        assert_eq!(slot, crate::quaternion::to_wxyz(curve.at(*t)));
+    }
+}
