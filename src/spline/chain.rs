@@ -108,7 +108,7 @@ impl KliSpline {
         samples.push(k[k.len() - 1]);
         pinned.push(true);
         let chain = Chain::new(&times, 1.0 - smoothness, smoothness, pinned);
-        let (iterations, residual) = chain.solve(&mut samples);
+        let (iterations, residual) = chain.solve(&mut samples, MAX_ITERATIONS);
         // Signs made consistent (consecutive samples more than a half turn apart: coarse chains).
         let samples = Keys::unchecked_spans(&samples, Some(&times))?;
         let curve = match RotvecCubic::new(samples.quaternions(), &times) {
@@ -278,16 +278,16 @@ impl Chain {
         (g, if scale > 8.0 * f64::EPSILON * self.norm { largest / scale } else { 0.0 })
     }
 
-    /// Runs Newton to [`TOLERANCE`] (or until rounding stops progress); returns the iterations
-    /// and the residual reached.
-    fn solve(&self, x: &mut [DQuat]) -> (usize, f64) {
+    /// Runs Newton to [`TOLERANCE`] (or until rounding stops progress, or `max_iterations`
+    /// steps); returns the iterations and the residual reached.
+    fn solve(&self, x: &mut [DQuat], max_iterations: usize) -> (usize, f64) {
         let free: Vec<usize> = (0..x.len()).filter(|&a| !self.pinned[a]).collect();
         if free.is_empty() {
             return (0, 0.0);
         }
         let mut lx = self.apply(x);
         let (mut g, mut residual) = self.gradient(x, &lx, &free);
-        for iteration in 0..MAX_ITERATIONS {
+        for iteration in 0..max_iterations {
             if residual <= TOLERANCE {
                 return (iteration, residual);
             }
@@ -314,7 +314,7 @@ impl Chain {
                 return (iteration + 1, residual);
             }
         }
-        (MAX_ITERATIONS, residual)
+        (max_iterations, residual)
     }
 
     /// The next state along `d`: near the equilibrium (residual below 1e-6) the full Newton step
@@ -435,5 +435,251 @@ impl Band {
             y[i] /= l[i][0];
         }
         Some(y)
+    }
+}
+
+// faer's dense Cholesky is the reference; it comes with the feature `sync`.
+#[cfg(all(test, feature = "sync"))]
+mod tests {
+    use faer::prelude::Solve;
+    use faer::{Mat, Side};
+    use glam::{DQuat, DVec3};
+
+    use super::{Chain, MAX_ITERATIONS, TOLERANCE};
+    use crate::quaternion::exp;
+    use crate::spline::tests::chain_energy;
+    use crate::swarm::Random;
+
+    /// Which branches of the solve a run went through.
+    #[derive(Debug, Default, Clone, Copy)]
+    struct Branches {
+        /// The tangent Hessian not positive definite: the step is along `−g`.
+        refused: usize,
+        /// The Armijo step shorter than the full one.
+        halved: usize,
+        /// The full step taken near the equilibrium because it lowers the residual.
+        near: usize,
+        /// Stopped at rounding's floor (the residual no longer halving below 1e-8).
+        floor: usize,
+    }
+
+    /// The chain's Newton method written afresh, densely, from the doc comments and MATH.md:
+    /// `L` from MATH.md's energy `E = ½ Σ L_ab x_a·x_b` (`L_aa = 2E(e_a)`, `L_ab = E(e_a + e_b)
+    /// − E(e_a) − E(e_b)`, exact for a quadratic), the tangent gradient `g_a = vec(x̄_a (Lx)_a)` and
+    /// Hessian `L_ab B_aᵀB_b − (x_a·(Lx)_a) δ_ab I` (`B_a`'s columns `x_a i, x_a j, x_a k`) on
+    /// the free samples, the direction by faer's dense Cholesky (`−g` where it fails), the step:
+    /// below a residual of 1e-6 the full step if it lowers the residual, else Armijo's on `E`
+    /// from 1 halving down to 1e-12 (else the full step); `x_a ← normalise(x_a + x_a s d_a)`.
+    /// The residual `max|g| / max|Lx|` (0 when `max|Lx| ≤ 8ε max_a Σ_b |L_ab|`); it stops at
+    /// [`TOLERANCE`], or when the residual below 1e-8 no longer halves (keeping the better
+    /// state). Each step's samples.
+    fn dense(
+        times: &[f64],
+        alpha: f64,
+        beta: f64,
+        pinned: &[bool],
+        start: &[DQuat],
+    ) -> (Vec<Vec<DQuat>>, Branches, f64) {
+        let n = times.len();
+        let energy = |x: &[DQuat]| {
+            let (a, b) = chain_energy(x, times, alpha, beta);
+            a + b
+        };
+        let unit = |entries: &[usize]| {
+            let mut x = vec![DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0); n];
+            for &a in entries {
+                x[a].w += 1.0;
+            }
+            energy(&x)
+        };
+        let l = Mat::<f64>::from_fn(n, n, |a, b| {
+            if a == b { unit(&[a]) } else { unit(&[a, b]) - unit(&[a]) - unit(&[b]) }
+        });
+        let norm = (0..n).map(|a| (0..n).map(|b| l[(a, b)].abs()).sum::<f64>()).fold(0.0, f64::max);
+        let free: Vec<usize> = (0..n).filter(|&a| !pinned[a]).collect();
+        let units = [
+            DQuat::from_xyzw(1.0, 0.0, 0.0, 0.0),
+            DQuat::from_xyzw(0.0, 1.0, 0.0, 0.0),
+            DQuat::from_xyzw(0.0, 0.0, 1.0, 0.0),
+        ];
+        let applied = |x: &[DQuat]| -> Vec<DQuat> {
+            (0..n)
+                .map(|a| {
+                    (0..n)
+                        .fold(DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0), |sum, b| sum + x[b] * l[(a, b)])
+                })
+                .collect()
+        };
+        let state = |x: &[DQuat]| {
+            let lx = applied(x);
+            let g: Vec<DVec3> = free
+                .iter()
+                .map(|&a| {
+                    let v = x[a].conjugate() * lx[a];
+                    DVec3::new(v.x, v.y, v.z)
+                })
+                .collect();
+            let scale = free.iter().map(|&a| lx[a].length()).fold(0.0, f64::max);
+            let largest = g.iter().map(|v| v.length()).fold(0.0, f64::max);
+            let residual = if scale > 8.0 * f64::EPSILON * norm { largest / scale } else { 0.0 };
+            (lx, g, residual)
+        };
+        let moved = |x: &[DQuat], d: &[f64], s: f64| {
+            let mut y = x.to_vec();
+            for (p, &a) in free.iter().enumerate() {
+                let v = DQuat::from_xyzw(d[3 * p] * s, d[3 * p + 1] * s, d[3 * p + 2] * s, 0.0);
+                y[a] = (x[a] + x[a] * v).normalize();
+            }
+            y
+        };
+        let mut branches = Branches::default();
+        let mut x = start.to_vec();
+        let mut path = vec![x.clone()];
+        let (mut lx, mut g, mut residual) = state(&x);
+        while path.len() <= MAX_ITERATIONS && residual > TOLERANCE {
+            let m = 3 * free.len();
+            let hessian = Mat::<f64>::from_fn(m, m, |i, j| {
+                let (p, q, r, c) = (i / 3, j / 3, i % 3, j % 3);
+                let (a, b) = (free[p], free[q]);
+                let value = l[(a, b)] * (x[a] * units[r]).dot(x[b] * units[c]);
+                if i == j { value - x[a].dot(lx[a]) } else { value }
+            });
+            let minus_g: Vec<f64> = g.iter().flat_map(|v| (-*v).to_array()).collect();
+            let mut d = match hessian.llt(Side::Lower) {
+                Ok(llt) => {
+                    let solved = llt.solve(Mat::<f64>::from_fn(m, 1, |i, _| minus_g[i]));
+                    (0..m).map(|i| solved[(i, 0)]).collect()
+                }
+                Err(_) => {
+                    branches.refused += 1;
+                    minus_g.clone()
+                }
+            };
+            let mut slope: f64 = d.iter().zip(&minus_g).map(|(a, b)| -a * b).sum();
+            if slope.is_nan() || slope >= 0.0 {
+                d = minus_g.clone();
+                slope = -d.iter().map(|v| v * v).sum::<f64>();
+            }
+            let full = moved(&x, &d, 1.0);
+            let trial = if residual < 1e-6 && state(&full).2 < residual {
+                branches.near += 1;
+                full
+            } else {
+                let e = energy(&x);
+                let mut s = 1.0;
+                loop {
+                    if s < 1e-12 {
+                        break full;
+                    }
+                    let trial = moved(&x, &d, s);
+                    if energy(&trial) <= e + 1e-4 * s * slope {
+                        branches.halved += usize::from(s < 1.0);
+                        break trial;
+                    }
+                    s /= 2.0;
+                }
+            };
+            let (trial_lx, trial_g, trial_residual) = state(&trial);
+            let floor = residual < 1e-8 && trial_residual > residual / 2.0;
+            if floor && trial_residual >= residual {
+                branches.floor += 1;
+                break;
+            }
+            x = trial;
+            (lx, g, residual) = (trial_lx, trial_g, trial_residual);
+            path.push(x.clone());
+            if floor {
+                branches.floor += 1;
+                break;
+            }
+        }
+        (path, branches, residual)
+    }
+
+    fn apart(a: &[DQuat], b: &[DQuat]) -> f64 {
+        a.iter().zip(b).map(|(&x, &y)| (x - y).length().min((x + y).length())).fold(0.0, f64::max)
+    }
+
+    /// The solve stopped after each number of steps is where the dense method is after as many
+    /// (to 1e-9 while the residual is above 1e-8: below it rounding decides), and stops within
+    /// two steps of it (rounding decides the last ones), at the tolerance: from SLERP samples (full steps near the equilibrium), from
+    /// samples moved off them by up to a radian (an indefinite Hessian: steps along −g, Armijo
+    /// halving them), and with uneven times. Where the dense method crawls along −g to its step
+    /// bound, so must the solve.
+    #[test]
+    fn each_step_is_the_dense_methods() {
+        let mut seen = Branches::default();
+        let mut compare = |times: &[f64], smoothness: f64, pinned: &[bool], start: &[DQuat]| {
+            let (alpha, beta) = (1.0 - smoothness, smoothness);
+            let chain = Chain::new(times, alpha, beta, pinned.to_vec());
+            let (path, branches, reached) = dense(times, alpha, beta, pinned, start);
+            for (k, expected) in path.iter().enumerate() {
+                let mut x = start.to_vec();
+                let (iterations, residual) = chain.solve(&mut x, k);
+                assert!(iterations <= k);
+                let gap = apart(&x, expected);
+                assert!(gap < 1e-9, "step {k} of {}: {gap:e} ({branches:?})", path.len() - 1);
+                if residual < 1e-8 {
+                    break;
+                }
+            }
+            let mut x = start.to_vec();
+            let (iterations, residual) = chain.solve(&mut x, MAX_ITERATIONS);
+            let steps = path.len() - 1;
+            assert!(iterations.abs_diff(steps) <= 2, "{iterations} vs {steps} ({branches:?})");
+            // Far from the equilibrium, with the Hessian indefinite, steps along −g can crawl:
+            // both run out of steps there.
+            if reached <= TOLERANCE {
+                assert!(residual <= 1e-10, "{residual:e}");
+            } else {
+                assert_eq!((iterations, steps), (MAX_ITERATIONS, MAX_ITERATIONS));
+            }
+            assert!(apart(&x, path.last().unwrap()) < 1e-9);
+            seen.refused += branches.refused;
+            seen.halved += branches.halved;
+            seen.near += branches.near;
+        };
+        let mut random = Random::new(11);
+        // Segments, samples a segment, uneven times, and the runs' smoothness and spread.
+        type Case = (usize, usize, bool, &'static [(f64, f64)]);
+        let cases: [Case; 3] = [
+            (3, 6, false, &[(0.3, 0.0), (1.0, 0.0), (0.3, 0.4), (1.0, 0.4), (1.0, 1.0)]),
+            (2, 8, true, &[(0.3, 0.0), (1.0, 0.0), (1.0, 0.1)]),
+            (4, 5, true, &[(0.3, 0.0), (1.0, 0.0)]),
+        ];
+        for (segments, per, uneven, runs) in cases {
+            let times: Vec<f64> = (0..=segments * per)
+                .map(|k| {
+                    let t = k as f64 / per as f64;
+                    if uneven { t * t + 0.3 * t } else { t }
+                })
+                .collect();
+            let pinned: Vec<bool> = (0..times.len()).map(|k| k % per == 0).collect();
+            // Keys up to 2 rad apart, signs consistent (as `Keys` makes them).
+            let mut keys = vec![random.unit_quaternion()];
+            while keys.len() <= segments {
+                let turn = exp(random.gaussian3().normalize() * random.uniform());
+                keys.push(*keys.last().unwrap() * turn);
+            }
+            for &(smoothness, spread) in runs {
+                let start: Vec<DQuat> = (0..times.len())
+                    .map(|k| {
+                        let (i, u) = (k / per, (k % per) as f64 / per as f64);
+                        let on = if i == segments {
+                            keys[i]
+                        } else {
+                            crate::spline::slerp(keys[i], keys[i + 1], u)
+                        };
+                        if pinned[k] {
+                            on
+                        } else {
+                            (on * exp(random.gaussian3() * spread)).normalize()
+                        }
+                    })
+                    .collect();
+                compare(&times, smoothness, &pinned, &start);
+            }
+        }
+        assert!(seen.refused > 0 && seen.halved > 0 && seen.near > 0, "{seen:?}");
     }
 }

@@ -303,7 +303,7 @@ fn far_apart_keys_at_uneven_times_give_a_unit_curve_through_the_keys() {
 /// `(α/2) Σ |x_{j+1} − x_j|²/h_j` and `(β/2) Σ w_j |D²x_j|²` with
 /// `D²x_j = [(x_{j+1} − x_j)/h_j − (x_j − x_{j−1})/h_{j−1}] / w_j`, `w_j = (h_{j−1} + h_j)/2`, as
 /// the two terms apart.
-fn chain_energy(x: &[DQuat], times: &[f64], alpha: f64, beta: f64) -> (f64, f64) {
+pub(super) fn chain_energy(x: &[DQuat], times: &[f64], alpha: f64, beta: f64) -> (f64, f64) {
     let n = x.len();
     let h = |j: usize| times[j + 1] - times[j];
     let neighbours: f64 =
