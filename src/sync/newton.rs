@@ -29,6 +29,13 @@ fn moved(q: &[DQuat], step: &[f64]) -> Vec<DQuat> {
     q.iter().enumerate().map(|(i, &qi)| (qi * exp(get(step, i) * 0.5)).normalize()).collect()
 }
 
+/// The damping after a refused factorisation or a rejected step (Nielsen): `μ ← max(νμ, 1e-12
+/// d)` (`d` the largest degree, so that the first damping is felt at the graph's scale) and
+/// `ν ← 2ν`, so that repeated failures grow `μ` ever faster.
+fn grown(mu: f64, nu: f64, scale: f64) -> (f64, f64) {
+    ((mu * nu).max(1e-12 * scale), 2.0 * nu)
+}
+
 /// The answer's steps (the exact Hessian, solved to rounding where the solve is iterative:
 /// quadratic convergence), or a robust round's (the Gauss–Newton matrix, positive semidefinite
 /// with outliers about, solved to 1e-6: the weights move next round).
@@ -81,8 +88,7 @@ pub(crate) fn refine(
         for _ in 0..64 {
             let minus: Vec<f64> = g.iter().map(|x| -x).collect();
             let Some(step) = pattern.solve(graph, &hessian, mu, &minus, tolerance) else {
-                mu = (mu * nu).max(1e-12 * scale);
-                nu *= 2.0;
+                (mu, nu) = grown(mu, nu, scale);
                 continue;
             };
             let trial = moved(&q, &step);
@@ -106,8 +112,7 @@ pub(crate) fn refine(
                 accepted = true;
                 break;
             }
-            mu = (mu * nu).max(1e-12 * scale);
-            nu *= 2.0;
+            (mu, nu) = grown(mu, nu, scale);
         }
         if !accepted {
             break;
