@@ -909,31 +909,104 @@ fn newton_stops_where_it_should_and_converges_from_anywhere() {
 /// The nearest rotation in the Frobenius norm, against the textbook one from a dense SVD
 /// (`U diag(1, 1, det(U Vᵀ)) Vᵀ`, faer's): on random matrices, on a rotation itself, and on
 /// matrices whose SVD has a negative determinant (the reflection the SVD route must undo).
+/// `U diag(1, 1, det(U Vᵀ)) Vᵀ` from faer's SVD of `a`.
+fn nearest_by_svd(a: DMat3) -> DMat3 {
+    let m = Mat::<f64>::from_fn(3, 3, |r, c| a.col(c)[r]);
+    let svd = m.svd().unwrap();
+    let (u, v) = (svd.U(), svd.V());
+    let uvt = u * v.transpose();
+    let det = DMat3::from_cols_array(&std::array::from_fn(|i| uvt[(i % 3, i / 3)])).determinant();
+    let mut d = Mat::<f64>::identity(3, 3);
+    d[(2, 2)] = det.signum();
+    let best = u * d * v.transpose();
+    DMat3::from_cols_array(&std::array::from_fn(|i| best[(i % 3, i / 3)]))
+}
+
 #[test]
 fn the_nearest_rotation_is_the_svds() {
     let mut random = Random::new(21);
     for k in 0..40 {
         let a = DMat3::from_cols_array(&std::array::from_fn(|_| random.gaussian()));
-        let m = Mat::<f64>::from_fn(3, 3, |r, c| a.col(c)[r]);
-        let svd = m.svd().unwrap();
-        let (u, v) = (svd.U(), svd.V());
-        let uvt = u * v.transpose();
-        let det =
-            DMat3::from_cols_array(&std::array::from_fn(|i| uvt[(i % 3, i / 3)])).determinant();
-        let mut d = Mat::<f64>::identity(3, 3);
-        d[(2, 2)] = det.signum();
-        let best = u * d * v.transpose();
+        let best = nearest_by_svd(a);
         let got = DMat3::from_quat(spectral::nearest_rotation(a));
-        for r in 0..3 {
-            for c in 0..3 {
-                assert!((got.col(c)[r] - best[(r, c)]).abs() < 1e-9, "{k}: {got:?} vs {best:?}");
-            }
-        }
+        assert!(got.abs_diff_eq(best, 1e-9), "{k}: {got:?} vs {best:?}");
         assert!(spectral::nearest_rotation(a).w >= 0.0);
     }
     let q = DQuat::from_axis_angle(DVec3::new(1.0, -2.0, 0.5).normalize(), 2.5);
     let back = spectral::nearest_rotation(DMat3::from_quat(q) * 3.0);
     assert!(back.dot(q).abs() > 1.0 - 1e-14, "{back:?} vs {q:?}");
+}
+
+/// The spectral estimate (`Method::Spectral`'s answer) against the relaxation solved densely from
+/// MATH.md: `L` written out (`d_i I₃` on the diagonal, `−w_ij R_ij` at `(i, j)`, its transpose at
+/// `(j, i)`), its three eigenvectors of the smallest eigenvalues by faer's dense solver, each
+/// block `V_iᵀ` rounded by SVD after one column is flipped where most blocks are reflections;
+/// compared free of the gauge (`q_0⁻¹ q_i`). On graphs whose factor does not fill (shift-and-
+/// invert Lanczos) and on an expander (Lanczos on `2 d_max I − L`), with noise, wrong edges and
+/// uneven weights.
+#[test]
+fn the_spectral_estimate_is_the_dense_relaxations() {
+    for (seed, (n, p, noise, wrong)) in
+        [(40, 0.1, 0.1, 0.0), (40, 0.1, 0.3, 0.3)].into_iter().enumerate()
+    {
+        let s = synthetic(n, p, noise, wrong, 40 + seed as u64);
+        let weights: Vec<f64> =
+            (0..s.graph.edges().len()).map(|k| 0.5 + 0.25 * (k % 5) as f64).collect();
+        let graph =
+            Graph::new(Some(n), s.graph.edges(), s.graph.relative(), Some(&weights)).unwrap();
+        let mut l = Mat::<f64>::zeros(3 * n, 3 * n);
+        for ((&[i, j], &q), &w) in graph.edges().iter().zip(graph.relative()).zip(&weights) {
+            let r = DMat3::from_quat(q);
+            for a in 0..3 {
+                l[(3 * i + a, 3 * i + a)] += w;
+                l[(3 * j + a, 3 * j + a)] += w;
+                for b in 0..3 {
+                    l[(3 * i + a, 3 * j + b)] -= w * r.col(b)[a];
+                    l[(3 * j + b, 3 * i + a)] -= w * r.col(b)[a];
+                }
+            }
+        }
+        let eigen = l.self_adjoint_eigen(Side::Lower).unwrap();
+        let (values, vectors) = (eigen.S().column_vector(), eigen.U());
+        assert!(values[3] - values[2] > 1e-3 * values[3], "{seed}: no gap to the fourth");
+        let block = |i: usize| {
+            DMat3::from_cols_array(&std::array::from_fn(|k| vectors[(3 * i + k / 3, k % 3)]))
+        };
+        let reflections = (0..n).filter(|&i| block(i).determinant() < 0.0).count();
+        let flip = if 2 * reflections > n { -1.0 } else { 1.0 };
+        let want: Vec<DMat3> = (0..n)
+            .map(|i| nearest_by_svd(DMat3::from_diagonal(DVec3::new(flip, 1.0, 1.0)) * block(i)))
+            .collect();
+        let synchronized =
+            synchronize(&graph, &SyncOptions { method: Method::Spectral, ..Default::default() })
+                .unwrap();
+        let got: Vec<DMat3> = synchronized.rotations.iter().map(|&q| DMat3::from_quat(q)).collect();
+        for i in 0..n {
+            let (a, b) = (want[0].transpose() * want[i], got[0].transpose() * got[i]);
+            assert!(a.abs_diff_eq(b, 1e-7), "{seed}, node {i}: {a:?} vs {b:?}");
+        }
+    }
+    // An expander (too large for a dense solver here): with consistent measurements `L`'s three
+    // smallest eigenvalues are 0 and their vectors the truth's, so the estimate is the truth up
+    // to the gauge; MATH.md's "a few dozen" Lanczos steps a vector.
+    for (seed, weighted) in [(51, false), (52, true)] {
+        let s = synthetic(600, 0.025, 0.0, 0.0, seed);
+        let weights: Vec<f64> = (0..s.graph.edges().len())
+            .map(|k| if weighted { 0.5 + 0.25 * (k % 5) as f64 } else { 1.0 })
+            .collect();
+        let graph =
+            Graph::new(Some(600), s.graph.edges(), s.graph.relative(), Some(&weights)).unwrap();
+        assert!(blocks::Pattern::new(&graph, None).fills());
+        let synchronized =
+            synchronize(&graph, &SyncOptions { method: Method::Spectral, ..Default::default() })
+                .unwrap();
+        let got = &synchronized.rotations;
+        for i in 0..600 {
+            let (a, b) = (s.truth[0].conjugate() * s.truth[i], got[0].conjugate() * got[i]);
+            assert!(a.dot(b).abs() > 1.0 - 1e-12, "{seed}, node {i}: {a:?} vs {b:?}");
+        }
+        assert!(synchronized.iterations <= 3 * 60, "{}", synchronized.iterations);
+    }
 }
 
 /// The connection Laplacian from MATH.md's definition, with uneven weights: `d_i I₃` on the
