@@ -147,7 +147,7 @@ impl Turn {
         let (theta, a) = (self.theta, self.a);
         let outer = DMat3::from_cols(a * v * theta.x, a * v * theta.y, a * v * theta.z);
         // d/dv [v × (θ × v)] e = e × (θ × v) + v × (θ × e)
-        let cross = cross_matrix(theta.cross(v)) * -1.0 + cross_matrix(v) * self.cross;
+        let cross = cross_matrix(v) * self.cross - cross_matrix(theta.cross(v));
         outer + a * theta.dot(v) + cross * self.k2
     }
 }
@@ -421,7 +421,8 @@ mod tests {
             [DQuat::IDENTITY, turn(179.99, x), turn(179.99, x) * turn(179.99, y), turn(90.0, y)];
         for times in [[0.0, 1.0, 2.0, 3.0], [0.0, 1e-6, 1.0, 1.0 + 1e-6]] {
             let cubic = RotvecCubic::new(&samples, &times).unwrap();
-            assert!(cubic.iterations() <= 10, "{times:?}: {}", cubic.iterations());
+            // It stops on a step that changes nothing: at least two.
+            assert!((2..=10).contains(&cubic.iterations()), "{times:?}: {}", cubic.iterations());
             for j in 0..3 {
                 assert!((cubic.at_interval(j, 0.0) - samples[j]).length() < 1e-15);
                 let end = cubic.at_interval(j, 1.0);

@@ -480,3 +480,48 @@ fn curves_provided_methods_on_a_constant_rate() {
         assert_eq!(slot, crate::quaternion::to_wxyz(curve.at(*t)));
     }
 }
+
+/// Keys as MATH.md's curves take them: each sign chosen the shorter way from the previous key
+/// (`k_{i+1}·k_i ≥ 0`; a key exactly a half turn on, `k·k_prev = 0`, is kept as given), times
+/// strictly increasing (the first out of order named), and no span shorter than 1e-9 of the
+/// whole range nor than 1e-9 (exactly that short is allowed; a range far from 0 is its length).
+#[test]
+fn keys_take_the_shorter_way_and_refuse_short_spans() {
+    let a = from_wxyz([0.6, 0.0, 0.8, 0.0]);
+    let b = from_wxyz([0.8, 0.6, 0.0, 0.0]); // a·b = 0.48
+    let c = from_wxyz([0.0, 0.0, 0.0, 1.0]); // b·c = 0: a half turn from b
+    let keys = Keys::new(&[a, -b, c, -c], None).unwrap();
+    assert_eq!(keys.quaternions(), &[a, b, c, c]);
+    assert!(!keys.is_empty());
+    assert_eq!((keys.len(), keys.times()), (4, &[0.0, 1.0, 2.0, 3.0][..]));
+    let refused = |times: &[f64]| Keys::new(&[a, b, c], Some(times)).unwrap_err().to_string();
+    let m = refused(&[0.0, 2.0, 1.0]);
+    assert!(m.contains("times[2]") && m.contains("strictly increasing"), "{m}");
+    let m = refused(&[5.0, 5.0 + 1e-12, 6.0]);
+    assert!(m.contains("times[1]") && m.contains("must be at least"), "{m}");
+    let m = refused(&[0.0, 1e3 - 1e-7, 1e3]);
+    assert!(m.contains("times[2]") && m.contains("must be at least"), "{m}");
+    for times in [[0.0, 1e-9, 1.0], [1e3, 1e3 + 1e-6, 1e3 + 1.0], [-7.0, -6.0, -6.0 + 1e-9]] {
+        assert!(Keys::new(&[a, b, c], Some(&times)).is_ok(), "{times:?}");
+    }
+}
+
+/// Every curve's span is its first and last key times, away from 0; and Algorithm 1's
+/// sequential curve keeps one path a segment.
+#[test]
+fn every_curve_spans_its_key_times() {
+    let q = random_keys(5, 3, 1.0);
+    let k = keys(&q, Some(&[2.0, 3.5, 7.0]));
+    let sequential =
+        SequentialKli::new(k.clone(), &crate::algorithm::KliOptions::default()).unwrap();
+    assert_eq!(sequential.paths().len(), 2);
+    let curves: [&dyn Curve; 4] = [
+        &sequential,
+        &PiecewiseSlerp::new(k.clone()),
+        &Squad::new(k.clone()),
+        &chain(k.clone(), 0.5),
+    ];
+    for curve in curves {
+        assert_eq!((curve.start_time(), curve.end_time()), (2.0, 7.0));
+    }
+}
