@@ -287,32 +287,32 @@ impl Chain {
         }
         let mut lx = self.apply(x);
         let (mut g, mut residual) = self.gradient(x, &lx, &free);
+        let mut floor = false;
         for iteration in 0..max_iterations {
-            if residual <= TOLERANCE {
+            if residual <= TOLERANCE || floor {
                 return (iteration, residual);
             }
             let hessian = self.hessian(x, &lx, &free);
             let minus_g: Vec<f64> = g.iter().flat_map(|v| (-*v).to_array()).collect();
-            let mut d = hessian.solve(&minus_g).unwrap_or_else(|| minus_g.clone());
-            let mut slope: f64 = d.iter().zip(&minus_g).map(|(a, b)| -a * b).sum();
-            if slope >= 0.0 || slope.is_nan() {
-                d = minus_g.clone();
-                slope = -d.iter().map(|v| v * v).sum::<f64>();
-            }
+            // E's slope along d, gᵀd: Newton's direction where the Hessian is positive definite
+            // and it descends (by rounding it might not), else steepest descent.
+            let slope = |d: &[f64]| d.iter().zip(&minus_g).map(|(a, b)| -a * b).sum::<f64>();
+            let d = match hessian.solve(&minus_g) {
+                Some(d) if slope(&d) < 0.0 => d,
+                _ => minus_g.clone(),
+            };
+            let slope = slope(&d);
             let trial = self.step(x, &free, &d, slope, residual);
             let trial_lx = self.apply(&trial);
             let (trial_g, trial_residual) = self.gradient(&trial, &trial_lx, &free);
             // At the rounding floor (Newton has converged quadratically to ~1e-12), steps stop
             // halving the residual: keep the better state and stop.
-            let floor = residual < 1e-8 && trial_residual > 0.5 * residual;
+            floor = residual < 1e-8 && trial_residual > 0.5 * residual;
             if floor && trial_residual >= residual {
                 return (iteration, residual);
             }
             x.copy_from_slice(&trial);
             (lx, g, residual) = (trial_lx, trial_g, trial_residual);
-            if floor {
-                return (iteration + 1, residual);
-            }
         }
         (max_iterations, residual)
     }
@@ -681,5 +681,40 @@ mod tests {
             }
         }
         assert!(seen.refused > 0 && seen.halved > 0 && seen.near > 0, "{seen:?}");
+    }
+
+    /// A stiff chain (3 keys, 400 samples a segment: the bending term's condition grows as the
+    /// fourth power of the samples) from its SLERP samples: Newton reaches rounding's floor
+    /// above the tolerance and stops there, keeping the best state it met (its residual is the
+    /// least of those after every number of steps) and reporting the steps that state took.
+    #[test]
+    fn a_stiff_chain_stops_at_roundings_floor_with_its_best_state() {
+        let per = 400;
+        let times: Vec<f64> = (0..=2 * per).map(|k| k as f64 / per as f64).collect();
+        let pinned: Vec<bool> = (0..times.len()).map(|k| k % per == 0).collect();
+        let keys = [
+            DQuat::IDENTITY,
+            exp(DVec3::new(0.3, 0.8, -0.2)),
+            exp(DVec3::new(0.3, 0.8, -0.2)) * exp(DVec3::new(-0.7, 0.1, 0.5)),
+        ];
+        let start: Vec<DQuat> = (0..times.len())
+            .map(|k| {
+                let (i, u) = (k / per, (k % per) as f64 / per as f64);
+                if i == 2 { keys[2] } else { crate::spline::slerp(keys[i], keys[i + 1], u) }
+            })
+            .collect();
+        let chain = Chain::new(&times, 0.0, 1.0, pinned);
+        let mut x = start.clone();
+        let (iterations, residual) = chain.solve(&mut x, MAX_ITERATIONS);
+        assert!(residual > TOLERANCE && residual < 1e-8, "{residual:e}");
+        assert!(iterations < 20, "{iterations}");
+        for k in 0..=iterations + 1 {
+            let mut y = start.clone();
+            let (_, after) = chain.solve(&mut y, k);
+            assert!(residual <= after, "after {k}: {after:e} below {residual:e}");
+            if k == iterations {
+                assert_eq!(y, x, "the state after the steps reported");
+            }
+        }
     }
 }

@@ -42,7 +42,8 @@ impl Curve for SequentialKli {
         let path = &self.paths[i];
         let samples = path.quaternions();
         let position = u * path.steps() as f64;
-        let n = (position.floor() as usize).min(samples.len() - 1);
+        // u ≤ 1: n ≤ the path's steps, its last sample.
+        let n = position.floor() as usize;
         let next = (n + 1).min(samples.len() - 1);
         let f = position - n as f64;
         (samples[n] * (1.0 - f) + samples[next] * f).normalize()

@@ -515,6 +515,11 @@ fn every_curve_spans_its_key_times() {
     let sequential =
         SequentialKli::new(k.clone(), &crate::algorithm::KliOptions::default()).unwrap();
     assert_eq!(sequential.paths().len(), 2);
+    // At its end, and beyond, the last path's last sample (within ε of the last key).
+    let last = *sequential.paths()[1].quaternions().last().unwrap();
+    for t in [7.0, 8.0] {
+        assert!((sequential.at(t) - last.normalize()).length() < 1e-15);
+    }
     let curves: [&dyn Curve; 4] = [
         &sequential,
         &PiecewiseSlerp::new(k.clone()),
