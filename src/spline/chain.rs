@@ -438,9 +438,11 @@ impl Band {
     }
 }
 
-// faer's dense Cholesky is the reference; it comes with the feature `sync`.
-#[cfg(all(test, feature = "sync"))]
+#[cfg(test)]
 mod tests {
+    // faer's dense Cholesky is the reference; it comes with the feature `sync`.
+    #![cfg(feature = "sync")]
+
     use faer::prelude::Solve;
     use faer::{Mat, Side};
     use glam::{DQuat, DVec3};
