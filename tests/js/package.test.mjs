@@ -138,13 +138,18 @@ test("the kli/spline entry: the chain, Squad and piecewise SLERP through the sam
     const curves = [kliSpline(keys), squadSpline(keys), slerpSpline(keys)];
     const hit = curves.map((c) => keys.every((k, i) => Array.from(c.at(i)).every((x, j) => Math.abs(x - k[j]) < 1e-12)));
     const samples = curves[0].sample([0, 1.5, 3]).length;
-    console.log(JSON.stringify({ hit, samples, residual: curves[0].residual, squadResidual: curves[1].residual ?? null }));
+    // A hold: the same key three times, the curve at rest.
+    const hold = kliSpline([keys[1], keys[1], keys[1]], { times: [0, 0.7, 2] });
+    const held = Array.from(hold.sample([0, 0.3, 1.1, 2])).every((x, i) => Math.abs(x - keys[1][i % 4]) < 1e-15);
+    console.log(JSON.stringify({ hit, samples, residual: curves[0].residual, squadResidual: curves[1].residual ?? null,
+      hold: { iterations: hold.iterations, residual: hold.residual, held } }));
   `);
-  const { hit, samples, residual, squadResidual } = run("spline.mjs");
+  const { hit, samples, residual, squadResidual, hold } = run("spline.mjs");
   assert.deepEqual(hit, [true, true, true]);
   assert.equal(samples, 12);
   assert.ok(residual <= 1e-10, `residual ${residual}`);
   assert.equal(squadResidual, null);
+  assert.deepEqual(hold, { iterations: 0, residual: 0, held: true });
 });
 
 test("errors thrown through the generated glue are Errors, and the module keeps working", () => {
