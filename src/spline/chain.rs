@@ -438,11 +438,10 @@ impl Band {
     }
 }
 
+// faer's dense Cholesky is the reference; it comes with the feature `sync`.
 #[cfg(test)]
+#[cfg(feature = "sync")]
 mod tests {
-    // faer's dense Cholesky is the reference; it comes with the feature `sync`.
-    #![cfg(feature = "sync")]
-
     use faer::prelude::Solve;
     use faer::{Mat, Side};
     use glam::{DQuat, DVec3};

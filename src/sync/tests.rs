@@ -163,12 +163,11 @@ fn the_second_order_model_matches_finite_differences() {
     }
 }
 
-#[allow(clippy::needless_range_loop)]
-/// `S = L − Λ` written densely from MATH.md's formulas.
-fn dense_certificate(graph: &Graph, q: &[DQuat]) -> Mat<f64> {
+/// The connection Laplacian written densely from MATH.md: `d_i I₃` on the diagonal, `−w_ij R_ij`
+/// at `(i, j)` and its transpose at `(j, i)`.
+fn dense_laplacian(graph: &Graph) -> Mat<f64> {
     let n = graph.count();
     let mut l = Mat::<f64>::zeros(3 * n, 3 * n);
-    let r: Vec<DMat3> = q.iter().map(|&q| DMat3::from_quat(q)).collect();
     for ((&[i, j], &rel), &w) in graph.edges().iter().zip(graph.relative()).zip(graph.weights()) {
         let rij = DMat3::from_quat(rel);
         for a in 0..3 {
@@ -180,6 +179,15 @@ fn dense_certificate(graph: &Graph, q: &[DQuat]) -> Mat<f64> {
             }
         }
     }
+    l
+}
+
+#[allow(clippy::needless_range_loop)]
+/// `S = L − Λ` written densely from MATH.md's formulas.
+fn dense_certificate(graph: &Graph, q: &[DQuat]) -> Mat<f64> {
+    let n = graph.count();
+    let l = dense_laplacian(graph);
+    let r: Vec<DMat3> = q.iter().map(|&q| DMat3::from_quat(q)).collect();
     let mut y = Mat::<f64>::zeros(3 * n, 3);
     for i in 0..n {
         for a in 0..3 {
@@ -938,8 +946,7 @@ fn the_nearest_rotation_is_the_svds() {
 }
 
 /// The spectral estimate (`Method::Spectral`'s answer) against the relaxation solved densely from
-/// MATH.md: `L` written out (`d_i I₃` on the diagonal, `−w_ij R_ij` at `(i, j)`, its transpose at
-/// `(j, i)`), its three eigenvectors of the smallest eigenvalues by faer's dense solver, each
+/// MATH.md: `L` written out, its three eigenvectors of the smallest eigenvalues by faer's dense solver, each
 /// block `V_iᵀ` rounded by SVD after one column is flipped where most blocks are reflections;
 /// compared free of the gauge (`q_0⁻¹ q_i`). On graphs whose factor does not fill (shift-and-
 /// invert Lanczos) and on an expander (Lanczos on `2 d_max I − L`), with noise, wrong edges and
@@ -954,19 +961,7 @@ fn the_spectral_estimate_is_the_dense_relaxations() {
             (0..s.graph.edges().len()).map(|k| 0.5 + 0.25 * (k % 5) as f64).collect();
         let graph =
             Graph::new(Some(n), s.graph.edges(), s.graph.relative(), Some(&weights)).unwrap();
-        let mut l = Mat::<f64>::zeros(3 * n, 3 * n);
-        for ((&[i, j], &q), &w) in graph.edges().iter().zip(graph.relative()).zip(&weights) {
-            let r = DMat3::from_quat(q);
-            for a in 0..3 {
-                l[(3 * i + a, 3 * i + a)] += w;
-                l[(3 * j + a, 3 * j + a)] += w;
-                for b in 0..3 {
-                    l[(3 * i + a, 3 * j + b)] -= w * r.col(b)[a];
-                    l[(3 * j + b, 3 * i + a)] -= w * r.col(b)[a];
-                }
-            }
-        }
-        let eigen = l.self_adjoint_eigen(Side::Lower).unwrap();
+        let eigen = dense_laplacian(&graph).self_adjoint_eigen(Side::Lower).unwrap();
         let (values, vectors) = (eigen.S().column_vector(), eigen.U());
         assert!(values[3] - values[2] > 1e-3 * values[3], "{seed}: no gap to the fourth");
         let block = |i: usize| {
