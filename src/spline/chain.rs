@@ -242,7 +242,6 @@ impl Chain {
                 }
             }
         }
-        let n = pinned.len();
         let row = |a: usize| {
             (a.saturating_sub(2)..=(a + 2).min(n - 1)).map(|b| bands_at(&bands, a, b).abs()).sum()
         };

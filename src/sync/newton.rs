@@ -144,7 +144,7 @@ mod tests {
         rejected: usize,
         /// A damped step taken: `μ` shrinks by Nielsen's factor.
         damped: usize,
-        /// A pure Newton step taken although it raised `f` by rounding.
+        /// A step taken although it raised `f`, by no more than rounding.
         noise: usize,
         /// Stopped because the gradient stopped shrinking (by half) below `1e-8` of the scale.
         stalled: usize,
@@ -157,8 +157,8 @@ mod tests {
     /// than rounding (`4 ε |f| √m`) makes `μ ← max(νμ, 1e-12 d)`, `ν ← 2ν` (`d` the largest
     /// degree); a step taken makes `μ ← μ max(1/3, 1 − (2ρ − 1)³)`, `ν ← 2` (Nielsen), `ρ` the
     /// actual over the predicted decrease `½(μ|δ|² − gᵀδ)`, or 1 where `f` changed by no more
-    /// than rounding. It stops when `|g| ≤ 1e-13 d`, or
-    /// when `|g| < 1e-8 d` no longer halves, or after 64 refusals in a row. Each step's `q`.
+    /// than rounding. It stops when `|g| ≤ 1e-13 d`, or when `|g| < 1e-8 d` no longer halves, or
+    /// after 64 refusals in a row. Each step's `q`.
     fn dense(
         graph: &Graph,
         anchor: usize,
