@@ -530,3 +530,26 @@ fn every_curve_spans_its_key_times() {
         assert_eq!((curve.start_time(), curve.end_time()), (2.0, 7.0));
     }
 }
+/// Nearly equal keys (1e-17 to 1e-6 rad apart, a hold up to float noise) at 2, 32 and 256
+/// samples a segment: `|Lx|` is of second order in the spread, so the residual is rounding's
+/// long before the tolerance; the solve stops once the gradient is within rounding of `L`'s size
+/// (it ran its 100 steps, 3 s at 256 samples a segment, reporting residuals near 1), and every
+/// sample stays near the keys (a bending chain may pass a little beyond them; at 256 samples a
+/// segment the bending term's condition, ~256⁴, leaves 1e-10 of rounding).
+#[test]
+fn nearly_equal_keys_stop_at_roundings_level() {
+    let a = from_wxyz([0.6, 0.0, 0.8, 0.0]);
+    for d in [1e-17, 1e-15, 1e-13, 1e-11, 1e-9, 1e-6] {
+        let b = (a * exp(DVec3::new(d, -d, 0.5 * d))).normalize();
+        let c = (b * exp(DVec3::new(0.0, d, d))).normalize();
+        for per in [2, 32, 256] {
+            let options = ChainOptions { smoothness: 1.0, samples_per_segment: per };
+            let chain = KliSpline::new(keys(&[a, b, c], None), &options).unwrap();
+            assert!(chain.iterations() <= 20, "{d:e}, {per}: {}", chain.iterations());
+            assert!(chain.residual() < 1e-3, "{d:e}, {per}: {:e}", chain.residual());
+            for &x in chain.samples().quaternions() {
+                assert!((x - a).length() < 10.0 * d + 1e-9, "{d:e}, {per}: {x:?}");
+            }
+        }
+    }
+}
