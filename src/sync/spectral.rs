@@ -124,3 +124,36 @@ fn round(v: &[Vec<f64>], n: usize) -> Vec<DQuat> {
     // V_iᵀ = Oᵀ R_i: the nearest rotation is R_i up to the gauge Oᵀ.
     (0..n).map(|i| nearest_rotation(flip * block(i))).collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use glam::{DMat3, DQuat, DVec3};
+
+    use super::round;
+    use crate::swarm::Random;
+
+    /// The blocks of `V = Y O` for an orthogonal `O` with `det O = −1` are all reflections, and
+    /// one column of `V` flipped makes them rotations: with 6 of 10 blocks `R_iᵀ O` (reflections)
+    /// and 4 `R_iᵀ G` (rotations), the majority decides, and the six come out as the truth up to
+    /// one gauge (`R_0ᵀ R_i` exact).
+    #[test]
+    fn the_majority_of_reflections_decides_the_flip() {
+        let mut random = Random::new(12);
+        let n = 10;
+        let truth: Vec<DMat3> =
+            (0..n).map(|_| DMat3::from_quat(random.unit_quaternion())).collect();
+        let g = DMat3::from_quat(random.unit_quaternion());
+        let o = DMat3::from_diagonal(DVec3::new(-1.0, 1.0, 1.0)) * g;
+        let blocks: Vec<DMat3> =
+            (0..n).map(|i| truth[i].transpose() * if i < 6 { o } else { g }).collect();
+        // v[c][3i + r] = (V_i)_rc.
+        let v: Vec<Vec<f64>> =
+            (0..3).map(|c| (0..3 * n).map(|k| blocks[k / 3].col(c)[k % 3]).collect()).collect();
+        let q: Vec<DQuat> = round(&v, n);
+        let r: Vec<DMat3> = q.iter().map(|&q| DMat3::from_quat(q)).collect();
+        for i in 1..6 {
+            let (got, want) = (r[0].transpose() * r[i], truth[0].transpose() * truth[i]);
+            assert!(got.abs_diff_eq(want, 1e-12), "{i}: {got:?} vs {want:?}");
+        }
+    }
+}
