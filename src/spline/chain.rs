@@ -130,9 +130,9 @@ impl KliSpline {
     }
 
     /// The relative residual reached, `max_j |g_j| / max_j |(Lx)_j|` (0 for a chain at rest,
-    /// such as equal keys, where `Lx` is within rounding of 0). The solve also stops once every
-    /// `|g_j|` is within rounding of `L`'s size: for nearly equal keys `|Lx|` is of second order,
-    /// and the residual then left is rounding's.
+    /// such as equal keys, where `Lx` is within rounding of 0). The solve also stops when the
+    /// residual stops halving with every `|g_j|` within rounding of `L`'s size: for nearly equal
+    /// keys `|Lx|` is of second order, and the residual then left is rounding's.
     pub fn residual(&self) -> f64 {
         self.residual
     }
@@ -293,7 +293,7 @@ impl Chain {
         let (mut g, mut residual, mut at_rounding) = self.gradient(x, &lx, &free);
         let mut floor = false;
         for iteration in 0..max_iterations {
-            if residual <= TOLERANCE || at_rounding || floor {
+            if residual <= TOLERANCE || floor {
                 return (iteration, residual);
             }
             let hessian = self.hessian(x, &lx, &free);
@@ -310,9 +310,10 @@ impl Chain {
             let trial_lx = self.apply(&trial);
             let (trial_g, trial_residual, trial_at_rounding) =
                 self.gradient(&trial, &trial_lx, &free);
-            // At the rounding floor (Newton has converged quadratically to ~1e-12), steps stop
-            // halving the residual: keep the better state and stop.
-            floor = residual < 1e-8 && trial_residual > 0.5 * residual;
+            // At the rounding floor (Newton has converged quadratically to ~1e-12, or the
+            // gradient is within rounding of L's size, as for nearly equal keys, whose |Lx| is
+            // of second order), steps stop halving the residual: keep the better state and stop.
+            floor = (residual < 1e-8 || at_rounding) && trial_residual > 0.5 * residual;
             if floor && trial_residual >= residual {
                 return (iteration, residual);
             }
@@ -477,8 +478,8 @@ mod tests {
     /// below a residual of 1e-6 the full step if it lowers the residual, else Armijo's on `E`
     /// from 1 halving down to 1e-12 (else the full step); `x_a ← normalise(x_a + x_a s d_a)`.
     /// The residual `max|g| / max|Lx|` (0 when `max|Lx| ≤ 8ε max_a Σ_b |L_ab|`); it stops at
-    /// [`TOLERANCE`], once `max|g| ≤ 8ε max_a Σ_b |L_ab|`, or when the residual below 1e-8 no
-    /// longer halves (keeping the better state). Each step's samples.
+    /// [`TOLERANCE`], or when the residual no longer halves below 1e-8 or with `max|g| ≤ 8ε
+    /// max_a Σ_b |L_ab|` (keeping the better state). Each step's samples.
     fn dense(
         times: &[f64],
         alpha: f64,
@@ -543,7 +544,7 @@ mod tests {
         let mut x = start.to_vec();
         let mut path = vec![x.clone()];
         let (mut lx, mut g, mut residual, mut at_rounding) = state(&x);
-        while path.len() <= MAX_ITERATIONS && residual > TOLERANCE && !at_rounding {
+        while path.len() <= MAX_ITERATIONS && residual > TOLERANCE {
             let m = 3 * free.len();
             let hessian = Mat::<f64>::from_fn(m, m, |i, j| {
                 let (p, q, r, c) = (i / 3, j / 3, i % 3, j % 3);
@@ -587,7 +588,7 @@ mod tests {
                 }
             };
             let (trial_lx, trial_g, trial_residual, trial_at_rounding) = state(&trial);
-            let floor = residual < 1e-8 && trial_residual > residual / 2.0;
+            let floor = (residual < 1e-8 || at_rounding) && trial_residual > residual / 2.0;
             if floor && trial_residual >= residual {
                 branches.floor += 1;
                 break;
