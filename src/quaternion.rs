@@ -101,6 +101,13 @@ pub fn log(q: DQuat) -> DVec3 {
     v * (s.atan2(q.w) / s)
 }
 
+/// The largest distance between two lists of rotations as quaternions, blind to each sign (the
+/// dense references' tests, which faer and so the feature `sync` bring).
+#[cfg(all(test, feature = "sync"))]
+pub(crate) fn farthest_apart(a: &[DQuat], b: &[DQuat]) -> f64 {
+    a.iter().zip(b).map(|(&x, &y)| (x - y).length().min((x + y).length())).fold(0.0, f64::max)
+}
+
 /// Normalised quaternions whose `|q|²` is 1 exactly in f64 (glam's order of summation), from a
 /// fixed seed: most normalised quaternions are.
 #[cfg(test)]

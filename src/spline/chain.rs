@@ -453,7 +453,7 @@ mod tests {
     use glam::{DQuat, DVec3};
 
     use super::{Chain, MAX_ITERATIONS, TOLERANCE};
-    use crate::quaternion::exp;
+    use crate::quaternion::{exp, farthest_apart};
     use crate::spline::tests::chain_energy;
     use crate::swarm::Random;
 
@@ -604,8 +604,15 @@ mod tests {
         (path, branches, residual, at_rounding)
     }
 
-    fn apart(a: &[DQuat], b: &[DQuat]) -> f64 {
-        a.iter().zip(b).map(|(&x, &y)| (x - y).length().min((x + y).length())).fold(0.0, f64::max)
+    /// Samples along SLERP between consecutive `keys`, `per` a segment, the last key last.
+    fn slerp_samples(keys: &[DQuat], per: usize) -> Vec<DQuat> {
+        let segments = keys.len() - 1;
+        (0..=segments * per)
+            .map(|k| {
+                let (i, u) = (k / per, (k % per) as f64 / per as f64);
+                if i == segments { keys[i] } else { crate::spline::slerp(keys[i], keys[i + 1], u) }
+            })
+            .collect()
     }
 
     /// The solve stopped after each number of steps is where the dense method is after as many
@@ -625,7 +632,7 @@ mod tests {
                 let mut x = start.to_vec();
                 let (iterations, residual) = chain.solve(&mut x, k);
                 assert!(iterations <= k);
-                let gap = apart(&x, expected);
+                let gap = farthest_apart(&x, expected);
                 assert!(gap < 1e-9, "step {k} of {}: {gap:e} ({branches:?})", path.len() - 1);
                 if residual < 1e-8 {
                     break;
@@ -643,7 +650,7 @@ mod tests {
             } else {
                 assert_eq!((iterations, steps), (MAX_ITERATIONS, MAX_ITERATIONS));
             }
-            assert!(apart(&x, path.last().unwrap()) < 1e-9);
+            assert!(farthest_apart(&x, path.last().unwrap()) < 1e-9);
             seen.refused += branches.refused;
             seen.halved += branches.halved;
             seen.near += branches.near;
@@ -671,21 +678,18 @@ mod tests {
                 keys.push(*keys.last().unwrap() * turn);
             }
             for &(smoothness, spread) in runs {
-                let start: Vec<DQuat> = (0..times.len())
-                    .map(|k| {
-                        let (i, u) = (k / per, (k % per) as f64 / per as f64);
-                        let on = if i == segments {
-                            keys[i]
-                        } else {
-                            crate::spline::slerp(keys[i], keys[i + 1], u)
-                        };
-                        if pinned[k] {
-                            on
-                        } else {
-                            (on * exp(random.gaussian3() * spread)).normalize()
-                        }
-                    })
-                    .collect();
+                let start: Vec<DQuat> =
+                    slerp_samples(&keys, per)
+                        .into_iter()
+                        .zip(&pinned)
+                        .map(|(on, &pin)| {
+                            if pin {
+                                on
+                            } else {
+                                (on * exp(random.gaussian3() * spread)).normalize()
+                            }
+                        })
+                        .collect();
                 compare(&times, smoothness, &pinned, &start);
             }
         }
@@ -706,12 +710,7 @@ mod tests {
             exp(DVec3::new(0.3, 0.8, -0.2)),
             exp(DVec3::new(0.3, 0.8, -0.2)) * exp(DVec3::new(-0.7, 0.1, 0.5)),
         ];
-        let start: Vec<DQuat> = (0..times.len())
-            .map(|k| {
-                let (i, u) = (k / per, (k % per) as f64 / per as f64);
-                if i == 2 { keys[2] } else { crate::spline::slerp(keys[i], keys[i + 1], u) }
-            })
-            .collect();
+        let start = slerp_samples(&keys, per);
         let chain = Chain::new(&times, 0.0, 1.0, pinned);
         let mut x = start.clone();
         let (iterations, residual) = chain.solve(&mut x, MAX_ITERATIONS);

@@ -128,7 +128,7 @@ mod tests {
     use glam::{DQuat, DVec3};
 
     use super::{Accuracy, MAX_ITERATIONS, refine};
-    use crate::quaternion::exp;
+    use crate::quaternion::{exp, farthest_apart};
     use crate::swarm::Random;
     use crate::sync::blocks::Pattern;
     use crate::sync::cost::{cost, model};
@@ -240,12 +240,6 @@ mod tests {
         (path, branches)
     }
 
-    /// The largest distance between two runs' rotations as quaternions, blind to sign.
-    fn apart(a: &[DQuat], b: &[DQuat]) -> f64 {
-        let distance = |x: DQuat, y: DQuat| (x - y).length().min((x + y).length());
-        a.iter().zip(b).map(|(&x, &y)| distance(x, y)).fold(0.0, f64::max)
-    }
-
     /// `refine` stopped after each number of steps is where the dense method is after as many
     /// (to 1e-9, while the gradient is above `1e-8 d`: below, rounding decides which steps are
     /// taken, and the two differ in it), and it stops within a step of the dense method, with the
@@ -269,7 +263,7 @@ mod tests {
             for (k, expected) in path.iter().enumerate() {
                 let after = refine(graph, &pattern, start.to_vec(), k, accuracy);
                 assert_eq!(after.iterations, k);
-                let gap = apart(&after.q, expected);
+                let gap = farthest_apart(&after.q, expected);
                 assert!(gap < 1e-9, "step {k} of {}: {gap:e} ({branches:?})", path.len() - 1);
                 if gradient(expected) < 1e-8 * d {
                     break;
