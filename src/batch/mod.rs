@@ -39,8 +39,9 @@ pub enum BatchKind {
     Slerp,
     /// `out[i] = q(t[i])`, the exact KLI solution from `starts[i]` towards `ends[i]`.
     KliExact,
-    /// Normalised linear interpolation with the shorter arc: the cheapest possible
-    /// interpolation (not constant speed), the benchmarks' baseline.
+    /// Normalised linear interpolation with the shorter arc, `(p + (r' - p) s)/|…|` for the
+    /// normalised inputs, `r' = -r` when `p·r < 0` (a zero dot keeps `r`, as SLERP does): the
+    /// cheapest possible interpolation (not constant speed), the benchmarks' baseline.
     Nlerp,
 }
 
@@ -294,6 +295,107 @@ mod tests {
         }
         nlerp_batch(&starts, &ends, &[0.0; 32], &mut out).unwrap();
         assert_eq!(out, starts);
+    }
+
+    /// NLERP from its definition ([`BatchKind::Nlerp`]), written afresh: normalise, take the
+    /// shorter arc, blend, normalise.
+    fn nlerp_by_definition(p: [f64; 4], r: [f64; 4], s: f64) -> [f64; 4] {
+        let unit = |q: [f64; 4]| q.map(|c| c / q.iter().map(|c| c * c).sum::<f64>().sqrt());
+        let (p, r) = (unit(p), unit(r));
+        let dot: f64 = (0..4).map(|c| p[c] * r[c]).sum();
+        let r = if dot < 0.0 { r.map(|c| -c) } else { r };
+        unit([0, 1, 2, 3].map(|c| p[c] + (r[c] - p[c]) * s))
+    }
+
+    fn largest_gap(a: &[f64], b: &[f64]) -> f64 {
+        a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max)
+    }
+
+    #[test]
+    fn nearly_unit_inputs_take_the_fast_kernels_and_agree_with_the_single_calls() {
+        // |q|² = 1 ± 9e-5 is just inside the fast kernels' reach, where the 1/√n series' cubic
+        // term is 4.6e-13: each of its terms shows. A pair's start and end sit on opposite sides
+        // of 1, so that NLERP's final normalisation cannot hide a shared error.
+        let scales = [1.0 + 9e-5, 1.0 - 9e-5, 1.0 + 1e-7, 1.0 - 3e-6];
+        let keys: Vec<[f64; 4]> = exact_units(48)
+            .iter()
+            .enumerate()
+            .map(|(i, q)| q.map(|c| c * f64::sqrt(scales[(i + i / 24) % 4])))
+            .collect();
+        let starts = &keys[..24];
+        // Each end on its start's side (the kernels' domain either way), then across (the
+        // shorter way's flip, in the domain only when asked for).
+        let side = |sign: f64| -> Vec<[f64; 4]> {
+            (0..24)
+                .map(|i| {
+                    let dot: f64 = (0..4).map(|c| starts[i][c] * keys[24 + i][c]).sum();
+                    keys[24 + i].map(|c| c * sign * dot.signum())
+                })
+                .collect()
+        };
+        let s: Vec<f64> = (0..24).map(|i| i as f64 / 23.0).collect();
+        let t: Vec<f64> = (0..24).map(|i| i as f64 * 0.4).collect();
+        let mut out = vec![0.0; 96];
+        let cases = [
+            (BatchKind::Slerp, 1.0, false),
+            (BatchKind::Slerp, 1.0, true),
+            (BatchKind::Slerp, -1.0, true),
+            (BatchKind::KliExact, 1.0, false),
+            (BatchKind::KliExact, 1.0, true),
+            (BatchKind::KliExact, -1.0, true),
+            (BatchKind::Nlerp, 1.0, true),
+            (BatchKind::Nlerp, -1.0, true),
+        ];
+        for (kind, sign, shortest) in cases {
+            let ends = side(sign);
+            let parameters = if kind == BatchKind::KliExact { &t } else { &s };
+            assert!(
+                fast::run(kind, &flat(starts), &flat(&ends), parameters, &mut out, shortest),
+                "{kind:?}: the fast kernel refused nearly unit inputs"
+            );
+            for i in 0..24 {
+                let (p, r, x) = (starts[i], ends[i], parameters[i]);
+                let expected = match kind {
+                    BatchKind::Slerp => {
+                        to_wxyz(crate::slerp(from_wxyz(p), from_wxyz(r), x, shortest).unwrap())
+                    }
+                    BatchKind::KliExact => {
+                        to_wxyz(kli_exact(from_wxyz(p), from_wxyz(r), x, shortest).unwrap())
+                    }
+                    BatchKind::Nlerp => nlerp_by_definition(p, r, x),
+                };
+                let gap = largest_gap(&out[4 * i..4 * i + 4], &expected);
+                assert!(gap < 2e-15, "{kind:?} {sign} pair {i}, parameter {x}: {gap:e}");
+            }
+        }
+    }
+
+    #[test]
+    fn nlerp_outside_the_fast_kernel_is_its_definition() {
+        // Far from unit (scaled by powers of two, so exactly the same directions) and
+        // extrapolated: the general loop, pair by pair. Pair 0's dot is exactly 0 (r kept),
+        // pair 1's is negative (r negated).
+        let mut keys = exact_units(16);
+        keys[0] = [1.0, 0.0, 0.0, 0.0];
+        keys[8] = [0.0, 1.0, 0.0, 0.0];
+        keys[1] = [0.5, 0.5, 0.5, 0.5];
+        keys[9] = [-1.0, 0.0, 0.0, 0.0];
+        let scaled: Vec<[f64; 4]> =
+            keys.iter().enumerate().map(|(i, q)| q.map(|c| c * 2f64.powi(i as i32 - 7))).collect();
+        let s = [0.25, 0.7, -2.0, 3.5, 0.0, 1.0, 1e3, -0.5];
+        let (mut general, mut fast) = (vec![0.0; 32], vec![0.0; 32]);
+        nlerp_batch(&flat(&scaled[..8]), &flat(&scaled[8..]), &s, &mut general).unwrap();
+        // The same directions, unit, in [0, 1]: the fast kernel, which must agree.
+        let inside = s.map(|x| x.clamp(0.0, 1.0));
+        nlerp_batch(&flat(&keys[..8]), &flat(&keys[8..]), &inside, &mut fast).unwrap();
+        for i in 0..8 {
+            let expected = nlerp_by_definition(keys[i], keys[8 + i], s[i]);
+            let gap = largest_gap(&general[4 * i..4 * i + 4], &expected);
+            assert!(gap < 2e-15, "pair {i}, s = {}: {gap:e}", s[i]);
+            let expected = nlerp_by_definition(keys[i], keys[8 + i], inside[i]);
+            let gap = largest_gap(&fast[4 * i..4 * i + 4], &expected);
+            assert!(gap < 2e-15, "fast, pair {i}, s = {}: {gap:e}", inside[i]);
+        }
     }
 
     #[test]
