@@ -194,9 +194,17 @@ impl KliSpline {
     }
 }
 
-/// `L` as three bands (`L[a][a]`, `L[a][a+1]`, `L[a][a+2]`), and which samples are pinned.
+/// `L` as three bands (`L[a][a]`, `L[a][a+1]`, `L[a][a+2]`), the same energy as its terms
+/// (below), and which samples are pinned.
 struct Chain {
     bands: [Vec<f64>; 3],
+    /// `E = ½ Σ_j w_j |x_{j+1} − x_j|² + ½ Σ_j f_j |D_j|²`, `D_j = (x_{j+1} − x_j)/h_j −
+    /// (x_j − x_{j−1})/h_{j−1} = Σ_a c_a x_{j−1+a}` (MATH.md's energy on uneven times): `w_j`
+    /// and `(f_j, c)`. Summed this way, from differences of nearby samples, `E` and `Lx` round
+    /// to their own size; through `L`'s entries (up to `1/h³`) they round to `ε max_a Σ_b
+    /// |L_ab|`, which for close keys exceeds the change a Newton step makes.
+    stretch: Vec<f64>,
+    bend: Vec<(f64, [f64; 3])>,
     pinned: Vec<bool>,
     /// `max_a Σ_b |L_ab|`, the largest `|(Lx)_a|` could be for unit samples.
     norm: f64,
@@ -228,19 +236,23 @@ impl Chain {
         let n = times.len();
         let mut bands = [vec![0.0; n], vec![0.0; n], vec![0.0; n]];
         let mut add = |a: usize, b: usize, v: f64| bands[b - a][a] += v;
-        for j in 0..n - 1 {
-            let w = alpha / (times[j + 1] - times[j]);
+        let stretch: Vec<f64> = times.windows(2).map(|h| alpha / (h[1] - h[0])).collect();
+        for (j, &w) in stretch.iter().enumerate() {
             add(j, j, w);
             add(j + 1, j + 1, w);
             add(j, j + 1, -w);
         }
-        for j in 1..n - 1 {
-            let (h0, h1) = (times[j] - times[j - 1], times[j + 1] - times[j]);
-            let c = [1.0 / h0, -(1.0 / h0 + 1.0 / h1), 1.0 / h1];
-            let f = beta / (0.5 * (h0 + h1));
+        let bend: Vec<(f64, [f64; 3])> = times
+            .windows(3)
+            .map(|t| {
+                let (h0, h1) = (t[1] - t[0], t[2] - t[1]);
+                (beta / (0.5 * (h0 + h1)), [1.0 / h0, -(1.0 / h0 + 1.0 / h1), 1.0 / h1])
+            })
+            .collect();
+        for (j, &(f, c)) in bend.iter().enumerate() {
             for a in 0..3 {
                 for b in a..3 {
-                    add(j - 1 + a, j - 1 + b, f * c[a] * c[b]);
+                    add(j + a, j + b, f * c[a] * c[b]);
                 }
             }
         }
@@ -248,32 +260,51 @@ impl Chain {
             (a.saturating_sub(2)..=(a + 2).min(n - 1)).map(|b| bands_at(&bands, a, b).abs()).sum()
         };
         let norm = (0..n).map(row).fold(0.0, f64::max);
-        Self { bands, pinned, norm }
+        Self { bands, stretch, bend, pinned, norm }
     }
 
     fn l(&self, a: usize, b: usize) -> f64 {
         bands_at(&self.bands, a, b)
     }
 
+    /// `D_j` for each bending term, from the differences of neighbours.
+    fn second_differences(&self, x: &[DQuat]) -> impl Iterator<Item = DQuat> {
+        self.bend
+            .iter()
+            .zip(x.windows(3))
+            .map(|(&(_, c), x)| (x[2] - x[1]) * c[2] - (x[1] - x[0]) * c[0])
+    }
+
+    /// `Lx`, term by term: a stretch term adds `∓w_j (x_{j+1} − x_j)` at `j`, `j + 1`; a bend
+    /// adds `f_j c_a D_j` at `j − 1 + a`.
     fn apply(&self, x: &[DQuat]) -> Vec<DQuat> {
-        let n = x.len();
-        (0..n)
-            .map(|a| {
-                let (from, to) = (a.saturating_sub(2), (a + 2).min(n - 1));
-                (from..=to).fold(pure(DVec3::ZERO), |sum, b| sum + x[b] * self.l(a, b))
-            })
-            .collect()
+        let mut lx = vec![pure(DVec3::ZERO); x.len()];
+        for (j, (&w, x)) in self.stretch.iter().zip(x.windows(2)).enumerate() {
+            let pull = (x[1] - x[0]) * w;
+            lx[j] -= pull;
+            lx[j + 1] += pull;
+        }
+        for (j, (&(f, c), d)) in self.bend.iter().zip(self.second_differences(x)).enumerate() {
+            for (a, c) in c.into_iter().enumerate() {
+                lx[j + a] += d * (f * c);
+            }
+        }
+        lx
     }
 
     fn energy(&self, x: &[DQuat]) -> f64 {
-        0.5 * x.iter().zip(self.apply(x)).map(|(a, la)| a.dot(la)).sum::<f64>()
+        let stretch = self.stretch.iter().zip(x.windows(2));
+        let bend = self.bend.iter().zip(self.second_differences(x));
+        0.5 * (stretch.map(|(w, x)| w * (x[1] - x[0]).length_squared()).sum::<f64>()
+            + bend.map(|(&(f, ..), d)| f * d.length_squared()).sum::<f64>())
     }
 
     /// The gradients `g_j` at the free samples, the relative residual (0 for a chain at rest:
     /// where `|(Lx)_j|` is itself within rounding of `L`'s size, as for equal keys, the ratio
     /// would be rounding over rounding), and whether every `|g_j|` is within rounding of `L`'s
-    /// size (`8ε max_a Σ_b |L_ab|`: `(Lx)_j` is computed to no better), where no step can lower
-    /// the residual further.
+    /// size (`8ε max_a Σ_b |L_ab|`: a sample is stored to ε, so however `Lx` is summed, moving
+    /// the samples by their own rounding moves it that much), where no step can lower the
+    /// residual further.
     fn gradient(&self, x: &[DQuat], lx: &[DQuat], free: &[usize]) -> (Vec<DVec3>, f64, bool) {
         let g: Vec<DVec3> = free.iter().map(|&a| vector(x[a].conjugate() * lx[a])).collect();
         let scale = free.iter().map(|&a| lx[a].length()).fold(0.0, f64::max);
@@ -323,10 +354,10 @@ impl Chain {
         (max_iterations, residual)
     }
 
-    /// The next state along `d`: near the equilibrium (residual below 1e-6) the full Newton step
-    /// when it lowers the residual, since there `E` changes less than its own rounding; else the
-    /// Armijo step on `E` (halved until `E` drops by `1e-4 · step · slope`), or the full step if
-    /// even that fails.
+    /// The next state along `d`: near the equilibrium (`E`'s slope along `d` below `1e-10 E`, so
+    /// that a step changes `E` by less than its sum's rounding could hide: Armijo cannot judge
+    /// it) the full Newton step when it lowers the residual; else the Armijo step on `E` (halved
+    /// until `E` drops by `1e-4 · step · slope`), or the full step if even that fails.
     fn step(
         &self,
         x: &[DQuat],
@@ -336,10 +367,10 @@ impl Chain {
         residual: f64,
     ) -> Vec<DQuat> {
         let full = retract(x, free, d, 1.0);
-        if residual < 1e-6 && self.gradient(&full, &self.apply(&full), free).1 < residual {
+        let energy = self.energy(x);
+        if -slope < 1e-10 * energy && self.gradient(&full, &self.apply(&full), free).1 < residual {
             return full;
         }
-        let energy = self.energy(x);
         let mut step = 1.0;
         while step >= 1e-12 {
             let trial = retract(x, free, d, step);
@@ -475,7 +506,7 @@ mod tests {
     /// − E(e_a) − E(e_b)`, exact for a quadratic), the tangent gradient `g_a = vec(x̄_a (Lx)_a)` and
     /// Hessian `L_ab B_aᵀB_b − (x_a·(Lx)_a) δ_ab I` (`B_a`'s columns `x_a i, x_a j, x_a k`) on
     /// the free samples, the direction by faer's dense Cholesky (`−g` where it fails), the step:
-    /// below a residual of 1e-6 the full step if it lowers the residual, else Armijo's on `E`
+    /// where `|gᵀd| < 1e-10 E` the full step if it lowers the residual, else Armijo's on `E`
     /// from 1 halving down to 1e-12 (else the full step); `x_a ← normalise(x_a + x_a s d_a)`.
     /// The residual `max|g| / max|Lx|` (0 when `max|Lx| ≤ 8ε max_a Σ_b |L_ab|`); it stops at
     /// [`TOLERANCE`], or when the residual no longer halves below 1e-8 or with `max|g| ≤ 8ε
@@ -569,11 +600,11 @@ mod tests {
                 slope = -d.iter().map(|v| v * v).sum::<f64>();
             }
             let full = moved(&x, &d, 1.0);
-            let trial = if residual < 1e-6 && state(&full).2 < residual {
+            let e = energy(&x);
+            let trial = if -slope < 1e-10 * e && state(&full).2 < residual {
                 branches.near += 1;
                 full
             } else {
-                let e = energy(&x);
                 let mut s = 1.0;
                 loop {
                     if s < 1e-12 {
