@@ -525,16 +525,7 @@ mod tests {
             let (a, b) = chain_energy(x, times, alpha, beta);
             a + b
         };
-        let unit = |entries: &[usize]| {
-            let mut x = vec![DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0); n];
-            for &a in entries {
-                x[a].w += 1.0;
-            }
-            energy(&x)
-        };
-        let l = Mat::<f64>::from_fn(n, n, |a, b| {
-            if a == b { unit(&[a]) } else { unit(&[a, b]) - unit(&[a]) - unit(&[b]) }
-        });
+        let l = energy_matrix(times, alpha, beta);
         let norm = (0..n).map(|a| (0..n).map(|b| l[(a, b)].abs()).sum::<f64>()).fold(0.0, f64::max);
         let free: Vec<usize> = (0..n).filter(|&a| !pinned[a]).collect();
         let units = [
@@ -635,6 +626,50 @@ mod tests {
             }
         }
         (path, branches, residual, at_rounding)
+    }
+
+    /// `L` from MATH.md's energy `E = ½ Σ L_ab x_a·x_b` (`L_aa = 2E(e_a)`, `L_ab = E(e_a + e_b)
+    /// − E(e_a) − E(e_b)`, exact for a quadratic), `E` as the spline tests write it.
+    fn energy_matrix(times: &[f64], alpha: f64, beta: f64) -> Mat<f64> {
+        let n = times.len();
+        let unit = |entries: &[usize]| {
+            let mut x = vec![DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0); n];
+            for &a in entries {
+                x[a].w += 1.0;
+            }
+            let (a, b) = chain_energy(&x, times, alpha, beta);
+            a + b
+        };
+        Mat::<f64>::from_fn(n, n, |a, b| {
+            if a == b { 2.0 * unit(&[a]) } else { unit(&[a, b]) - unit(&[a]) - unit(&[b]) }
+        })
+    }
+
+    /// The chain's energy and `Lx`, summed term by term, and `L`'s bands (the Hessian's) are
+    /// MATH.md's energy and its matrix, on uneven times with both terms at work.
+    #[test]
+    fn the_terms_are_the_energy_and_its_matrix() {
+        let times = [0.0, 0.3, 0.5, 1.4, 1.5, 2.7, 3.0];
+        let (alpha, beta) = (0.3, 0.7);
+        let n = times.len();
+        let mut random = Random::new(5);
+        let x: Vec<DQuat> = (0..n).map(|_| random.unit_quaternion()).collect();
+        let chain = Chain::new(&times, alpha, beta, vec![false; n]);
+        let l = energy_matrix(&times, alpha, beta);
+        let (a, b) = chain_energy(&x, &times, alpha, beta);
+        let e = chain.energy(&x);
+        assert!((e - (a + b)).abs() <= 1e-13 * (a + b), "{e} vs {}", a + b);
+        let norm = (0..n).map(|a| (0..n).map(|b| l[(a, b)].abs()).sum::<f64>()).fold(0.0, f64::max);
+        let lx = chain.apply(&x);
+        for a in 0..n {
+            let expected =
+                (0..n).fold(DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0), |sum, b| sum + x[b] * l[(a, b)]);
+            assert!((lx[a] - expected).length() <= 1e-13 * norm, "(Lx)_{a}");
+            for b in 0..n {
+                assert!((chain.l(a, b) - l[(a, b)]).abs() <= 1e-13 * norm, "L_{a}{b}");
+            }
+        }
+        assert!((chain.norm - norm).abs() <= 1e-13 * norm);
     }
 
     /// Samples along SLERP between consecutive `keys`, `per` a segment, the last key last.
