@@ -320,8 +320,14 @@ mod imp {
     }
 }
 
-#[cfg(not(any(all(target_arch = "wasm32", target_feature = "simd128"), target_arch = "x86_64")))]
-mod imp {
+/// The plain lanes: the implementation where neither of the above is, and under test
+/// everywhere, so that the native tests check it lane by lane too (it is what wasm without
+/// `simd128` and every other target run).
+#[cfg(any(
+    test,
+    not(any(all(target_arch = "wasm32", target_feature = "simd128"), target_arch = "x86_64"))
+))]
+mod portable {
     #[derive(Clone, Copy)]
     pub struct Lanes(pub [f64; 2]);
     #[derive(Clone, Copy)]
@@ -423,6 +429,12 @@ mod imp {
         }
     }
 }
+
+#[cfg(not(any(
+    all(target_arch = "wasm32", target_feature = "simd128"),
+    target_arch = "x86_64"
+)))]
+use portable as imp;
 
 pub use imp::{Lanes, Mask};
 
@@ -559,6 +571,94 @@ impl BitAnd for Mask {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every operation of an implementation's lanes against the same operation on each `f64`
+    /// lane, bit for bit (signed zeros, subnormals, huge values and NaN among the inputs).
+    macro_rules! each_operation_is_the_scalar_one {
+        ($name:ident, $imp:path) => {
+            #[test]
+            fn $name() {
+                use $imp as lanes;
+                let values = [
+                    0.0,
+                    -0.0,
+                    1.0,
+                    -2.5,
+                    3.75,
+                    2.5,
+                    -3.5,
+                    0.1,
+                    5e-324,
+                    -1e300,
+                    7.0,
+                    1e300,
+                    f64::NAN,
+                ];
+                let bits = |x: [f64; 2]| x.map(f64::to_bits);
+                for (k, &a0) in values.iter().enumerate() {
+                    let (a1, b0, b1) =
+                        (values[(k + 3) % 13], values[(k + 5) % 13], values[(k + 8) % 13]);
+                    let (a, b) = (lanes::Lanes::new(a0, a1), lanes::Lanes::new(b0, b1));
+                    assert_eq!(bits(a.to_array()), bits([a0, a1]));
+                    let each = |f: fn(f64, f64) -> f64| bits([f(a0, b0), f(a1, b1)]);
+                    let case = format!("{a0:e}, {a1:e} with {b0:e}, {b1:e}");
+                    assert_eq!(bits(a.add(b).to_array()), each(|x, y| x + y), "{case}");
+                    assert_eq!(bits(a.sub(b).to_array()), each(|x, y| x - y), "{case}");
+                    assert_eq!(bits(a.mul(b).to_array()), each(|x, y| x * y), "{case}");
+                    assert_eq!(bits(a.div(b).to_array()), each(|x, y| x / y), "{case}");
+                    assert_eq!(bits(a.neg().to_array()), each(|x, _| -x), "{case}");
+                    assert_eq!(bits(a.abs().to_array()), each(|x, _| x.abs()), "{case}");
+                    assert_eq!(bits(a.sqrt().to_array()), each(|x, _| x.sqrt()), "{case}");
+                    assert_eq!(bits(a.max(b).to_array()), each(|x, y| if x < y { y } else { x }));
+                    let small = lanes::Lanes::new(a0 % 1e15, b0 % 1e15).round_ties_even();
+                    let rounded = [(a0 % 1e15).round_ties_even(), (b0 % 1e15).round_ties_even()];
+                    // (The sign of a zero is not kept: `(x + 1.5·2^52) − 1.5·2^52` is +0.)
+                    let same = |x: f64, y: f64| x == y || (x.is_nan() && y.is_nan());
+                    let [p, q] = small.to_array();
+                    assert!(same(p, rounded[0]) && same(q, rounded[1]), "{case}");
+                    let (one, zero) = (lanes::Lanes::new(1.0, 1.0), lanes::Lanes::new(0.0, 0.0));
+                    let picked = |m: lanes::Mask| lanes::Lanes::select(m, one, zero).to_array();
+                    let truth = |f: fn(f64, f64) -> bool| [f(a0, b0), f(a1, b1)].map(f64::from);
+                    assert_eq!(picked(a.le(b)), truth(|x, y| x <= y), "{case}");
+                    assert_eq!(picked(a.lt(b)), truth(|x, y| x < y), "{case}");
+                    assert_eq!(picked(a.eq(b)), truth(|x, y| x == y), "{case}");
+                    let (le, lt) = (a.le(b), a.lt(b));
+                    assert_eq!(picked(le.and(lt)), truth(|x, y| x < y), "{case}");
+                    assert_eq!(le.all(), a0 <= b0 && a1 <= b1, "{case}");
+                    let (low, high) = a.interleave(b);
+                    assert_eq!(
+                        (bits(low.to_array()), bits(high.to_array())),
+                        (bits([a0, b0]), bits([a1, b1]))
+                    );
+                }
+                for (x, y) in [(true, true), (false, false)] {
+                    let m = lanes::Mask::splat(x);
+                    assert_eq!(m.all(), x);
+                    assert_eq!(
+                        lanes::Lanes::select(
+                            m,
+                            lanes::Lanes::new(1.0, 2.0),
+                            lanes::Lanes::new(3.0, 4.0)
+                        )
+                        .to_array(),
+                        if y { [1.0, 2.0] } else { [3.0, 4.0] }
+                    );
+                }
+                // 2^k from bits: (k + 1023 + 2^52) less 0x4330… shifted into the exponent.
+                for k in [-1022.0, -3.0, 0.0, 5.0, 1023.0] {
+                    let biased = lanes::Lanes::new(
+                        k + 1023.0 + 4_503_599_627_370_496.0,
+                        1023.0 + 4_503_599_627_370_496.0,
+                    );
+                    let power = biased.bits_sub_shl52(0x4330_0000_0000_0000).to_array();
+                    assert_eq!(power, [2f64.powf(k), 1.0], "2^{k}");
+                }
+            }
+        };
+    }
+
+    each_operation_is_the_scalar_one!(the_lanes_are_each_lanes_f64, super::imp);
+    each_operation_is_the_scalar_one!(the_portable_lanes_are_each_lanes_f64, super::portable);
 
     #[test]
     fn exp_is_within_an_ulp_or_two() {
