@@ -70,7 +70,9 @@ impl std::str::FromStr for Method {
 /// A mean and how it was reached.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Average {
-    /// The mean rotation, a unit quaternion (its sign is the data's majority hemisphere's).
+    /// The mean rotation, a unit quaternion. Its sign: the chordal mean's first non-zero
+    /// component (`w, x, y, z`) is positive, and the other means are on its side (where it is
+    /// not unique, the heaviest datum's), whatever the data's own signs.
     pub rotation: DQuat,
     /// Iterations taken (0 for a closed form).
     pub iterations: usize,

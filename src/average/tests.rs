@@ -327,3 +327,150 @@ fn the_median_on_a_line_follows_vardi_and_zhang() {
     let got = median::median(&data, DQuat::IDENTITY);
     assert_eq!((got.rotation, got.iterations, got.residual), (DQuat::IDENTITY, 1, 0.0));
 }
+
+/// The weighted RMS angle from each mean to the data, against values worked by hand: four
+/// identities and a half turn about z put the chordal mean at the identity (the angles 0, 0, 0,
+/// 0 and 180°: `π/√5`) and Karcher's 36° towards the half turn (36° four times and 144°); the
+/// paper's pair weighted 3:1, from `2 acos |q·r|` at each mean.
+#[test]
+fn the_dispersion_is_the_weighted_rms_angle() {
+    let data = [DQuat::IDENTITY; 4]
+        .into_iter()
+        .chain([from_wxyz([0.0, 0.0, 0.0, 1.0])])
+        .collect::<Vec<_>>();
+    let chordal = average(&data, None, Method::Chordal).unwrap().dispersion;
+    assert!((chordal - std::f64::consts::PI / 5f64.sqrt()).abs() < 1e-14, "{chordal}");
+    let karcher = average(&data, None, Method::Geodesic).unwrap().dispersion;
+    let want = ((4.0 * 36f64.powi(2) + 144f64.powi(2)) / 5.0).sqrt().to_radians();
+    assert!((karcher - want).abs() < 1e-12, "{karcher} against {want}");
+    let weights = [3.0, 1.0];
+    for method in [Method::Chordal, Method::Quaternion, Method::Geodesic, Method::Median] {
+        let mean = average([p(), r()], Some(&weights), method).unwrap();
+        let d = |x: DQuat| 2.0 * mean.rotation.dot(x).abs().min(1.0).acos();
+        let want = ((3.0 * d(p()).powi(2) + d(r()).powi(2)) / 4.0).sqrt();
+        assert!((mean.dispersion - want).abs() < 1e-12, "{method:?}: {}", mean.dispersion);
+    }
+}
+
+/// Data need not be unit: a datum scaled by any factor is the same rotation, so every mean, its
+/// dispersion and its residual are the unit data's.
+#[test]
+fn scaled_data_have_the_unit_datas_means() {
+    let mut random = Random::new(29);
+    let truth = random.unit_quaternion();
+    let data = measurements(&mut random, truth, 12, 0.4, 0.0);
+    let scaled: Vec<DQuat> =
+        data.iter().enumerate().map(|(j, q)| *q * [0.5, 3.0, 1e-3, 7.5][j % 4]).collect();
+    let weights: Vec<f64> = (0..12).map(|j| 1.0 + j as f64 / 4.0).collect();
+    for method in [Method::Chordal, Method::Quaternion, Method::Geodesic, Method::Median] {
+        let (unit, other) = (
+            average(&data, Some(&weights), method).unwrap(),
+            average(&scaled, Some(&weights), method).unwrap(),
+        );
+        same(other.rotation, to_wxyz(unit.rotation), 1e-12);
+        assert!((other.dispersion - unit.dispersion).abs() < 1e-12, "{method:?}");
+        assert!((other.residual - unit.residual).abs() < 1e-12, "{method:?}");
+    }
+}
+
+/// The iterative means start at the chordal mean, or, where it is not unique, at the heaviest
+/// datum (the first of equals).
+#[test]
+fn the_iterative_means_start_at_the_chordal_mean_or_the_heaviest_datum() {
+    let (one, i, j) =
+        (DQuat::IDENTITY, from_wxyz([0.0, 1.0, 0.0, 0.0]), from_wxyz([0.0, 0.0, 1.0, 0.0]));
+    let data = |q: &[DQuat], w: &[f64]| {
+        Data::new(q.iter(), Weights::new(Some(w), q.len()).unwrap()).unwrap()
+    };
+    // M = diag(2, 2, 0, 0) and diag(2, 2, 1, 0): ties.
+    assert_eq!(start(&data(&[i, one, i], &[1.0, 2.0, 1.0])), one);
+    assert_eq!(start(&data(&[one, i, j], &[2.0, 2.0, 1.0])), one);
+    assert_eq!(start(&data(&[j, one, i], &[1.0, 2.0, 2.0])), one);
+    let unique = data(&[p(), r()], &[3.0, 1.0]);
+    assert_eq!(start(&unique), chordal::top(&unique.scatter).unwrap().0);
+}
+
+/// The chordal mean's tie test is relative to the top eigenvalue: two equal weights a gap apart
+/// (the top eigenvalues `w(1 ± g)`) are refused below the tie's 1e-12 and accepted above it,
+/// whatever the total weight; its eigen-residual is rounding's, relative to the eigenvalue.
+#[test]
+fn the_chordal_tie_and_residual_are_relative() {
+    for scale in [1e-3, 1.0, 1e6] {
+        for (gap, unique) in [(2e-13, false), (5e-12, true)] {
+            let weights = [scale * (1.0 + gap), scale * (1.0 - gap)];
+            let result = average(
+                [DQuat::IDENTITY, from_wxyz([0.0, 1.0, 0.0, 0.0])],
+                Some(&weights),
+                Method::Chordal,
+            );
+            assert_eq!(result.is_ok(), unique, "scale {scale}, gap {gap}");
+        }
+        let mut random = Random::new(31);
+        let truth = random.unit_quaternion();
+        let data = measurements(&mut random, truth, 20, 0.5, 0.3);
+        let weights: Vec<f64> = (0..20).map(|j| scale * (1.0 + j as f64)).collect();
+        let residual = average(&data, Some(&weights), Method::Chordal).unwrap().residual;
+        assert!(residual < 1e-14, "scale {scale}: {residual:e}");
+    }
+}
+
+/// The chordal mean is given with its first non-zero component (`w, x, y, z`) positive, as
+/// documented: for a mean with `w = 0` exactly (`M = diag(0, 2, 1, 0)`: `i`), and for data whose
+/// eigenvector came out either way.
+#[test]
+fn the_chordal_mean_has_its_first_nonzero_component_positive() {
+    for x in [1.0, -1.0] {
+        let data = [from_wxyz([0.0, x, 0.0, 0.0]), from_wxyz([0.0, 0.0, x, 0.0])];
+        let mean = average(data, Some(&[2.0, 1.0]), Method::Chordal).unwrap().rotation;
+        assert_eq!(to_wxyz(mean), [0.0, 1.0, 0.0, 0.0]);
+    }
+    let mut random = Random::new(37);
+    let (mut negative, mut positive) = (0, 0);
+    for _ in 0..40 {
+        let truth = random.unit_quaternion();
+        let data = measurements(&mut random, truth, 5, 0.3, 0.0);
+        let (q, _) = chordal::top(&scatter(&data, None)).unwrap();
+        let v = eigen(scatter(&data, None)).1[0];
+        if v[0] < 0.0 {
+            negative += 1
+        } else {
+            positive += 1
+        }
+        assert!(q.w > 0.0, "{q:?}");
+        // The other means on its side, whatever the data's signs (here all on the other).
+        let flipped: Vec<DQuat> =
+            data.iter().map(|r| if r.dot(q) > 0.0 { -*r } else { *r }).collect();
+        for method in [Method::Quaternion, Method::Geodesic, Method::Median] {
+            let mean = average(&flipped, None, method).unwrap().rotation;
+            assert!(mean.dot(q) > 0.0, "{method:?}");
+        }
+    }
+    assert!(
+        negative > 0 && positive > 0,
+        "the eigensolver's signs: {negative} negative, {positive} positive"
+    );
+}
+
+/// One step of the chordal flow is RK4 for `q' = M q − (qᵀM q) q`, written out here, then
+/// normalised.
+#[test]
+fn a_step_of_the_chordal_flow_is_rk4() {
+    let mut random = Random::new(41);
+    let truth = random.unit_quaternion();
+    let data = measurements(&mut random, truth, 6, 0.6, 0.0);
+    let m = scatter(&data, None).map(|row| row.map(|x| x / 6.0));
+    let start = random.unit_quaternion();
+    let f = |q: DQuat| {
+        let v = to_wxyz(q);
+        let mq = from_wxyz([0, 1, 2, 3].map(|i| (0..4).map(|j| m[i][j] * v[j]).sum::<f64>()));
+        mq - q * q.dot(mq)
+    };
+    let dt = 0.7;
+    let k1 = f(start);
+    let k2 = f(start + k1 * (dt / 2.0));
+    let k3 = f(start + k2 * (dt / 2.0));
+    let k4 = f(start + k3 * dt);
+    let want = (start + (k1 + k2 * 2.0 + k3 * 2.0 + k4) * (dt / 6.0)).normalize();
+    let got = chordal_flow(m, start, dt).nth(1).unwrap();
+    same(got, to_wxyz(want), 1e-15);
+}
