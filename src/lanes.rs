@@ -631,6 +631,9 @@ mod tests {
                         (bits([a0, b0]), bits([a1, b1]))
                     );
                 }
+                // pmax keeps `self` unless `self < o`: of equal zeros, the first.
+                let zeros = lanes::Lanes::new(0.0, -0.0).max(lanes::Lanes::new(-0.0, 0.0));
+                assert_eq!(bits(zeros.to_array()), bits([0.0, -0.0]));
                 for (x, y) in [(true, true), (false, false)] {
                     let m = lanes::Mask::splat(x);
                     assert_eq!(m.all(), x);
