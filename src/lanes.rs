@@ -631,6 +631,15 @@ mod tests {
                         (bits([a0, b0]), bits([a1, b1]))
                     );
                 }
+                // Equal lanes: `le` but not `lt` (NaN neither), so `and` of the two is `lt`.
+                for &x in &values {
+                    let a = lanes::Lanes::new(x, x);
+                    let (one, zero) = (lanes::Lanes::new(1.0, 1.0), lanes::Lanes::new(0.0, 0.0));
+                    let picked = |m: lanes::Mask| lanes::Lanes::select(m, one, zero).to_array();
+                    assert_eq!(picked(a.lt(a)), [0.0; 2], "{x}");
+                    assert_eq!(picked(a.le(a)), [f64::from(!x.is_nan()); 2], "{x}");
+                    assert_eq!(picked(a.le(a).and(a.lt(a))), [0.0; 2], "{x}");
+                }
                 // pmax keeps `self` unless `self < o`: of equal zeros, the first.
                 let zeros = lanes::Lanes::new(0.0, -0.0).max(lanes::Lanes::new(-0.0, 0.0));
                 assert_eq!(bits(zeros.to_array()), bits([0.0, -0.0]));
