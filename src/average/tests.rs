@@ -390,26 +390,23 @@ fn the_iterative_means_start_at_the_chordal_mean_or_the_heaviest_datum() {
     assert_eq!(start(&unique), chordal::top(&unique.scatter).unwrap().0);
 }
 
-/// The chordal mean's tie test is relative to the top eigenvalue: two equal weights a gap apart
-/// (the top eigenvalues `w(1 ± g)`) are refused below the tie's 1e-12 and accepted above it,
-/// whatever the total weight; its eigen-residual is rounding's, relative to the eigenvalue.
+/// The chordal mean's tie test is relative to the top eigenvalue: the top two eigenvalues
+/// `w(1 ± g)` are refused below the tie's 1e-12 and accepted above it, whatever the scale `w`
+/// (`average` normalises the weights, so `top` is called on the scaled matrices); its
+/// eigen-residual is rounding's, relative to the eigenvalue.
 #[test]
 fn the_chordal_tie_and_residual_are_relative() {
-    for scale in [1e-3, 1.0, 1e6] {
+    for scale in [1e-6, 1.0, 1e6] {
         for (gap, unique) in [(2e-13, false), (5e-12, true)] {
-            let weights = [scale * (1.0 + gap), scale * (1.0 - gap)];
-            let result = average(
-                [DQuat::IDENTITY, from_wxyz([0.0, 1.0, 0.0, 0.0])],
-                Some(&weights),
-                Method::Chordal,
-            );
-            assert_eq!(result.is_ok(), unique, "scale {scale}, gap {gap}");
+            let (a, b) = (scale * (1.0 + gap), scale * (1.0 - gap));
+            let m = [[a, 0.0, 0.0, 0.0], [0.0, b, 0.0, 0.0], [0.0; 4], [0.0; 4]];
+            assert_eq!(chordal::top(&m).is_ok(), unique, "scale {scale}, gap {gap}");
         }
         let mut random = Random::new(31);
         let truth = random.unit_quaternion();
         let data = measurements(&mut random, truth, 20, 0.5, 0.3);
         let weights: Vec<f64> = (0..20).map(|j| scale * (1.0 + j as f64)).collect();
-        let residual = average(&data, Some(&weights), Method::Chordal).unwrap().residual;
+        let (_, residual) = chordal::top(&scatter(&data, Some(&weights))).unwrap();
         assert!(residual < 1e-14, "scale {scale}: {residual:e}");
     }
 }
@@ -473,4 +470,41 @@ fn a_step_of_the_chordal_flow_is_rk4() {
     let want = (start + (k1 + k2 * 2.0 + k3 * 2.0 + k4) * (dt / 6.0)).normalize();
     let got = chordal_flow(m, start, dt).nth(1).unwrap();
     same(got, to_wxyz(want), 1e-15);
+}
+
+/// Jacobi's eigenvalues against the closed form on a matrix whose off-diagonal entries sum to
+/// zero (`[[2, 1, −1, 0], [1, 2, 0, 0], [−1, 0, 2, 0], [0, 0, 0, 1]]`: `2 + √2, 2, 1, 2 − √2`),
+/// each `A v = λ v`, and the same relative accuracy for the matrix scaled by 1e-12 and 1e12.
+#[test]
+fn the_eigenvalues_of_a_matrix_with_cancelling_entries() {
+    let a =
+        [[2.0, 1.0, -1.0, 0.0], [1.0, 2.0, 0.0, 0.0], [-1.0, 0.0, 2.0, 0.0], [0.0, 0.0, 0.0, 1.0]];
+    let want = [2.0 + 2f64.sqrt(), 2.0, 1.0, 2.0 - 2f64.sqrt()];
+    for scale in [1e-12, 1.0, 1e12] {
+        let (values, vectors) = eigen(a.map(|row| row.map(|x| x * scale)));
+        for k in 0..4 {
+            assert!((values[k] / scale - want[k]).abs() < 1e-14, "scale {scale}: {values:?}");
+            let v = vectors[k];
+            for i in 0..4 {
+                let av: f64 = (0..4).map(|j| a[i][j] * v[j]).sum();
+                assert!((av - want[k] * v[i]).abs() < 1e-14, "scale {scale}, λ_{k}");
+            }
+        }
+    }
+}
+
+/// The quaternion mean aligns each datum to the chordal mean's side: one at right angles to it
+/// keeps its sign (`1` weighted 3 and `i`: the chordal mean is `1` exactly, the quaternion mean
+/// `(3 + i)/√10`, not `(3 − i)/√10`). Left unaligned, data that nearly cancel are refused
+/// relative to their total weight: 500 copies of `1` and of `−(1 + 1e-13 i)` sum to `5e-11 i`.
+#[test]
+fn the_quaternion_means_signs_and_cancellation() {
+    let (one, i) = (DQuat::IDENTITY, from_wxyz([0.0, 1.0, 0.0, 0.0]));
+    let mean = average([one, i], Some(&[3.0, 1.0]), Method::Quaternion).unwrap().rotation;
+    let want = [3.0 / 10f64.sqrt(), 1.0 / 10f64.sqrt(), 0.0, 0.0];
+    assert!((to_wxyz(mean)[1] - want[1]).abs() < 1e-15 && (mean.w - want[0]).abs() < 1e-15);
+    let near = -from_wxyz([1.0, 1e-13, 0.0, 0.0]).normalize();
+    let data: Vec<DQuat> = (0..1000).map(|j| if j % 2 == 0 { one } else { near }).collect();
+    let error = quaternion_mean(&data, None, false).unwrap_err();
+    assert!(error.to_string().contains("sum to zero"), "{error}");
 }
