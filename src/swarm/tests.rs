@@ -163,6 +163,10 @@ fn bad_options_name_the_option() {
     assert_eq!(bad(SwarmOptions { graph: Graph::Leader, leaders: 0, ..base }), "leaders");
     assert_eq!(bad(SwarmOptions { graph: Graph::Leader, count: 3, leaders: 4, ..base }), "leaders");
     assert_eq!("star".parse::<Graph>().unwrap_err().argument(), "graph");
+    // The JavaScript API's names, each read back as its graph.
+    for (graph, name) in [(Graph::All, "all"), (Graph::Ring, "ring"), (Graph::Leader, "leader")] {
+        assert_eq!((graph.name(), name.parse::<Graph>().unwrap()), (name, graph));
+    }
     let mut s = Swarm::new(&base).unwrap();
     assert_eq!(s.step(0.0, 1).unwrap_err().argument(), "dt");
     assert_eq!(s.set_quaternions(&[DQuat::IDENTITY]).unwrap_err().argument(), "quaternions");
