@@ -187,3 +187,48 @@ fn a_call_takes_up_to_a_million_steps_and_refuses_more() {
     assert_eq!(e.argument(), "steps");
     assert!((one.time() - 1.0).abs() < 1e-9, "a refused call runs no step");
 }
+
+/// The swarm's measures on two oscillators worked by hand, `1` and `(1 + i)/√2` with `K = 3`:
+/// `m = (1 + (1 + i)/√2)/2`, so `R = |m|`, the potential `(K N/2)|m|²`, `λ_max(Q) = (1 +
+/// |q·p|)/2` (the two eigenvalues of `½(qqᵀ + ppᵀ)` are `(1 ± q·p)/2`), and each Hopf point the
+/// body x-axis rotated, `q x q̄`.
+#[test]
+fn the_measures_of_two_oscillators() {
+    let mut s = swarm(2, 3.0, Graph::All, 1);
+    let (one, p) = (DQuat::IDENTITY, from_wxyz([0.5f64.sqrt(), 0.5f64.sqrt(), 0.0, 0.0]));
+    s.set_quaternions(&[one, p]).unwrap();
+    let m = (one + p) * 0.5;
+    assert!((s.order_parameter() - m.length()).abs() < 1e-15);
+    assert!((s.potential() - 3.0 * m.length_squared()).abs() < 1e-14, "{}", s.potential());
+    let c = 0.5f64.sqrt();
+    assert!((s.rotation_order() - (1.0 + c) / 2.0).abs() < 1e-14, "{}", s.rotation_order());
+    let points = s.hopf_points();
+    assert_eq!(points.len(), 2);
+    for (point, q) in points.iter().zip([one, p]) {
+        let x = q * DQuat::from_xyzw(1.0, 0.0, 0.0, 0.0) * q.conjugate();
+        assert!((*point - DVec3::new(x.x, x.y, x.z)).length() < 1e-15, "{point:?}");
+    }
+}
+
+/// The ring's field written out from MATH.md, `f_i = w_i q_i + (K/N) Σ_{j = i ± 1} (q_j −
+/// (q_i·q_j) q_i)`, for five oscillators and for two (one edge, counted once).
+#[test]
+fn the_rings_field_is_the_neighbours_pull() {
+    let mut random = crate::swarm::Random::new(43);
+    for n in [5, 2] {
+        let state: Vec<DQuat> = (0..n).map(|_| random.unit_quaternion()).collect();
+        let frequencies: Vec<DQuat> = (0..n)
+            .map(|_| DQuat::from_xyzw(random.uniform(), random.uniform(), -0.3, 0.0))
+            .collect();
+        let mut out = vec![DQuat::IDENTITY; n];
+        field(&state, &frequencies, 1.7, Graph::Ring, 0, &mut out);
+        for i in 0..n {
+            let neighbours = if n == 2 { vec![1 - i] } else { vec![(i + n - 1) % n, (i + 1) % n] };
+            let pull = neighbours.iter().fold(DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0), |sum, &j| {
+                sum + (state[j] - state[i] * state[i].dot(state[j]))
+            });
+            let want = frequencies[i] * state[i] + pull * (1.7 / n as f64);
+            assert!((out[i] - want).length() < 1e-15, "N = {n}, i = {i}");
+        }
+    }
+}
