@@ -307,6 +307,80 @@ mod tests {
         );
     }
 
+    /// `max_time` allows the most steps `n` with `n δ ≤ max_time`, to the step: the paper's
+    /// example needs 1166 steps of 0.01, so a `max_time` of 11.66 lets it arrive and 11.65 does
+    /// not (11.66/0.01 is 1165.9999999999998 in floats: the rounding is forgiven).
+    #[test]
+    fn max_time_allows_exactly_its_steps() {
+        let (p, r) = paper();
+        let reach = |max_time| kli(p, r, &KliOptions { max_time, ..Default::default() });
+        assert_eq!(reach(11.66).unwrap().steps(), 1166);
+        let e = reach(11.65).unwrap_err();
+        assert_eq!(e.kind().code(), "not-reached", "{e}");
+    }
+
+    /// At the sample limit: a run whose `max_time` allows exactly `MAX_SAMPLES − 1` steps and
+    /// does not arrive is `not-reached` (the time ran out); one that would allow one more is
+    /// refused as too many steps, naming the limit.
+    #[test]
+    fn the_sample_limit_and_max_time_are_told_apart() {
+        let (p, r) = paper();
+        let limit = MAX_SAMPLES - 1;
+        // Steps of 2⁻¹⁷ (exact in binary): 10⁶ of them end near t = 7.6, short of T* = 11.66.
+        let step = 2f64.powi(-17);
+        let run = |steps: usize| {
+            let options = KliOptions { step, max_time: steps as f64 * step, ..Default::default() };
+            kli(p, r, &options).unwrap_err()
+        };
+        let exact = run(limit);
+        assert_eq!(exact.kind().code(), "not-reached", "{exact}");
+        let over = run(limit + 1);
+        assert_eq!(
+            over.kind(),
+            &ErrorKind::TooManySteps { steps: (limit + 1) as f64, limit },
+            "{over}"
+        );
+    }
+
+    /// Leaving S³ is blamed on the step where the sphere attracts (`p·r ≥ 0`, at the time of the
+    /// step that left) and on the integrator on the long way round.
+    #[test]
+    fn leaving_the_sphere_names_the_step_or_the_integrator() {
+        let (one, i) = (from_wxyz([1.0, 0.0, 0.0, 0.0]), from_wxyz([0.0, 1.0, 0.0, 0.0]));
+        let e = kli(one, i, &KliOptions { step: 5.0, ..Default::default() }).unwrap_err();
+        assert_eq!((e.argument(), e.kind().code()), ("step", "unstable"), "{e}");
+        let ErrorKind::Unstable { time, .. } = e.kind() else { unreachable!() };
+        assert_eq!(*time, 5.0, "{e}");
+        let r = from_wxyz([-0.6, 0.8, 0.0, 0.0]);
+        let options = KliOptions { step: 5.0, shortest_path: false, ..Default::default() };
+        let e = kli(one, r, &options).unwrap_err();
+        assert_eq!((e.argument(), e.kind().code()), ("integrator", "left-sphere"), "{e}");
+    }
+
+    /// The path's accessors against independent values: each Hopf point is the body x-axis
+    /// rotated (`q x q̄`), the target is `−r` on the shorter way from `p·r < 0`, the options are
+    /// those given, and `exact_at` is the closed form.
+    #[test]
+    fn the_paths_accessors() {
+        let p = from_wxyz([0.0, 0.0, 0.0, 1.0]);
+        let r = from_wxyz([-0.5; 4]);
+        let options = KliOptions { step: 0.02, tolerance: 1e-6, ..Default::default() };
+        let path = kli(p, r, &options).unwrap();
+        assert_eq!(path.target(), -r);
+        assert_eq!(path.options(), &options);
+        let curve = path.hopf_curve();
+        assert_eq!(curve.len(), path.quaternions().len());
+        for (point, q) in curve.iter().zip(path.quaternions()) {
+            let x = *q * from_wxyz([0.0, 1.0, 0.0, 0.0]) * q.conjugate();
+            assert!((*point - DVec3::new(x.x, x.y, x.z)).length() < 1e-15);
+        }
+        for t in [0.0, 0.5, 3.0] {
+            let want = crate::closed_form::kli_exact(p, r, t, true).unwrap();
+            assert!((path.exact_at(t).unwrap() - want).length() < 1e-15, "t = {t}");
+        }
+        assert_eq!(path.exact_at(-1.0).unwrap_err().argument(), "t");
+    }
+
     #[test]
     fn a_step_too_large_is_blamed_on_the_step() {
         // δ = 5 on the paper's pair (p·r > 0, the sphere attracts): RK4 is unstable there.

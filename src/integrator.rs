@@ -94,6 +94,19 @@ mod tests {
     use super::*;
     use crate::quaternion::from_wxyz;
 
+    /// Each integrator displays as its name, padded as a `str` is.
+    #[test]
+    fn names_are_displayed() {
+        for (integrator, name) in [
+            (Integrator::Rk4, "rk4"),
+            (Integrator::Euler, "euler"),
+            (Integrator::Geodesic, "geodesic"),
+        ] {
+            assert_eq!(format!("{integrator}"), name);
+            assert_eq!(format!("[{integrator:>9}]"), format!("[{name:>9}]"));
+        }
+    }
+
     /// Error at t = 1 against the closed form φ(t) = 2 atan(tan(φ0/2) e^-t) on the paper's pair.
     fn error_at_one(integrator: Integrator, h: f64) -> f64 {
         let p = from_wxyz([0.0, 0.0, 0.0, 1.0]);
