@@ -255,8 +255,12 @@ mod tests {
         let p = from_wxyz([0.5; 4]);
         let r = -p + from_wxyz([0.5, -0.5, 0.5, -0.5]) * 2e-15;
         let options = KliOptions { shortest_path: false, ..Default::default() };
-        let err = kli(p, r, &options).unwrap_err().to_string();
-        assert!(err.starts_with("shortest_path is false and p is so close to -r"), "{err}");
+        let e = kli(p, r, &options).unwrap_err();
+        assert!(e.to_string().starts_with("shortest_path is false and p is so close to -r"), "{e}");
+        // Stuck from the start: at t = 0, nearly 2 from the target.
+        let ErrorKind::Stalled { time, distance } = e.kind() else { unreachable!() };
+        assert_eq!(*time, 0.0);
+        assert!((distance - 2.0).abs() < 1e-14, "{distance}");
     }
 
     #[test]
