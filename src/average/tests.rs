@@ -78,12 +78,14 @@ fn a_tie_is_refused_never_picked() {
     assert!(error.to_string().starts_with("quaternions have no unique mean"), "{error}");
 }
 
+/// Four identities and the half turn about z, `k`.
+fn four_identities_and_a_half_turn_about_z() -> Vec<DQuat> {
+    [DQuat::IDENTITY; 4].into_iter().chain([from_wxyz([0.0, 0.0, 0.0, 1.0])]).collect()
+}
+
 #[test]
 fn four_identities_and_a_half_turn() {
-    let data = [DQuat::IDENTITY; 4]
-        .into_iter()
-        .chain([from_wxyz([0.0, 0.0, 0.0, 1.0])])
-        .collect::<Vec<_>>();
+    let data = four_identities_and_a_half_turn_about_z();
     // M = diag(4, 0, 0, 1): the identity exactly.
     assert_eq!(mean(&data, None, Method::Chordal), DQuat::IDENTITY);
     // Karcher's is pulled 36° (180°/5) towards the half turn about z.
@@ -334,10 +336,7 @@ fn the_median_on_a_line_follows_vardi_and_zhang() {
 /// paper's pair weighted 3:1, from `2 acos |q·r|` at each mean.
 #[test]
 fn the_dispersion_is_the_weighted_rms_angle() {
-    let data = [DQuat::IDENTITY; 4]
-        .into_iter()
-        .chain([from_wxyz([0.0, 0.0, 0.0, 1.0])])
-        .collect::<Vec<_>>();
+    let data = four_identities_and_a_half_turn_about_z();
     let chordal = average(&data, None, Method::Chordal).unwrap().dispersion;
     assert!((chordal - std::f64::consts::PI / 5f64.sqrt()).abs() < 1e-14, "{chordal}");
     let karcher = average(&data, None, Method::Geodesic).unwrap().dispersion;
