@@ -267,24 +267,17 @@ impl Chain {
         bands_at(&self.bands, a, b)
     }
 
-    /// `D_j` for each bending term, from the differences of neighbours.
-    fn second_differences(&self, x: &[DQuat]) -> impl Iterator<Item = DQuat> {
-        self.bend
-            .iter()
-            .zip(x.windows(3))
-            .map(|(&(_, c), x)| (x[2] - x[1]) * c[2] - (x[1] - x[0]) * c[0])
-    }
-
     /// `Lx`, term by term: a stretch term adds `∓w_j (x_{j+1} − x_j)` at `j`, `j + 1`; a bend
-    /// adds `f_j c_a D_j` at `j − 1 + a`.
+    /// adds `f_j c_a D_j` at `j − 1 + a`, `D_j` from the differences of neighbours.
     fn apply(&self, x: &[DQuat]) -> Vec<DQuat> {
         let mut lx = vec![pure(DVec3::ZERO); x.len()];
-        for (j, (&w, x)) in self.stretch.iter().zip(x.windows(2)).enumerate() {
-            let pull = (x[1] - x[0]) * w;
+        for (j, &w) in self.stretch.iter().enumerate() {
+            let pull = (x[j + 1] - x[j]) * w;
             lx[j] -= pull;
             lx[j + 1] += pull;
         }
-        for (j, (&(f, c), d)) in self.bend.iter().zip(self.second_differences(x)).enumerate() {
+        for (j, &(f, c)) in self.bend.iter().enumerate() {
+            let d = (x[j + 2] - x[j + 1]) * c[2] - (x[j + 1] - x[j]) * c[0];
             for (a, c) in c.into_iter().enumerate() {
                 lx[j + a] += d * (f * c);
             }
@@ -292,11 +285,10 @@ impl Chain {
         lx
     }
 
+    /// `E = ½ Σ_a x_a·(Lx)_a`: with `Lx` summed from differences, each term is accurate to its
+    /// own size (near the chain `(Lx)_a` is nearly along `x_a`), so `E` is too.
     fn energy(&self, x: &[DQuat]) -> f64 {
-        let stretch = self.stretch.iter().zip(x.windows(2));
-        let bend = self.bend.iter().zip(self.second_differences(x));
-        0.5 * (stretch.map(|(w, x)| w * (x[1] - x[0]).length_squared()).sum::<f64>()
-            + bend.map(|(&(f, ..), d)| f * d.length_squared()).sum::<f64>())
+        0.5 * x.iter().zip(self.apply(x)).map(|(a, la)| a.dot(la)).sum::<f64>()
     }
 
     /// The gradients `g_j` at the free samples, the relative residual (0 for a chain at rest:
