@@ -200,9 +200,9 @@ struct Chain {
     bands: [Vec<f64>; 3],
     /// `E = ½ Σ_j w_j |x_{j+1} − x_j|² + ½ Σ_j f_j |D_j|²`, `D_j = (x_{j+1} − x_j)/h_j −
     /// (x_j − x_{j−1})/h_{j−1} = Σ_a c_a x_{j−1+a}` (MATH.md's energy on uneven times): `w_j`
-    /// and `(f_j, c)`. Summed this way, from differences of nearby samples, `E` and `Lx` round
-    /// to their own size; through `L`'s entries (up to `1/h³`) they round to `ε max_a Σ_b
-    /// |L_ab|`, which for close keys exceeds the change a Newton step makes.
+    /// and `(f_j, c)`. `Lx` summed from these, from differences of nearby samples, rounds to its
+    /// own size (and so does `E = ½ x·Lx`); through `L`'s entries (up to `1/h³`) it rounds to
+    /// `ε max_a Σ_b |L_ab|`, which for close keys exceeds the change a Newton step makes.
     stretch: Vec<f64>,
     bend: Vec<(f64, [f64; 3])>,
     pinned: Vec<bool>,
