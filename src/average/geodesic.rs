@@ -11,12 +11,12 @@ use super::tangent::{exp_at, log_at};
 /// The most iterations: far more than data within π/2 of each other need.
 const MAX_ITERATIONS: usize = 200;
 
-/// The Karcher mean from `start`, the iterations taken and the last step's angle: it iterates
-/// until a step is below 1e-15 rad, or stops shrinking (rounding).
+/// The Karcher mean from `start`, the steps applied and the last step's angle: it iterates
+/// until a step is below 1e-15 rad, or stops shrinking (rounding; that step is not applied).
 pub(super) fn karcher(data: &Data, start: DQuat) -> (DQuat, usize, f64) {
     let total = data.total();
-    let (mut q, mut last) = (start, f64::INFINITY);
-    for iteration in 1..=MAX_ITERATIONS {
+    let (mut q, mut last, mut applied) = (start, f64::INFINITY, 0);
+    for _ in 0..MAX_ITERATIONS {
         let mean = data
             .rotations
             .iter()
@@ -25,13 +25,14 @@ pub(super) fn karcher(data: &Data, start: DQuat) -> (DQuat, usize, f64) {
             / total;
         let step = mean.length();
         if step >= last {
-            return (q, iteration - 1, last);
+            break;
         }
         q = exp_at(q, mean);
-        if step <= 1e-15 {
-            return (q, iteration, step);
-        }
+        applied += 1;
         last = step;
+        if step <= 1e-15 {
+            break;
+        }
     }
-    (q, MAX_ITERATIONS, last)
+    (q, applied, last)
 }

@@ -159,6 +159,37 @@ fn the_order_of_the_data_does_not_change_the_means() {
     }
 }
 
+/// Karcher's count is the steps it applied. A reference iteration, written with glam's
+/// axis-angle maps rather than the crate's, counts the steps to bring the step below 1e-9 rad;
+/// converging at least linearly by half a step, the crate's iteration (to 1e-15 or rounding)
+/// needs those and at most 20 more.
+#[test]
+fn karchers_count_is_the_steps_it_applied() {
+    let mut random = Random::new(5);
+    let truth = random.unit_quaternion();
+    let rotations = measurements(&mut random, truth, 12, 0.5, 0.0);
+    let start = truth * DQuat::from_scaled_axis(glam::DVec3::new(0.4, -0.5, 0.3));
+    let step_at = |q: DQuat| {
+        rotations.iter().fold(glam::DVec3::ZERO, |sum, &r| {
+            let u = q.conjugate() * r;
+            sum + if u.w < 0.0 { -u } else { u }.to_scaled_axis()
+        }) / rotations.len() as f64
+    };
+    let (mut q, mut steps) = (start, 0);
+    while step_at(q).length() >= 1e-9 {
+        q = (q * DQuat::from_scaled_axis(step_at(q))).normalize();
+        steps += 1;
+    }
+    let data = Data::new(rotations.iter().copied(), Weights::new(None, 12).unwrap()).unwrap();
+    let (got, applied, last) = geodesic::karcher(&data, start);
+    assert!(angle(got, q) < 1e-8, "{}", angle(got, q));
+    assert!((steps..=steps + 20).contains(&applied), "{applied} steps against {steps}");
+    assert!(last < 1e-9, "{last}");
+    // From its own answer the iteration has nothing left to apply but rounding.
+    let (again, more, _) = geodesic::karcher(&data, got);
+    assert!(angle(again, got) < 1e-14 && more <= 1, "{more}");
+}
+
 #[test]
 fn the_means_settle_where_their_objectives_are_stationary() {
     // The Karcher mean zeroes the weighted sum of tangents, the median the sum of unit tangents.
