@@ -248,14 +248,14 @@ impl Chain {
     #[inline(never)]
     fn l(&self, a: usize, b: usize) -> f64 {
         let (a, b) = (a.min(b), a.max(b));
+        let w = |j: usize| self.stretch.get(j).map_or(0.0, |w| *w);
         let stretch = match b - a {
-            0 => [a.wrapping_sub(1), a].iter().filter_map(|&j| self.stretch.get(j)).sum(),
-            1 => -self.stretch[a],
+            0 => w(a.wrapping_sub(1)) + w(a),
+            1 => -w(a),
             _ => 0.0,
         };
-        let bend = (b.saturating_sub(2)..=a)
-            .filter_map(|j| self.bend.get(j).map(|&(f, c)| f * c[a - j] * c[b - j]))
-            .sum::<f64>();
+        let terms = self.bend.iter().enumerate().take(a + 1).skip(b.saturating_sub(2));
+        let bend = terms.map(|(j, &(f, c))| f * c[a - j] * c[b - j]).sum::<f64>();
         stretch + bend
     }
 
@@ -263,15 +263,15 @@ impl Chain {
     /// adds `f_j c_a D_j` at `j − 1 + a`, `D_j` from the differences of neighbours.
     fn apply(&self, x: &[DQuat]) -> Vec<DQuat> {
         let mut lx = vec![pure(DVec3::ZERO); x.len()];
-        for (j, &w) in self.stretch.iter().enumerate() {
-            let pull = (x[j + 1] - x[j]) * w;
+        for ((j, x), &w) in x.windows(2).enumerate().zip(&self.stretch) {
+            let pull = (x[1] - x[0]) * w;
             lx[j] -= pull;
             lx[j + 1] += pull;
         }
-        for (j, &(f, c)) in self.bend.iter().enumerate() {
-            let d = (x[j + 2] - x[j + 1]) * c[2] - (x[j + 1] - x[j]) * c[0];
-            for (a, c) in c.into_iter().enumerate() {
-                lx[j + a] += d * (f * c);
+        for ((j, x), &(f, c)) in x.windows(3).enumerate().zip(&self.bend) {
+            let d = (x[2] - x[1]) * c[2] - (x[1] - x[0]) * c[0];
+            for (sum, c) in lx[j..j + 3].iter_mut().zip(c) {
+                *sum += d * (f * c);
             }
         }
         lx
@@ -403,8 +403,8 @@ fn energy(x: &[DQuat], lx: &[DQuat]) -> f64 {
 /// `x_j ← normalise(x_j + s x_j (d_j as a pure quaternion))` at the free samples.
 fn retract(x: &[DQuat], free: &[usize], d: &[f64], s: f64) -> Vec<DQuat> {
     let mut out = x.to_vec();
-    for (p, &a) in free.iter().enumerate() {
-        let step = pure(DVec3::new(d[3 * p], d[3 * p + 1], d[3 * p + 2]) * s);
+    for (&a, d) in free.iter().zip(d.chunks_exact(3)) {
+        let step = pure(DVec3::from_slice(d) * s);
         let moved = x[a] + x[a] * step;
         out[a] = moved / moved.length();
     }
@@ -449,17 +449,14 @@ impl Band {
             }
         }
         let mut y = b.to_vec();
-        for i in 0..n {
-            for p in i.saturating_sub(w)..i {
-                y[i] -= l[i][i - p] * y[p];
-            }
-            y[i] /= l[i][0];
+        for (i, row) in l.iter().enumerate() {
+            let from = i.saturating_sub(w);
+            let sum: f64 = (from..i).map(|p| row[i - p] * y[p]).sum();
+            y[i] = (y[i] - sum) / row[0];
         }
         for i in (0..n).rev() {
-            for p in i + 1..(i + w + 1).min(n) {
-                y[i] -= l[p][p - i] * y[p];
-            }
-            y[i] /= l[i][0];
+            let sum: f64 = (i + 1..(i + w + 1).min(n)).map(|p| l[p][p - i] * y[p]).sum();
+            y[i] = (y[i] - sum) / l[i][0];
         }
         Some(y)
     }
