@@ -87,4 +87,15 @@ mod tests {
         assert!(nan.starts_with("angle must be a finite number"), "{nan}");
         assert!(axis_angle(from_wxyz([0.0; 4])).unwrap_err().to_string().starts_with("q must be"));
     }
+
+    /// An axis's length does not matter, down to subnormal and up to the largest `f64`: its
+    /// square would underflow or overflow.
+    #[test]
+    fn tiny_and_huge_axes_give_the_same_rotation() {
+        let reference = DQuat::from_axis_angle(DVec3::new(1.0, -2.0, 2.0) / 3.0, 1.1);
+        for scale in [5e-324, 1e-300, 1e-160, 1e160, 1e300, 5e307] {
+            let q = from_axis_angle(DVec3::new(1.0, -2.0, 2.0) * scale, 1.1).unwrap();
+            assert!((q - reference).length() < 4e-16, "{scale}: {q:?}");
+        }
+    }
 }

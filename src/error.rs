@@ -339,4 +339,42 @@ mod tests {
         assert!(require("t", -0.0, Requirement::NonNegative).is_ok());
         assert!(require("step", 0.0, Requirement::Positive).is_err());
     }
+
+    #[test]
+    fn an_unknown_name_lists_the_names_allowed() {
+        let message = |allowed: &'static [&'static str]| {
+            KliError::new("method", ErrorKind::UnknownName { got: "mean".into(), allowed })
+                .to_string()
+        };
+        assert_eq!(message(&["chordal"]), r#"method must be "chordal" (got "mean")"#);
+        assert_eq!(message(&["a", "b"]), r#"method must be "a" or "b" (got "mean")"#);
+        assert_eq!(
+            message(&["a", "b", "c", "d"]),
+            r#"method must be "a", "b", "c" or "d" (got "mean")"#
+        );
+    }
+
+    /// As Rust's `{:?}` writes an `f64` (exponent form below 1e-4 and from 1e16), without its
+    /// `.0` on whole numbers; zero and non-finite values as `{}` does.
+    #[test]
+    fn numbers_in_messages_switch_to_exponents_where_rust_does() {
+        for (x, want) in [
+            (1e-4, "0.0001"),
+            (-1e-4, "-0.0001"),
+            (9.99e-5, "9.99e-5"),
+            (1e16, "1e16"),
+            (-1e16, "-1e16"),
+            (9999999999999998.0, "9999999999999998"),
+            (2.5, "2.5"),
+            (0.0, "0"),
+            (f64::MIN_POSITIVE, "2.2250738585072014e-308"),
+            (f64::NEG_INFINITY, "-inf"),
+            (f64::NAN, "NaN"),
+        ] {
+            assert_eq!(rust_number(x), want, "{x:?}");
+            if x != 0.0 && x.is_finite() && x.fract() != 0.0 {
+                assert_eq!(rust_number(x), format!("{x:?}"));
+            }
+        }
+    }
 }
