@@ -87,14 +87,11 @@ pub fn exp(v: DVec3) -> DQuat {
 }
 
 /// `log(q)` of a unit quaternion, the inverse of [`exp`] on `w > -1`: `atan2(|v|, w) v/|v|` for
-/// `q = w + v`, and `v/w` to first order near 1, so repeated keys (`q = 1`) give 0, not 0/0.
+/// `q = w + v`, and 0 where `v = 0` (repeated keys, `q = 1`), not 0/0. `atan2` keeps its relative
+/// accuracy as `|v| → 0`, so near 1 this is `v/w` to rounding with no series of its own.
 pub fn log(q: DQuat) -> DVec3 {
     let v = DVec3::new(q.x, q.y, q.z);
     let s = v.length();
-    if s < 1e-8 && q.w > 0.0 {
-        // atan2(s, w)/s = (1/w)(1 - s²/(3w²) + …): the second term is below 1e-16 here.
-        return v / q.w;
-    }
     if s == 0.0 {
         return DVec3::ZERO;
     }
@@ -189,6 +186,15 @@ mod tests {
         let rotation = DQuat::from_rotation_z(1.2);
         assert!((log(rotation) - DVec3::new(0.0, 0.0, 0.6)).length() < 1e-15);
         assert_eq!(log(DQuat::IDENTITY), DVec3::ZERO);
+        // Tiny rotations keep their relative accuracy (a few ulp, not 1e-15 absolute)…
+        for size in [1e-8, 1e-10, 1e-30, 1e-150] {
+            let v = DVec3::new(0.6, 0.0, -0.8) * size;
+            let error = (log(exp(v)) - v).length() / size;
+            assert!(error <= 4.0 * f64::EPSILON, "{size}: {error:e}");
+        }
+        // …and so do rotations 1e-9 short of a full turn, where `w ≈ -1` and `|v| ≈ 1e-9`.
+        let v = DVec3::new(0.6, 0.0, -0.8) * (std::f64::consts::PI - 1e-9);
+        assert!((log(exp(v)) - v).length() < 1e-15, "{:?}", log(exp(v)));
     }
 
     #[test]
