@@ -100,7 +100,8 @@ pub fn log(q: DQuat) -> DVec3 {
 
 /// The largest distance between two lists of rotations as quaternions, blind to each sign (the
 /// dense references' tests, which faer and so the feature `sync` bring).
-#[cfg(all(test, feature = "sync"))]
+#[cfg(test)]
+#[cfg(feature = "sync")]
 pub(crate) fn farthest_apart(a: &[DQuat], b: &[DQuat]) -> f64 {
     a.iter().zip(b).map(|(&x, &y)| (x - y).length().min((x + y).length())).fold(0.0, f64::max)
 }
