@@ -220,7 +220,7 @@ bench: pkg www setup-browser
 	node bench/lighthouse.mjs
 	node bench/targets.mjs
 
-# Mutation testing of the core crate (cargo-mutants; not in `make test`: some 2,200 mutants, about
+# Mutation testing of the core crate (cargo-mutants; not in `make test`: some 3,150 mutants, about
 # six a minute here with `-j 2`, a build and the tests each). MUTANTS_ARGS passes its flags:
 # `-f src/average/median.rs` for a file, `--in-diff change.diff` for a change (`git diff main >
 # change.diff`), `--shard 3/8` for a share, `--iterate` to run again only what was not caught;
