@@ -45,7 +45,7 @@ pub fn plain_inverse_square(q: DQuat) -> Option<f64> {
     PLAIN.contains(&length_squared).then(|| 1.0 / length_squared)
 }
 
-/// [`unit`] for the rest: refused (not finite, zero) or scaled first (tiny or huge).
+/// [`unit()`] for the rest: refused (not finite, zero) or scaled first (tiny or huge).
 #[inline(never)]
 fn unit_rare(name: &str, q: DQuat) -> Result<DQuat, KliError> {
     let wxyz = to_wxyz(q);

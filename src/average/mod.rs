@@ -3,7 +3,7 @@
 //! follower `q` is coupled to all of them, and where it settles is the mean.
 //!
 //! - [`Method::Chordal`]: the sign-blind flow `q' = M q − (qᵀM q) q`, `M = Σ w_j r_j r_jᵀ`, settles
-//!   on the top eigenvector of `M` (Markley's and SciPy's mean), computed by [`eigen`] in one pass
+//!   on the top eigenvector of `M` (Markley's and SciPy's mean), computed by [`eigen()`] in one pass
 //!   over the data; [`chordal_flow`] integrates the flow itself.
 //! - [`Method::Quaternion`]: the Lohe flow `q' = m − (q·m) q`, `m = Σ w_j s_j r_j`, settles on
 //!   `m/|m|`, with the signs `s_j` aligned to one hemisphere (without them, the teaching point,
