@@ -95,6 +95,9 @@ pub enum ErrorKind {
     NotUnique { top: f64, second: f64 },
     /// Anything else, in words: the type checks of a language binding.
     Invalid(String),
+    /// A line of a text read (a pose-graph file) that cannot be read, by its number from 1;
+    /// [`ErrorKind::line`] hands the number to bindings, as a property beside the message.
+    InvalidLine { line: usize, problem: String },
 }
 
 impl ErrorKind {
@@ -113,7 +116,7 @@ impl ErrorKind {
             ErrorKind::Unstable { .. } => "unstable",
             ErrorKind::TooManySteps { .. } => "too-many-steps",
             ErrorKind::NotUnique { .. } => "not-unique",
-            ErrorKind::Invalid(_) => "invalid",
+            ErrorKind::Invalid(_) | ErrorKind::InvalidLine { .. } => "invalid",
         }
     }
 
@@ -121,6 +124,14 @@ impl ErrorKind {
     pub fn component(&self) -> Option<usize> {
         match self {
             ErrorKind::NotFinite { index, .. } => Some(*index),
+            _ => None,
+        }
+    }
+
+    /// The line at fault (from 1), for [`ErrorKind::InvalidLine`].
+    pub fn line(&self) -> Option<usize> {
+        match self {
+            ErrorKind::InvalidLine { line, .. } => Some(*line),
             _ => None,
         }
     }
@@ -245,6 +256,7 @@ impl KliError {
                 n(*second)
             ),
             ErrorKind::Invalid(problem) => format!("{arg} {problem}"),
+            ErrorKind::InvalidLine { line, problem } => format!("{arg} line {line}: {problem}"),
         }
     }
 }

@@ -25,7 +25,7 @@ use kli::spline::{
 };
 use kli::swarm::{Graph, Random, Swarm, SwarmOptions, mean, order_parameter, rotation_order};
 #[cfg(feature = "sync")]
-use kli::sync::{self, SyncFlow, SyncOptions, errors_to_truth, read_g2o, synchronize};
+use kli::sync::{self, OtherLines, SyncFlow, SyncOptions, errors_to_truth, read_g2o, synchronize};
 use kli::{
     DQuat, DVec3, Integrator, KliOptions, Requirement, axis_angle, from_axis_angle, from_wxyz,
     hopf, kli, require, slerp, to_wxyz,
@@ -658,8 +658,20 @@ fn synchronisation_hostile_floats() {
                 format!("EDGE_SE3:QUAT 0 1 0 0 0 {x} {x} {x} {x}"),
                 format!("VERTEX3 {x} 0 0 0 0 0 0\nEDGE3 0 1 0 0 0 0 0 0"),
                 format!("EDGE3 {x} 1 0 0 0 0 0 0"),
+                format!("EDGE_SE2 0 1 {x} 0 {x}"),
+                format!("EDGE2 0 1 0 0 0 {x} 0 {x} 1 0 0"),
+                format!("EDGE_SE2 0 1 0 0 0 1 0 0 1 0 {x}"),
+                format!("VERTEX_SE2 {x} 0 0 0\nEDGE_SE2 0 1 0 0 0"),
+                format!(
+                    "EDGE_SE3:QUAT 0 1 0 0 0 0 0 0 1 {x} 0 0 0 0 0 1 0 0 0 0 1 0 0 0 1 0 0 1 0 {x}"
+                ),
             ] {
-                named(probe.call(|| format!("read_g2o({line:?})"), || read_g2o(&line)));
+                for others in [OtherLines::Skip, OtherLines::Refuse] {
+                    named(probe.call(
+                        || format!("read_g2o({line:?}, {others:?})"),
+                        || read_g2o(&line, others),
+                    ));
+                }
             }
         }
     });

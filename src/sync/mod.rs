@@ -16,13 +16,16 @@
 //! - [`SyncFlow`]: the paper's Lohe model on the graph, steppable: the picture, which settles on
 //!   the same minimum.
 //!
-//! [`read_g2o`] reads the rotations of g2o and TORO/GTSAM pose-graph files.
+//! [`read_g2o`] reads g2o and TORO/GTSAM pose-graph files, 2D and 3D: each edge's relative
+//! rotation, translation and weights from its information matrix.
 
 mod blocks;
 mod certificate;
 mod cost;
 mod flow;
 mod g2o;
+#[cfg(test)]
+mod g2o_tests;
 mod graph;
 mod lanczos;
 mod newton;
@@ -33,7 +36,7 @@ mod tests;
 
 pub use certificate::Certificate;
 pub use flow::{MAX_STEPS, SyncFlow};
-pub use g2o::{PoseGraph, read_g2o};
+pub use g2o::{OtherLines, PoseGraph, read_g2o};
 pub use graph::Graph;
 
 use glam::DQuat;

@@ -45,8 +45,12 @@ test("a g2o file read by readG2o synchronises to the same optimum", () => {
   assert.equal(graph.count, c.count);
   assert.deepEqual(Array.from(graph.edges), c.edges.flat());
   assert.equal(graph.initial, undefined);
+  // The identity's information on every edge: κ = 3 / (2 tr I₃) = ½ (MATH.md, SE-Sync's
+  // weights), so the same optimum at half the cost.
+  assert.ok(graph.weights.every((w) => w === 0.5));
   const result = synchronizeRotations(graph);
-  assert.ok(Math.abs(result.cost - c.cost) < 1e-9 * c.cost);
+  assert.ok(Math.abs(result.cost - c.cost / 2) < 1e-9 * c.cost);
+  assert.equal(result.certificate.certified, true);
 });
 
 test("the flow settles on the certified optimum", () => {

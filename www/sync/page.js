@@ -192,7 +192,8 @@ function showFile(/** @type {Host} */ host) {
     row.append(head);
     row.insertCell().textContent = value;
   }
-  $("#file-status", HTMLOutputElement).textContent = `${own.name}: ${s.count} nodes, ${s.edges} edges, ${s.certified ? "certified" : "not proved optimal"}.`;
+  const skipped = s.skipped ? ` (${s.skipped} other ${s.skipped === 1 ? "line" : "lines"} skipped: landmarks, priors)` : "";
+  $("#file-status", HTMLOutputElement).textContent = `${own.name}: ${s.count} nodes, ${s.edges} edges${skipped}, ${s.certified ? "certified" : "not proved optimal"}.`;
   $("#file-figure", HTMLElement).hidden = false;
   host.redraw(["file"]);
 }

@@ -51,7 +51,7 @@ pub fn number(x: f64) -> String {
 }
 
 /// The `Error` to throw for `e`: its message in JavaScript's names and numbers, and its
-/// `argument`, `kind` and `component` as properties.
+/// `argument`, `kind`, `component` (a quaternion's) and `line` (a file's) as properties.
 #[inline(never)]
 fn throw(e: KliError) -> JsValue {
     let error = Error::new(&e.message(&js_name, &number));
@@ -60,6 +60,9 @@ fn throw(e: KliError) -> JsValue {
     set("kind", e.kind().code().into());
     if let Some(component) = e.kind().component() {
         set("component", (component as f64).into());
+    }
+    if let Some(line) = e.kind().line() {
+        set("line", (line as f64).into());
     }
     error.into()
 }

@@ -150,5 +150,7 @@ export interface KliError extends Error {
   /** For kind "not-finite": the component's position in the caller's array (0 is w in the order
    *  "wxyz", x in "xyzw" and in a 3-vector). */
   component?: number;
+  /** For a file read (`readG2o`): the line at fault, from 1. */
+  line?: number;
 }
 "#;

@@ -3,7 +3,7 @@
 
 use glam::DQuat;
 use js_sys::{Float64Array, Uint8Array, Uint32Array};
-use kli::sync::{Graph, Method, SyncFlow, SyncOptions, read_g2o, synchronize};
+use kli::sync::{Graph, Method, OtherLines, SyncFlow, SyncOptions, read_g2o, synchronize};
 use kli::{KliError, Requirement, require};
 use wasm_bindgen::prelude::*;
 
@@ -26,7 +26,7 @@ export type QuaternionsLike = ArrayLike<number> | ArrayLike<QuaternionLike>;
 
 /** The measurements: the edges `(i, j)` of a connected graph on nodes `0 … count − 1`, and on
  *  each the relative rotation `R_ij = R_iᵀ R_j` (`q_ij ≈ q̄_i q_j`: GTSAM's `BetweenFactor<Rot3>`,
- *  g2o's `EDGE_SE3:QUAT`), any sign. */
+ *  g2o's `EDGE_SE3:QUAT`), any sign. A `PoseGraph` from `readG2o` is one as it is. */
 export interface SyncInput {
   /** `[[i, j], …]`, or 2m numbers flat (an Array, `Uint32Array` or `Int32Array`): whole numbers
    *  from 0, no self-loops. Parallel edges add up. */
@@ -37,6 +37,17 @@ export interface SyncInput {
   weights?: ArrayLike<number>;
   /** The number of nodes. Default: one more than the largest id. Every node must be joined. */
   count?: number;
+  /** Each node's rotation, an estimate: where `SyncFlow` starts (unless its `start` is given).
+   *  `synchronizeRotations` does not need one (its answer is the certified optimum from any
+   *  start) and does not read it. */
+  initial?: QuaternionsLike;
+  /** A `PoseGraph`'s other keys are accepted and not read. */
+  dimension?: 2 | 3;
+  ids?: ArrayLike<number>;
+  translations?: ArrayLike<number>;
+  translationWeights?: ArrayLike<number>;
+  positions?: ArrayLike<number>;
+  skipped?: Record<string, number>;
 }
 
 /** How to synchronise: the certified global minimum of the chordal cost (the default), the
@@ -68,8 +79,8 @@ export interface SyncCertificate {
   certified: boolean;
 }
 
-/** What `synchronizeRotations` found. */
-export interface Synchronized {
+/** What `synchronizeRotations` found, whatever the method. */
+export interface SynchronizedBase {
   /** 4n numbers: each node's rotation in the call's order, the anchor's the identity, w ≥ 0. */
   rotations: Float64Array;
   /** The chordal cost Σ w_ij ‖R_i R_ij − R_j‖²_F with the caller's weights. */
@@ -78,39 +89,85 @@ export interface Synchronized {
   residuals: Float64Array;
   /** Newton steps taken (all rounds, for "robust"), or Lanczos steps for "spectral". */
   iterations: number;
-  /** For "chordal". */
-  certificate?: SyncCertificate;
-  /** For "robust": each edge's final weight (the caller's times the robust factor, ≤ it). */
-  weights?: Float64Array;
-  /** For "robust": 1 for each edge treated as wrong (its residual beyond 3σ for a given `scale`,
-   *  by default beyond 6 times the median residual after the L1 rounds), else 0. */
-  outliers?: Uint8Array;
-  /** For "robust": the Geman–McClure scale used, radians. */
-  scale?: number;
 }
 
-/** The rotations of a pose-graph file (`readG2o`). */
+/** The chordal optimum (`method: "chordal"`, the default) and its certificate. */
+export interface ChordalSynchronized extends SynchronizedBase {
+  certificate: SyncCertificate;
+}
+
+/** The robust solution (`method: "robust"`). */
+export interface RobustSynchronized extends SynchronizedBase {
+  /** Each edge's final weight (the caller's times the robust factor, ≤ it). */
+  weights: Float64Array;
+  /** 1 for each edge treated as wrong (its residual beyond 3σ), else 0. */
+  outliers: Uint8Array;
+  /** The Geman–McClure scale σ used, radians. */
+  scale: number;
+}
+
+/** What `synchronizeRotations` found: its type follows `options.method`. */
+export type Synchronized = ChordalSynchronized | RobustSynchronized | SynchronizedBase;
+
+/** The chordal method's options (`method` absent or "chordal"). */
+export type ChordalSyncOptions = SyncOptions & { method?: "chordal" };
+
+export function synchronizeRotations(
+  input: SyncInput,
+  options: SyncOptions & { method: "robust" },
+): RobustSynchronized;
+export function synchronizeRotations(
+  input: SyncInput,
+  options: SyncOptions & { method: "spectral" },
+): SynchronizedBase;
+export function synchronizeRotations(input: SyncInput, options?: SyncOptions | null): Synchronized;
+
+/** A pose graph read from a file (`readG2o`): the poses numbered from 0 in the order of their
+ *  ids, each edge's measured rotation and translation, and its weights from its information
+ *  matrix as SE-Sync reads them. It is a `SyncInput` as it is, weighted by κ. */
 export interface PoseGraph {
-  /** One more than the largest node id. */
+  /** 2 for planar poses (`EDGE_SE2`, `EDGE2`: rotations about z), 3 for poses in space. */
+  dimension: 2 | 3;
+  /** The number of poses. */
   count: number;
-  /** 2m node ids, the edges in the file's order. */
+  /** Each pose's id in the file, ascending: pose k is `ids[k]` (ids need not be consecutive:
+   *  landmarks' ids are left out). Exact up to 2^53. */
+  ids: Float64Array;
+  /** 2m pose numbers (from 0, as `ids` orders them), the edges in the file's order. */
   edges: Uint32Array;
   /** 4m numbers: each edge's relative rotation in the call's order. */
   relative: Float64Array;
-  /** 4·count numbers: each node's rotation from its vertex line, when every node has one. */
+  /** Each edge's rotation weight κ (3D: 3 / (2 tr Σ_R); 2D: I_θθ; the identity's without
+   *  information: ½ in 3D, 1 in 2D), which `synchronizeRotations` uses. */
+  weights: Float64Array;
+  /** 3m numbers: each edge's measured translation in its first pose's frame (z = 0 in 2D). */
+  translations: Float64Array;
+  /** Each edge's translation weight τ (3 / tr Σ_t in 3D, 2 / tr Σ_t in 2D; 1 without
+   *  information). */
+  translationWeights: Float64Array;
+  /** 4·count numbers: each pose's rotation from its vertex line, when every pose has one. */
   initial?: Float64Array;
+  /** 3·count numbers: each pose's position from its vertex line, when every pose has one. */
+  positions?: Float64Array;
+  /** The lines of other kinds (landmarks, priors, parameters), skipped: how many of each,
+   *  by their first word, e.g. `{ VERTEX_XY: 120, EDGE_SE2_XY: 400 }`. */
+  skipped: Record<string, number>;
 }
 
 /** Options of `readG2o`. */
 export interface ReadG2oOptions {
   /** How `relative` and `initial` are laid out. Default "wxyz". */
   order?: QuaternionOrder;
+  /** Refuse a line of a kind other than the pose lines (with its `line`), instead of skipping
+   *  and counting it. Default false. */
+  strict?: boolean;
 }
 
 /** Options of `new SyncFlow(input, options)`; every key is optional and unknown keys are
  *  rejected. */
 export interface SyncFlowOptions {
-  /** Where the flow starts: 4·count numbers or count quaternions. Default: uniform on S³. */
+  /** Where the flow starts: 4·count numbers or count quaternions. Default: the input's
+   *  `initial` when it has one (a pose graph's vertices), else uniform on S³. */
   start?: QuaternionsLike;
   /** For the random start: a whole number from 0 to 2^53 − 1. Default 1. */
   seed?: number;
@@ -183,10 +240,23 @@ fn read_edges(value: &JsValue) -> Result<Vec<[usize; 2]>, KliError> {
         .collect()
 }
 
-/// Reads `{ edges, relative, weights, count }` into a checked [`Graph`].
-fn read_graph(input: &JsValue, order: Order) -> Result<Graph, KliError> {
+/// The keys of a [`SyncInput`](read_graph) that are read.
+const READ: [&str; 5] = ["edges", "relative", "weights", "count", "initial"];
+/// A `PoseGraph`'s other keys: accepted, so that `readG2o`'s result is an input as it is, and
+/// not read.
+const POSE_GRAPH: [&str; 6] =
+    ["dimension", "ids", "translations", "translation_weights", "positions", "skipped"];
+
+/// Reads `{ edges, relative, weights, count }` into a checked [`Graph`], and `initial` when
+/// present (unread: `None`) and `with_initial`.
+fn read_graph(
+    input: &JsValue,
+    order: Order,
+    with_initial: bool,
+) -> Result<(Graph, Option<Vec<DQuat>>), KliError> {
     let example = "{ edges: [[0, 1], [1, 2]], relative: [q01, q12] }";
-    let keys = ["edges", "relative", "weights", "count"];
+    let mut keys = READ.to_vec();
+    keys.extend(POSE_GRAPH);
     let Some(fields) = Fields::named("input", Some(input.clone()), &keys, example)? else {
         let problem = format!("must be an object like {example} (got {})", describe(input));
         return Err(KliError::invalid("input", problem));
@@ -201,7 +271,16 @@ fn read_graph(input: &JsValue, order: Order) -> Result<Graph, KliError> {
         None => None,
     };
     let count = fields.whole("count", 1.0, MAX_ID)?.map(|c| c as usize);
-    Graph::new(count, &edges, &relative, weights.as_deref()).map_err(|e| order.error(e))
+    let graph =
+        Graph::new(count, &edges, &relative, weights.as_deref()).map_err(|e| order.error(e))?;
+    let initial = match fields.value("initial")? {
+        Some(value) if with_initial => {
+            let max = 4 * graph.count();
+            Some(quaternion_list("initial", "node", &value, order, max)?)
+        }
+        _ => None,
+    };
+    Ok((graph, initial))
 }
 
 fn set(object: &js_sys::Object, key: &str, value: JsValue) {
@@ -210,10 +289,12 @@ fn set(object: &js_sys::Object, key: &str, value: JsValue) {
 
 /// Synchronises the rotations of a graph from its relative measurements: the certified chordal
 /// optimum by default (`method: "robust"` for graphs with wrong edges).
-#[wasm_bindgen(js_name = synchronizeRotations, unchecked_return_type = "Synchronized")]
+#[wasm_bindgen(js_name = synchronizeRotations, unchecked_return_type = "ChordalSynchronized")]
 pub fn synchronize_rotations(
     #[wasm_bindgen(unchecked_param_type = "SyncInput")] input: &JsValue,
-    options: Option<SyncOptionsObject>,
+    #[wasm_bindgen(unchecked_param_type = "ChordalSyncOptions | null")] options: Option<
+        SyncOptionsObject,
+    >,
 ) -> JsResult<JsValue> {
     let keys = ["method", "anchor", "scale", "order"];
     let fields = Fields::new(options.map(JsValue::from), &keys, "{ method: \"robust\" }")?;
@@ -231,7 +312,7 @@ pub fn synchronize_rotations(
             options.scale = Some(require("scale", scale, Requirement::Positive)?);
         }
     }
-    let graph = read_graph(input, order)?;
+    let (graph, _) = read_graph(input, order, false)?;
     let result = synchronize(&graph, &options)?;
     let out = js_sys::Object::new();
     set(&out, "rotations", order.flat(&result.rotations).into());
@@ -259,31 +340,56 @@ pub fn synchronize_rotations(
     Ok(out.into())
 }
 
-/// Reads the rotations of a g2o (`EDGE_SE3:QUAT`, `VERTEX_SE3:QUAT`) or TORO/GTSAM (`EDGE3`,
-/// `VERTEX3`) pose-graph file; a bad line is an Error naming its number.
+/// Reads a pose-graph file, 2D or 3D: g2o (`EDGE_SE3:QUAT`, `EDGE_SE2` and their vertices) or
+/// TORO/GTSAM (`EDGE3`, `EDGE2`, `VERTEX3`, `VERTEX2`), each edge weighted by its information
+/// matrix; lines of other kinds skipped and counted (refused with `strict: true`). A bad line is
+/// an Error with its number as `line`.
 #[wasm_bindgen(js_name = readG2o, unchecked_return_type = "PoseGraph")]
 pub fn read_g2o_text(
     #[wasm_bindgen(unchecked_param_type = "string")] text: &JsValue,
     options: Option<ReadG2oOptionsObject>,
 ) -> JsResult<JsValue> {
-    let fields = Fields::new(options.map(JsValue::from), &["order"], "{ order: \"xyzw\" }")?;
-    let order = match &fields {
-        Some(fields) => Order::parse(fields.name("order")?)?,
-        None => Order::Wxyz,
-    };
+    let fields =
+        Fields::new(options.map(JsValue::from), &["order", "strict"], "{ order: \"xyzw\" }")?;
+    let (mut order, mut others) = (Order::Wxyz, OtherLines::Skip);
+    if let Some(fields) = &fields {
+        order = Order::parse(fields.name("order")?)?;
+        if fields.boolean("strict")? == Some(true) {
+            others = OtherLines::Refuse;
+        }
+    }
     let Some(text) = text.as_string() else {
         let problem = format!("must be a string (got {})", describe(text));
         return Err(KliError::invalid("text", problem).into());
     };
-    let graph = read_g2o(&text)?;
+    let graph = read_g2o(&text, others)?;
+    let floats = |x: &[f64]| JsValue::from(Float64Array::from(x));
+    let vectors = |v: &[glam::DVec3]| {
+        let flat: Vec<f64> = v.iter().flat_map(|t| t.to_array()).collect();
+        floats(&flat)
+    };
     let out = js_sys::Object::new();
+    set(&out, "dimension", (graph.dimension as f64).into());
     set(&out, "count", (graph.count as f64).into());
-    let ids: Vec<u32> = graph.edges.iter().flatten().map(|&i| i as u32).collect();
-    set(&out, "edges", Uint32Array::from(&ids[..]).into());
+    let ids: Vec<f64> = graph.ids.iter().map(|&id| id as f64).collect();
+    set(&out, "ids", floats(&ids));
+    let edges: Vec<u32> = graph.edges.iter().flatten().map(|&i| i as u32).collect();
+    set(&out, "edges", Uint32Array::from(&edges[..]).into());
     set(&out, "relative", order.flat(&graph.relative).into());
+    set(&out, "weights", floats(&graph.rotation_weights));
+    set(&out, "translations", vectors(&graph.translations));
+    set(&out, "translationWeights", floats(&graph.translation_weights));
     if let Some(initial) = &graph.initial {
         set(&out, "initial", order.flat(initial).into());
     }
+    if let Some(positions) = &graph.positions {
+        set(&out, "positions", vectors(positions));
+    }
+    let skipped = js_sys::Object::new();
+    for (kind, n) in &graph.skipped {
+        set(&skipped, kind, (*n as f64).into());
+    }
+    set(&out, "skipped", skipped.into());
     Ok(out.into())
 }
 
@@ -297,8 +403,9 @@ pub struct JsSyncFlow {
 
 #[wasm_bindgen(js_class = SyncFlow)]
 impl JsSyncFlow {
-    /// The flow on the graph `input` (as `synchronizeRotations` takes it) from `options.start`, or
-    /// from a random start drawn from `options.seed`.
+    /// The flow on the graph `input` (as `synchronizeRotations` takes it) from `options.start`,
+    /// else from `input.initial` (a pose graph's vertices), else from a random start drawn from
+    /// `options.seed`.
     #[wasm_bindgen(constructor)]
     pub fn new(
         #[wasm_bindgen(unchecked_param_type = "SyncInput")] input: &JsValue,
@@ -314,13 +421,20 @@ impl JsSyncFlow {
             }
             start = fields.value("start")?;
         }
-        let graph = read_graph(input, order)?;
-        let flow = match start {
+        let (graph, initial) = read_graph(input, order, start.is_none())?;
+        let start = match start {
             Some(value) => {
                 let max = 4 * graph.count();
-                let start: Vec<DQuat> = quaternion_list("start", "node", &value, order, max)?;
-                SyncFlow::new(graph, &start).map_err(|e| order.error(e))?
+                Some(("start", quaternion_list("start", "node", &value, order, max)?))
             }
+            None => initial.map(|q| ("initial", q)),
+        };
+        let flow = match start {
+            Some((name, start)) => SyncFlow::new(graph, &start).map_err(|e| {
+                // The core names `start`; the caller may have passed it as `initial`.
+                let renamed = e.argument().replacen("start", name, 1);
+                order.error(e.renamed(renamed))
+            })?,
             None => SyncFlow::random(graph, seed),
         };
         Ok(JsSyncFlow { flow, order })

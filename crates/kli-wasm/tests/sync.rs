@@ -163,14 +163,72 @@ fn g2o_text_is_read_and_bad_lines_are_named() {
     let text = "VERTEX_SE3:QUAT 0 0 0 0 0 0 0 1\nVERTEX_SE3:QUAT 1 0 0 0 0 0 1 0\nEDGE_SE3:QUAT 0 1 0 0 0 0 0 1 0\n";
     let graph = read_g2o_text(&text.into(), None).unwrap();
     assert_eq!(field(&graph, "count").as_f64(), Some(2.0));
+    assert_eq!(field(&graph, "dimension").as_f64(), Some(3.0));
     assert_eq!(field(&graph, "edges").unchecked_into::<Uint32Array>().to_vec(), vec![0, 1]);
+    assert_eq!(floats(&graph, "ids"), vec![0.0, 1.0]);
     assert_eq!(floats(&graph, "relative"), vec![0.0, 0.0, 0.0, 1.0]);
     assert_eq!(floats(&graph, "initial"), vec![1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0]);
+    // No information written: the identity's, κ = 3 / (2 tr I₃) = ½ and τ = 3 / tr I₃ = 1.
+    assert_eq!(floats(&graph, "weights"), vec![0.5]);
+    assert_eq!(floats(&graph, "translationWeights"), vec![1.0]);
     let (argument, _, message) = refused(read_g2o_text(&"EDGE3 0 1 0 0 0 0 0\n".into(), None));
     assert_eq!(argument, "text");
     assert!(message.starts_with("text line 1: EDGE3 needs 8 numbers"), "{message}");
     let (argument, _, _) = refused(read_g2o_text(&JsValue::from(7), None));
     assert_eq!(argument, "text");
+}
+
+#[wasm_bindgen_test]
+fn planar_graphs_with_landmarks_are_read_and_a_bad_line_carries_its_number() {
+    let text = "VERTEX_SE2 0 0 0 0\nVERTEX_XY 1 2 2\nVERTEX_SE2 2 1 0 1.5\n\
+                EDGE_SE2 0 2 1 0 1.5 1 0 0 1 0 4\nEDGE_SE2_XY 0 1 2 2 1 0 1\n";
+    let graph = read_g2o_text(&text.into(), None).unwrap();
+    assert_eq!(field(&graph, "dimension").as_f64(), Some(2.0));
+    assert_eq!(floats(&graph, "ids"), vec![0.0, 2.0]);
+    assert_eq!(field(&graph, "edges").unchecked_into::<Uint32Array>().to_vec(), vec![0, 1]);
+    assert_eq!(floats(&graph, "weights"), vec![4.0]);
+    assert_eq!(floats(&graph, "translations"), vec![1.0, 0.0, 0.0]);
+    assert_eq!(floats(&graph, "positions"), vec![0.0, 0.0, 0.0, 1.0, 0.0, 0.0]);
+    let skipped = field(&graph, "skipped");
+    assert_eq!(field(&skipped, "VERTEX_XY").as_f64(), Some(1.0));
+    assert_eq!(field(&skipped, "EDGE_SE2_XY").as_f64(), Some(1.0));
+    // The result is an input as it is: a single edge of 1.5 rad about z.
+    let result = synchronize_rotations(&graph, None).unwrap();
+    let q = floats(&result, "rotations");
+    let (s, c) = (0.75f64.sin(), 0.75f64.cos());
+    let expected = [c, 0.0, 0.0, s];
+    assert!((4..8).all(|k| (q[k] - expected[k - 4]).abs() < 1e-12), "{q:?}");
+    // Strict: the landmark line refused, its number a property.
+    let strict = object(&[("strict", true.into())]).unchecked_into();
+    let error: JsValue = read_g2o_text(&text.into(), Some(strict)).err().unwrap().into();
+    assert_eq!(field(&error, "line").as_f64(), Some(2.0));
+    assert_eq!(field(&error, "kind").as_string().as_deref(), Some("invalid"));
+    let error: JsValue = read_g2o_text(&"EDGE_SE2 0 1 0 0 x\n".into(), None).err().unwrap().into();
+    assert_eq!(field(&error, "line").as_f64(), Some(1.0));
+    // Other errors carry no line.
+    let error: JsValue = read_g2o_text(&"".into(), None).err().unwrap().into();
+    assert!(field(&error, "line").is_undefined());
+}
+
+#[wasm_bindgen_test]
+fn the_flow_starts_from_a_pose_graphs_vertices() {
+    let text = "VERTEX_SE3:QUAT 0 0 0 0 0 0 0 1\nVERTEX_SE3:QUAT 1 0 0 0 0 0 1 0\n\
+                EDGE_SE3:QUAT 0 1 0 0 0 0 0 0.6 0.8\n";
+    let graph = read_g2o_text(&text.into(), None).unwrap();
+    let flow = JsSyncFlow::new(&graph, None).unwrap();
+    assert_eq!(flow.rotations().to_vec(), vec![1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0]);
+    // A start given wins over the vertices.
+    let start = nested(&[&[0.0, 1.0, 0.0, 0.0], &[1.0, 0.0, 0.0, 0.0]]);
+    let flow = JsSyncFlow::new(&graph, Some(object(&[("start", start)]).unchecked_into())).unwrap();
+    assert_eq!(flow.rotations().to_vec(), vec![0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0]);
+    // A bad initial is named as the caller passed it.
+    let bad = object(&[
+        ("edges", field(&graph, "edges")),
+        ("relative", field(&graph, "relative")),
+        ("initial", nested(&[&[1.0, 0.0, 0.0, 0.0], &[0.0, 0.0, 0.0, 0.0]])),
+    ]);
+    let (argument, _, message) = refused(JsSyncFlow::new(&bad, None));
+    assert!(argument.starts_with("initial"), "{argument}: {message}");
 }
 
 #[wasm_bindgen_test]

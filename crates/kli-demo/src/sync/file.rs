@@ -1,9 +1,9 @@
-//! A user's own pose graph (g2o `EDGE_SE3:QUAT` or TORO/GTSAM `EDGE3` lines, read by
-//! [`kli::sync::read_g2o`]): synchronised both ways, summed up and drawn as the two solutions'
+//! A user's own pose graph (g2o or TORO/GTSAM, 2D or 3D, read by [`kli::sync::read_g2o`], each
+//! edge weighted by its information matrix's κ): synchronised both ways, summed up and drawn as the two solutions'
 //! residuals side by side, robust's flagged edges stacked.
 
 use kli::KliError;
-use kli::sync::{Graph, Method, SyncOptions, Synchronized, read_g2o, synchronize};
+use kli::sync::{Graph, Method, OtherLines, SyncOptions, Synchronized, read_g2o, synchronize};
 use kli_wasm::error::JsResult;
 use kli_wasm::typed::numbers;
 use kli_wasm::value::describe;
@@ -21,6 +21,8 @@ use crate::pen::{Pen, svg_document};
 #[wasm_bindgen]
 pub struct SyncFile {
     count: usize,
+    /// The lines of other kinds (landmarks, priors) the file held, skipped.
+    skipped: usize,
     chordal: Synchronized,
     robust: Synchronized,
     /// Whether each edge is one the robust solution flags.
@@ -41,6 +43,8 @@ export interface SyncFileSummary {
   robustMedianResidualDegrees: number;
   flagged: number;
   iterations: number;
+  /** Lines of other kinds (landmarks, priors, parameters), skipped. */
+  skipped: number;
 }
 "#;
 
@@ -51,8 +55,8 @@ impl SyncFile {
     pub fn new(
         #[wasm_bindgen(unchecked_param_type = "string")] text: &JsValue,
     ) -> JsResult<SyncFile> {
-        let graph = read(text)?;
-        Ok(SyncFile::of(graph.count(), solve_both(&graph)?))
+        let (graph, skipped) = read(text)?;
+        Ok(SyncFile::of(graph.count(), skipped, solve_both(&graph)?))
     }
 
     /// Reads and synchronises `text` both ways: the solutions as numbers for `SyncFile.solved`
@@ -60,7 +64,7 @@ impl SyncFile {
     pub fn solve(
         #[wasm_bindgen(unchecked_param_type = "string")] text: &JsValue,
     ) -> JsResult<Vec<f64>> {
-        Ok(solve_both(&read(text)?)?.pack())
+        Ok(solve_both(&read(text)?.0)?.pack())
     }
 
     /// The pose graph `text` with the solutions `SyncFile.solve(text)` computed; an Error naming
@@ -69,14 +73,14 @@ impl SyncFile {
         #[wasm_bindgen(unchecked_param_type = "string")] text: &JsValue,
         #[wasm_bindgen(unchecked_param_type = "Float64Array")] solutions: &JsValue,
     ) -> JsResult<SyncFile> {
-        let graph = read(text)?;
+        let (graph, skipped) = read(text)?;
         let (n, m) = (graph.count(), graph.edges().len());
         let data = numbers("solutions", solutions, Solutions::length(n, m))?;
-        Ok(SyncFile::of(n, Solutions::unpack(&data, n, m)?))
+        Ok(SyncFile::of(n, skipped, Solutions::unpack(&data, n, m)?))
     }
 
     /// `{ count, edges, chordalCost, certified, lambdaMin, chordalMedianResidualDegrees,
-    /// robustMedianResidualDegrees, flagged, iterations }`.
+    /// robustMedianResidualDegrees, flagged, iterations, skipped }`.
     #[wasm_bindgen(getter, unchecked_return_type = "SyncFileSummary")]
     pub fn summary(&self) -> JsValue {
         let c = self.chordal.certificate;
@@ -90,6 +94,7 @@ impl SyncFile {
             .set("robustMedianResidualDegrees", median_degrees(&self.robust.residuals))
             .set("flagged", self.flagged.iter().filter(|&&f| f).count() as f64)
             .set("iterations", self.chordal.iterations as f64)
+            .set("skipped", self.skipped as f64)
             .end()
     }
 
@@ -126,17 +131,21 @@ impl SyncFile {
     }
 }
 
-/// The pose graph `text` holds (an Error naming the bad line, or `text` when it is not a
-/// string: read as JavaScript's value, so that no other value reaches the glue's string copy).
-fn read(text: &JsValue) -> Result<Graph, KliError> {
+/// The pose graph `text` holds, weighted by each edge's κ, and how many lines of other kinds it
+/// skipped (an Error naming the bad line, or `text` when it is not a string: read as
+/// JavaScript's value, so that no other value reaches the glue's string copy).
+fn read(text: &JsValue) -> Result<(Graph, usize), KliError> {
     let Some(text) = text.as_string() else {
         return Err(KliError::invalid(
             "text",
             format!("must be a string (got {})", describe(text)),
         ));
     };
-    let pose = read_g2o(&text)?;
-    Graph::new(Some(pose.count), &pose.edges, &pose.relative, None)
+    let pose = read_g2o(&text, OtherLines::Skip)?;
+    let skipped = pose.skipped.iter().map(|(_, n)| n).sum();
+    let graph =
+        Graph::new(Some(pose.count), &pose.edges, &pose.relative, Some(&pose.rotation_weights))?;
+    Ok((graph, skipped))
 }
 
 /// `graph` synchronised by the chordal and the robust method, node 0 anchored.
@@ -150,9 +159,9 @@ fn median_degrees(residuals: &[f64]) -> f64 {
 }
 
 impl SyncFile {
-    fn of(count: usize, Solutions { chordal, robust }: Solutions) -> SyncFile {
+    fn of(count: usize, skipped: usize, Solutions { chordal, robust }: Solutions) -> SyncFile {
         let flagged = robust.outliers.clone().unwrap_or_default();
-        SyncFile { count, chordal, robust, flagged }
+        SyncFile { count, skipped, chordal, robust, flagged }
     }
 
     fn paint(&self, pen: &Pen, size: (f64, f64)) {
