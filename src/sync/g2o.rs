@@ -6,9 +6,11 @@
 //! - 3D, TORO: `EDGE3 i j x y z roll pitch yaw [21]` and `VERTEX3 id x y z roll pitch yaw`, the
 //!   rotation `Rz(yaw) Ry(pitch) Rx(roll)` (GTSAM's `Rot3::Ypr`).
 //! - 2D, g2o: `EDGE_SE2 i j dx dy dθ [I11 I12 I13 I22 I23 I33]` and `VERTEX_SE2 id x y θ`; TORO:
-//!   `EDGE2 i j dx dy dθ [I11 I12 I22 I33 I13 I23]` (TORO's order, `inf_ff inf_fs inf_ss inf_rr
-//!   inf_fr inf_sr`, as GTSAM's `NoiseFormatTORO` reads it) and `VERTEX2 id x y θ`. A planar
-//!   pose is the rotation about z by θ and the translation `(x, y, 0)`.
+//!   `EDGE2` with the same fields and `VERTEX2 id x y θ`. TORO's own files write `EDGE2`'s
+//!   information as `I11 I12 I22 I33 I13 I23` (`inf_ff inf_fs inf_ss inf_rr inf_fr inf_sr`,
+//!   GTSAM's `NoiseFormatTORO`), others in g2o's order: g2o's order is read where it gives a
+//!   positive definite matrix, else TORO's. A planar pose is the rotation about z by θ and the
+//!   translation `(x, y, 0)`.
 //!
 //! An edge measures `T̃_ij ≈ T_i⁻¹ T_j`: `R̃_ij ≈ R_iᵀ R_j` (`q_ij ≈ q̄_i q_j`, the
 //! synchronisation's relative rotation) and `t̃_ij ≈ R_iᵀ (t_j − t_i)`. Its weights are
@@ -215,19 +217,27 @@ impl Fields<'_> {
         if kind.dimension() == 2 {
             let i = self.numbers::<6>(at)?;
             // (I11, I12, I22, I33) from I11 I12 I13 I22 I23 I33 (g2o) or I11 I12 I22 I33 I13 I23
-            // (TORO).
-            let [i11, i12, i22, i33] = if kind == Kind::Edge2 {
-                [i[0], i[1], i[2], i[3]]
-            } else {
-                [i[0], i[1], i[3], i[5]]
+            // (TORO). EDGE2 lines are written both ways (GTSAM's w20000.txt in g2o's order, its
+            // .graph files in TORO's): a diagonal information is positive definite in only one
+            // reading, so g2o's is taken where it is, else TORO's.
+            let g2o = [i[0], i[1], i[3], i[5]];
+            let toro = [i[0], i[1], i[2], i[3]];
+            let planar = |[i11, i12, i22, i33]: [f64; 4]| {
+                let translation = DMat2::from_cols(DVec2::new(i11, i12), DVec2::new(i12, i22));
+                let tau = trace_of_inverse2(translation).map(|t| 2.0 / t);
+                (tau, (i33 > 0.0).then_some(i33))
             };
-            let translation = DMat2::from_cols(DVec2::new(i11, i12), DVec2::new(i12, i22));
-            let tau =
-                2.0 / trace_of_inverse2(translation).ok_or_else(|| positive("translation"))?;
-            if i33.is_nan() || i33 <= 0.0 {
-                return Err(positive("rotation"));
-            }
-            return Ok((i33, tau));
+            let (tau, kappa) = match planar(g2o) {
+                (Some(tau), Some(kappa)) => (Some(tau), Some(kappa)),
+                g2o_reading if kind == Kind::Edge2 => match planar(toro) {
+                    (Some(tau), Some(kappa)) => (Some(tau), Some(kappa)),
+                    _ => g2o_reading,
+                },
+                g2o_reading => g2o_reading,
+            };
+            let tau = tau.ok_or_else(|| positive("translation"))?;
+            let kappa = kappa.ok_or_else(|| positive("rotation"))?;
+            return Ok((kappa, tau));
         }
         let upper = self.numbers::<21>(at)?;
         // The full symmetric matrix from the upper triangle, row by row.
@@ -344,10 +354,13 @@ pub fn read_g2o(text: &str, others: OtherLines) -> Result<PoseGraph, KliError> {
         }
     }
     let Some((dimension, _)) = dimension.filter(|_| !file_edges.is_empty()) else {
-        return Err(KliError::invalid(
-            "text",
-            "holds no pose edge (EDGE_SE3:QUAT, EDGE3, EDGE_SE2 or EDGE2 line)",
-        ));
+        let mut problem =
+            "holds no pose edge (EDGE_SE3:QUAT, EDGE3, EDGE_SE2 or EDGE2 line)".into();
+        if !skipped.is_empty() {
+            let kinds: Vec<String> = skipped.iter().map(|(k, n)| format!("{k} ({n})")).collect();
+            problem = format!("{problem}; the lines skipped were {}", kinds.join(", "));
+        }
+        return Err(KliError::invalid("text", problem));
     };
     let mut ids: Vec<u64> =
         file_edges.iter().flatten().copied().chain(vertices.iter().map(|v| v.0)).collect();

@@ -96,12 +96,13 @@ fn weights_in_3d_are_se_syncs() {
 fn planar_lines_are_read_with_their_weights() {
     // Information [[4, 1, 0.3], [1, 2, 0.2], [0.3, 0.2, 9]] (x, y, θ): Σ_t = [[4, 1], [1, 2]]⁻¹
     // = [[2, −1], [−1, 4]] / 7, trace 6/7, τ = 2 / (6/7) = 7/3; κ = I_θθ = 9. g2o writes the
-    // upper triangle row by row, TORO as I11 I12 I22 I33 I13 I23.
+    // upper triangle row by row; the EDGE2 line writes it (with I13 = I23 = 0) as TORO does,
+    // I11 I12 I22 I33 I13 I23.
     let text = "VERTEX_SE2 0 0 0 0\n\
                 VERTEX_SE2 1 1 0 0.5\n\
                 VERTEX2 2 1 1 1.0\n\
                 EDGE_SE2 0 1 1 0 0.5 4 1 0.3 2 0.2 9\n\
-                EDGE2 1 2 0.5 1 0.5 4 1 2 9 0.3 0.2\n\
+                EDGE2 1 2 0.5 1 0.5 4 1 2 9 0 0\n\
                 EDGE_SE2 2 0 -1 -1 -1\n";
     let graph = read(text);
     assert_eq!((graph.dimension, graph.count), (2, 3));
@@ -119,6 +120,22 @@ fn planar_lines_are_read_with_their_weights() {
     let initial = graph.initial.unwrap();
     assert!(angle(initial[2], DQuat::from_rotation_z(1.0)) < 1e-15);
     assert_eq!(graph.positions.unwrap()[2], DVec3::new(1.0, 1.0, 0.0));
+}
+
+#[test]
+fn toro_edges_are_read_in_either_order_of_their_information() {
+    // diag(3, 3, 5) written in g2o's order (GTSAM's w20000.txt) and in TORO's (its .graph
+    // files): each is positive definite in only its own reading. τ = 2 / (2/3) = 3, κ = 5.
+    for information in ["3 0 0 3 0 5", "3 0 3 5 0 0"] {
+        let graph = read(&format!("EDGE2 0 1 1 0 0 {information}\n"));
+        assert!(close(graph.translation_weights[0], 3.0), "{information}");
+        assert_eq!(graph.rotation_weights[0], 5.0, "{information}");
+    }
+    // Positive definite both ways: g2o's reading (I22 = 2, I33 = 7; TORO's would be I33 = 2).
+    let graph = read("EDGE2 0 1 1 0 0 4 1 1 2 0 7\n");
+    assert_eq!(graph.rotation_weights[0], 7.0);
+    // EDGE_SE2 is g2o's alone: TORO's order there is refused.
+    assert!(read_g2o("EDGE_SE2 0 1 1 0 0 3 0 3 5 0 0\n", OtherLines::Skip).is_err());
 }
 
 #[test]
@@ -217,7 +234,8 @@ fn bad_lines_are_refused_with_their_number() {
             "information matrix's rotation block is not",
         ),
         ("EDGE_SE2 0 1 0 0 0 1 2 0 1 0 1\n".into(), 1, "information matrix's translation block is"),
-        ("EDGE2 0 1 0 0 0 1 0 1 -1 0 0\n".into(), 1, "information matrix's rotation block is not"),
+        ("EDGE2 0 1 0 0 0 1 0 1 -1 0 0\n".into(), 1, "block is not positive definite"),
+        ("EDGE2 0 1 0 0 0 1 0 0 0 0 1\n".into(), 1, "information matrix's translation block is"),
         (
             "EDGE_SE3:QUAT 0 1 0 0 0 0 0 0 1 1 0 0 0 0 0 1 0 0 0 0 1 0 0 0 0 0 0 1 0 1\n".into(),
             1,

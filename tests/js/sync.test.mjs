@@ -78,3 +78,105 @@ test("with every relative rotation the identity, the robust answer is consensus"
   assert.ok(result.cost < 1e-28, `${result.cost}`);
   assert.ok(result.outliers.every((o) => o === 0));
 });
+
+// Pose-graph files of each kind, as a user's files hold them: 3D with vertices and information,
+// 2D g2o with landmarks, TORO 2D in both orders of its information, other kinds skipped or
+// refused, and a bad line's number as the Error's `line`.
+test("pose graphs of every kind are read and synchronised as they are", () => {
+  // A 3D square (four quarter turns about z) with vertices and a rotation information
+  // diag(400, 400, 400): κ = 3 / (2 tr Σ_R) = 3 / (2 · 3/400) = 200 on every edge.
+  const info3 = "1 0 0 0 0 0 1 0 0 0 0 1 0 0 0 400 0 0 400 0 400";
+  const r = Math.SQRT1_2;
+  const square = [
+    "# a square",
+    ...[0, 1, 2, 3].map((i) => `VERTEX_SE3:QUAT ${i} 0 0 0 0 0 ${Math.sin((i * Math.PI) / 4)} ${Math.cos((i * Math.PI) / 4)}`),
+    ...[0, 1, 2, 3].map((i) => `EDGE_SE3:QUAT ${i} ${(i + 1) % 4} 1 0 0 0 0 ${r} ${r} ${info3}`),
+  ].join("\n");
+  const graph = readG2o(square);
+  assert.equal(graph.dimension, 3);
+  assert.ok(Array.from(graph.weights).every((w) => Math.abs(w - 200) < 1e-12), `${graph.weights}`);
+  const chordal = synchronizeRotations(graph);
+  assert.ok(chordal.cost < 1e-20 && chordal.certificate.certified, "MATH.md's square: f = 0, certified");
+  // The flow starts at the vertices, which agree with every edge: it is at rest at f = 0.
+  const flow = new SyncFlow(graph);
+  assert.ok(flow.cost < 1e-20, `${flow.cost}`);
+  flow.free();
+
+  // 2D, g2o, with landmarks among the poses' ids: poses 0, 2, 4 on a triangle with a 0.6 rad
+  // loop error and rotation information 1, 2, 4. The chordal optimum balances κ sin θ (Lagrange).
+  const planar = [
+    "VERTEX_SE2 0 0 0 0", "VERTEX_XY 1 5 5", "VERTEX_SE2 2 1 0 0", "VERTEX_XY 3 6 6", "VERTEX_SE2 4 0 1 0",
+    "EDGE_SE2 0 2 1 0 0.2 1 0 0 1 0 1", "EDGE_SE2_XY 0 1 5 5 1 0 1",
+    "EDGE_SE2 2 4 -1 1 0.2 1 0 0 1 0 2", "EDGE_SE2_XY 2 3 5 6 1 0 1",
+    "EDGE_SE2 4 0 0 -1 0.2 1 0 0 1 0 4", "EDGE_PRIOR_SE2 0 0 0 0 1 0 0 1 0 1",
+  ].join("\n");
+  const g2 = readG2o(planar);
+  assert.equal(g2.dimension, 2);
+  assert.deepEqual(Array.from(g2.ids), [0, 2, 4]);
+  assert.deepEqual(Array.from(g2.edges), [0, 1, 1, 2, 2, 0]);
+  assert.deepEqual(g2.skipped, { VERTEX_XY: 2, EDGE_SE2_XY: 2, EDGE_PRIOR_SE2: 1 });
+  assert.deepEqual(Array.from(g2.weights), [1, 2, 4]);
+  assert.deepEqual(Array.from(g2.translations.subarray(3, 6)), [-1, 1, 0]);
+  const solved = synchronizeRotations(g2);
+  const balance = Array.from(solved.residuals, (t, k) => g2.weights[k] * Math.sin(t));
+  assert.ok(Math.max(...balance) - Math.min(...balance) < 1e-9, `${balance}`);
+  assert.ok(Math.abs(solved.residuals.reduce((a, b) => a + b) - 0.6) < 1e-9);
+  // Weights of the caller's own win.
+  const even = synchronizeRotations({ ...g2, weights: [1, 1, 1] });
+  assert.ok(Array.from(even.residuals).every((t) => Math.abs(t - 0.2) < 1e-9), `${even.residuals}`);
+
+  // TORO's EDGE2, its information diag(3, 3, 5) written in g2o's order and in TORO's.
+  for (const info of ["3 0 0 3 0 5", "3 0 3 5 0 0"]) {
+    const g = readG2o(`VERTEX2 0 0 0 0\nVERTEX2 1 1 0 0\nEDGE2 0 1 1 0 0 ${info}`);
+    assert.equal(g.weights[0], 5, info);
+    assert.ok(Math.abs(g.translationWeights[0] - 3) < 1e-12, info);
+  }
+
+  // Strict refuses the landmark, by its line; every refusal carries the line.
+  assert.throws(() => readG2o(planar, { strict: true }), (e) => e.kind === "invalid" && e.line === 2 && /^text line 2: "VERTEX_XY"/.test(e.message));
+  assert.throws(() => readG2o("EDGE_SE2 0 1 0 0 0\nEDGE_SE3:QUAT 1 2 0 0 0 0 0 0 1"), (e) => e.line === 2 && /2D one/.test(e.message));
+  assert.throws(() => readG2o("EDGE_SE2 0 1 0 0 0 1 0 0 1 0 -5"), (e) => e.line === 1 && /rotation block is not positive definite/.test(e.message));
+  assert.throws(() => readG2o("LANDMARK 0 1 2 3\n"), (e) => e.line === undefined && /skipped were LANDMARK \(1\)/.test(e.message));
+  assert.throws(() => readG2o(planar, { strict: "yes" }), (e) => e.argument === "strict");
+});
+
+test("the sync results are typed by method under tsc --strict: the README's code compiles", async () => {
+  const { mkdtempSync, writeFileSync } = await import("node:fs");
+  const { execFileSync } = await import("node:child_process");
+  const { tmpdir } = await import("node:os");
+  const { join } = await import("node:path");
+  const dir = mkdtempSync(join(tmpdir(), "kli-sync-types-"));
+  const from = new URL("sync.js", pkg).pathname;
+  writeFileSync(join(dir, "use.ts"), `
+    import { readG2o, synchronizeRotations, SyncFlow, isKliError, type PoseGraph, type SyncMethod } from ${JSON.stringify(from)};
+    declare const text: string;
+    declare const method: SyncMethod;
+    // The README's code, as written.
+    const graph: PoseGraph = readG2o(text);
+    const { rotations, certificate } = synchronizeRotations(graph);
+    const certified: boolean = certificate.certified;
+    const { outliers } = synchronizeRotations(graph, { method: "robust" });
+    const flagged: number = outliers.reduce((a, b) => a + b, 0);
+    const chordal: boolean = synchronizeRotations(graph, { method: "chordal", anchor: 3 }).certificate.certified;
+    const flow = new SyncFlow(graph);
+    const skipped: number | undefined = graph.skipped["VERTEX_XY"];
+    try { readG2o(text); } catch (e) { if (isKliError(e)) { const line: number | undefined = e.line; void line; } }
+    // @ts-expect-error: the spectral relaxation has no certificate
+    synchronizeRotations(graph, { method: "spectral" }).certificate.certified;
+    // @ts-expect-error: a method known only when run: the certificate may be absent
+    synchronizeRotations(graph, { method }).certificate.certified;
+    // @ts-expect-error: the chordal optimum flags no outliers
+    synchronizeRotations(graph).outliers.length;
+    void [rotations, certified, flagged, chordal, flow, skipped];
+  `);
+  writeFileSync(join(dir, "tsconfig.json"), JSON.stringify({
+    compilerOptions: { strict: true, noEmit: true, module: "nodenext", moduleResolution: "nodenext", target: "es2022", lib: ["es2022"], types: [], skipLibCheck: false },
+    files: ["use.ts"],
+  }));
+  const tsc = new URL("../../node_modules/.bin/tsc", import.meta.url).pathname;
+  try {
+    execFileSync(tsc, ["-p", "tsconfig.json"], { cwd: dir, encoding: "utf8" });
+  } catch (e) {
+    assert.fail(`tsc: ${e.stdout}${e.stderr}`);
+  }
+});

@@ -114,6 +114,10 @@ export type ChordalSyncOptions = SyncOptions & { method?: "chordal" };
 
 export function synchronizeRotations(
   input: SyncInput,
+  options?: ChordalSyncOptions | null,
+): ChordalSynchronized;
+export function synchronizeRotations(
+  input: SyncInput,
   options: SyncOptions & { method: "robust" },
 ): RobustSynchronized;
 export function synchronizeRotations(
@@ -289,12 +293,10 @@ fn set(object: &js_sys::Object, key: &str, value: JsValue) {
 
 /// Synchronises the rotations of a graph from its relative measurements: the certified chordal
 /// optimum by default (`method: "robust"` for graphs with wrong edges).
-#[wasm_bindgen(js_name = synchronizeRotations, unchecked_return_type = "ChordalSynchronized")]
+#[wasm_bindgen(js_name = synchronizeRotations, unchecked_return_type = "Synchronized")]
 pub fn synchronize_rotations(
     #[wasm_bindgen(unchecked_param_type = "SyncInput")] input: &JsValue,
-    #[wasm_bindgen(unchecked_param_type = "ChordalSyncOptions | null")] options: Option<
-        SyncOptionsObject,
-    >,
+    options: Option<SyncOptionsObject>,
 ) -> JsResult<JsValue> {
     let keys = ["method", "anchor", "scale", "order"];
     let fields = Fields::new(options.map(JsValue::from), &keys, "{ method: \"robust\" }")?;
