@@ -69,7 +69,8 @@ pub enum ErrorKind {
     ZeroLength { shape: Shape },
     /// A number outside its domain.
     OutOfRange { value: f64, requirement: Requirement },
-    /// An array that must hold `expected` numbers, 4 for each `per` value (e.g. each `t`).
+    /// An array that must hold `expected` numbers: 4 for each `per` (a singular noun: "t value",
+    /// "edge"), or, with `per` empty, one value of `expected` numbers (a quaternion, a 3-vector).
     WrongLength { expected: usize, got: usize, per: String },
     /// A name that is not one of `allowed`.
     UnknownName { got: String, allowed: &'static [&'static str] },
@@ -193,10 +194,18 @@ impl KliError {
                 };
                 format!("{arg} must be {requirement} (got {})", n(*value))
             }
-            ErrorKind::WrongLength { expected, got, per } => format!(
-                "{arg} must hold 4 numbers per {per} value: {expected} for {} values (got {got})",
-                expected / 4
-            ),
+            // "p must hold 4 numbers (got 3)"
+            ErrorKind::WrongLength { expected, got, per } if per.is_empty() => {
+                format!("{arg} must hold {expected} numbers (got {got})")
+            }
+            // "ends must hold 4 numbers per t value: 8 for 2 t values (got 4)"
+            ErrorKind::WrongLength { expected, got, per } => {
+                let count = expected / 4;
+                let plural = if count == 1 { "" } else { "s" };
+                format!(
+                    "{arg} must hold 4 numbers per {per}: {expected} for {count} {per}{plural} (got {got})"
+                )
+            }
             ErrorKind::UnknownName { got, allowed } => {
                 format!("{arg} must be {} (got \"{got}\")", one_of(allowed))
             }

@@ -72,7 +72,8 @@ pub fn check_lengths(
     let expected = parameters.saturating_mul(4);
     for (name, got) in [("starts", starts), ("ends", ends), ("out", out)] {
         if got != expected {
-            let kind = ErrorKind::WrongLength { expected, got, per: parameter_name.into() };
+            let per = format!("{parameter_name} value");
+            let kind = ErrorKind::WrongLength { expected, got, per };
             return Err(KliError::new(name, kind));
         }
     }
@@ -234,7 +235,7 @@ mod tests {
         );
         assert!(
             message(kli_exact_batch(&good, &good, &[0.5], &mut out, true))
-                .starts_with("starts must hold 4 numbers per t value: 4 for 1 values (got 8)")
+                .starts_with("starts must hold 4 numbers per t value: 4 for 1 t value (got 8)")
         );
         let antipodal = flat(&[[-1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0]]);
         assert!(

@@ -55,18 +55,38 @@ pub fn numbers<const N: usize>(
 #[inline(never)]
 fn exactly(name: &str, value: &JsValue, shape: &str, out: &mut [f64]) -> Result<(), KliError> {
     let n = out.len();
+    // "p must hold 4 numbers (got 3)": kind "wrong-length", as the batch calls say it.
+    let wrong_length = |got: f64| {
+        KliError::new(
+            name,
+            ErrorKind::WrongLength { expected: n, got: got as usize, per: "".into() },
+        )
+    };
     let problem = match read_numbers(name, value, n) {
         Ok(numbers) if numbers.len() == n => {
             out.copy_from_slice(&numbers);
             return Ok(());
         }
+        Ok(numbers) => return Err(wrong_length(numbers.len() as f64)),
         // "p must hold 4 numbers [w, x, y, z]: element 0 is …"
         Err(Refused::Element { index, got }) => {
             format!("must hold {n} numbers {shape}: element {index} is {got}")
         }
         Err(Refused::Unreadable(e)) => return Err(e),
-        Err(Refused::Shape(_)) | Ok(_) => {
-            format!("must be an array of {n} numbers {shape} (got {})", describe(value))
+        Err(Refused::Shape(_)) => {
+            // An array or typed array longer than n (read_numbers reads no further) is of the
+            // wrong length too; anything else is not an array.
+            let length = if is_view(value) {
+                crate::value::typed_length(value)
+            } else if is_array(value).unwrap_or(false) {
+                get(name, value, &"length".into())?.as_f64()
+            } else {
+                None
+            };
+            match length {
+                Some(got) if got > n as f64 => return Err(wrong_length(got)),
+                _ => format!("must be an array of {n} numbers {shape} (got {})", describe(value)),
+            }
         }
     };
     Err(KliError::invalid(name, problem))

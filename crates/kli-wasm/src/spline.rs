@@ -5,7 +5,7 @@ use js_sys::Float64Array;
 use kli::spline::{
     ChainOptions, Curve, Keys, KliSpline, MAX_SAMPLES_PER_SEGMENT, PiecewiseSlerp, Squad,
 };
-use kli::{KliError, Requirement, require};
+use kli::{ErrorKind, KliError, Requirement, require};
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
@@ -13,7 +13,6 @@ use crate::error::JsResult;
 use crate::options::Fields;
 use crate::read::{Order, number_argument, quaternion_list};
 use crate::typed::{F64Array, float64_length, numbers};
-use crate::value::describe;
 
 #[wasm_bindgen(typescript_custom_section)]
 const TYPES: &'static str = r#"
@@ -96,9 +95,10 @@ fn fill(out: &JsValue, values: &[f64]) -> Result<Float64Array, KliError> {
     if out.is_undefined() || out.is_null() {
         return Ok(Float64Array::from(values));
     }
-    if float64_length("out", out)? != values.len() {
-        let problem = format!("must be a Float64Array of {} (got {})", values.len(), describe(out));
-        return Err(KliError::invalid("out", problem));
+    let got = float64_length("out", out)?;
+    if got != values.len() {
+        let kind = ErrorKind::WrongLength { expected: values.len(), got, per: String::new() };
+        return Err(KliError::new("out", kind));
     }
     let out: &Float64Array = out.unchecked_ref();
     for (i, &x) in values.iter().enumerate() {
@@ -142,12 +142,9 @@ impl RotationSpline {
                 false => Some(F64Array::new("out", out)?),
             };
             if let Some(out) = out.as_ref().filter(|o| o.length != 4 * times.len()) {
-                let problem = format!(
-                    "must hold 4 numbers per time: {} (got {})",
-                    4 * times.len(),
-                    out.length
-                );
-                return Err(KliError::invalid("out", problem));
+                let (expected, got) = (4 * times.len(), out.length);
+                let kind = ErrorKind::WrongLength { expected, got, per: "time".into() };
+                return Err(KliError::new("out", kind));
             }
             let mut values = vec![0.0; 4 * times.len()];
             self.curve().sample_into(&times, &mut values);

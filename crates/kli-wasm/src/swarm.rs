@@ -2,8 +2,8 @@
 
 use glam::DQuat;
 use js_sys::Float64Array;
-use kli::KliError;
 use kli::swarm::{Graph, MAX_COUNT, Swarm, SwarmOptions};
+use kli::{ErrorKind, KliError};
 use wasm_bindgen::prelude::*;
 
 use crate::error::JsResult;
@@ -140,12 +140,9 @@ impl JsLoheSwarm {
     ) -> JsResult<()> {
         let values = numbers("quaternions", values, 4 * self.swarm.len())?;
         if values.len() != 4 * self.swarm.len() {
-            let problem = format!(
-                "must hold 4 numbers per oscillator: {} (got {})",
-                4 * self.swarm.len(),
-                values.len()
-            );
-            return Err(KliError::invalid("quaternions", problem).into());
+            let (expected, got) = (4 * self.swarm.len(), values.len());
+            let kind = ErrorKind::WrongLength { expected, got, per: "oscillator".into() };
+            return Err(KliError::new("quaternions", kind).into());
         }
         let quaternions: Vec<DQuat> =
             values.chunks_exact(4).map(|q| self.order.read([q[0], q[1], q[2], q[3]])).collect();

@@ -460,7 +460,7 @@ fn batch_errors_name_the_argument_and_element() {
     };
     expect_error(
         kli_batch(&starts, &params[..10], out()),
-        "starts must hold 4 numbers per t value: 40 for 10 values (got 20000)",
+        "starts must hold 4 numbers per t value: 40 for 10 t values (got 20000)",
     );
     expect_error(
         kli_batch(&starts, &params, f64s(&[0.0; 8])),
@@ -471,7 +471,7 @@ fn batch_errors_name_the_argument_and_element() {
     let plain: Array = [1.0, 0.0, 0.0, 0.0].iter().map(|&v| JsValue::from(v)).collect();
     expect_error(
         api::slerp_batch(&plain, &f64s(&ends), &f64s(&params), &out(), None),
-        "starts must hold 4 numbers per s value: 20000 for 5000 values (got 4)",
+        "starts must hold 4 numbers per s value: 20000 for 5000 s values (got 4)",
     );
     expect_error(
         api::slerp_batch(&"abcd".into(), &f64s(&ends), &f64s(&params), &out(), None),
