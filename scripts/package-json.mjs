@@ -23,16 +23,17 @@ for (const m of modules) {
     if (!existsSync(at(`pkg/${file}`))) throw new Error(`pkg/${file} is missing`);
   }
   // The classes declare [Symbol.dispose] (for `using`): the reference lets `lib: es2022` projects
-  // compile the declarations without adding esnext.disposable themselves.
+  // compile the declarations without adding esnext.disposable themselves. No DOM: a Node project
+  // that imports kli must not get `document` as a global, so init's types (RequestInfo, URL,
+  // Response, BufferSource, WebAssembly.*) become the environment's own where its types declare
+  // them (the DOM library, @types/node) and plain ones where not (domFree).
   const types = manifest(`pkg/${m}.d.ts`);
-  // `dom` too: init's parameter types (RequestInfo, Response, BufferSource, WebAssembly) are the
-  // DOM's, so a project with `lib: ["es2022"]` alone compiles them.
-  if (!types.startsWith("/// <reference lib")) writeFileSync(at(`pkg/${m}.d.ts`), `/// <reference lib="esnext.disposable" />\n/// <reference lib="dom" />\n${types}`);
+  if (!types.startsWith("/// <reference lib")) writeFileSync(at(`pkg/${m}.d.ts`), `/// <reference lib="esnext.disposable" />\n${domFree(types, `pkg/${m}.d.ts`)}`);
   // What a bundler's file loader gives for \`import wasm from "kli/kli_bg.wasm"\` (esbuild's
   // --loader:.wasm=file, the README's line): the file's URL, for init({ module_or_path }).
   const raw = manifest(`pkg/${m}_bg.wasm.d.ts`);
   if (!raw.includes("export default")) {
-    writeFileSync(at(`pkg/${m}_bg.wasm.d.ts`), `${raw}
+    writeFileSync(at(`pkg/${m}_bg.wasm.d.ts`), `${domFree(raw, `pkg/${m}_bg.wasm.d.ts`)}
 /** With a bundler's file loader (esbuild's \`--loader:.wasm=file\`): the file's URL, for
  *  \`init({ module_or_path: url })\`. The named exports above are the module's raw exports. */
 declare const url: string;
@@ -96,6 +97,18 @@ async function __kliFallback(url, inline) {
 }
 `);
   }
+  // kli/three and kli/gltf reach kli/spline and kli/average through the registry, never by
+  // importing them (crates/kli-wasm/js/resample.js): each registers what it lends when imported.
+  const lends = { spline: "kliSpline", average: "blendRotations" }[m];
+  const glueLent = manifest(`pkg/${m}.js`);
+  if (lends && !glueLent.includes("./resample.js")) {
+    if (!glueLent.includes("const unready = ")) throw new Error(`pkg/${m}.js: not mended by scripts/glue.mjs (no unready)`);
+    writeFileSync(at(`pkg/${m}.js`), `${glueLent}
+// What kli/three and kli/gltf use of this entry, and whether init() has run (resample.js).
+import { entries as __kliEntries } from './resample.js';
+__kliEntries['kli/${m}'] = { ${lends}, ready: () => wasm !== unready };
+`);
+  }
   writeFileSync(at(`pkg/${m}.node.js`), `// Node (and SSR, Vitest): the same module, with init() reading the .wasm beside this file
 // from disk when given nothing, where the browser entry would fetch it (fetch cannot read file:).
 import init from "./${m}.js";
@@ -111,6 +124,35 @@ export default async function initNode(input) {
 `);
 }
 copyFileSync(at("LICENSE"), at("pkg/LICENSE"));
+
+/**
+ * wasm-bindgen's declarations without the DOM library: each DOM type they name becomes the
+ * environment's own where its types declare that global (the DOM library, @types/node, a worker's
+ * lib), else what it is made of (a URL as a string, bytes as an ArrayBuffer or a view of one) or
+ * `object`. So the package adds no global of its own to a project, and needs none.
+ */
+function domFree(types, file) {
+  // Code lines only: wasm-bindgen's JSDoc of init names the DOM's types, and keeps them.
+  const replaced = types.split("\n").map((line) => /^\s*(\*|\/\*|\/\/)/.test(line) ? line : line
+    .replace(/\bRequestInfo \| URL \| Response \| BufferSource \| WebAssembly\.Module\b/g,
+      'string | KliGlobal<"Request"> | KliGlobal<"URL"> | KliGlobal<"Response"> | ArrayBuffer | ArrayBufferView | KliWasm<"Module">')
+    .replace(/\bBufferSource \| WebAssembly\.Module\b/g, 'ArrayBuffer | ArrayBufferView | KliWasm<"Module">')
+    .replace(/\bWebAssembly\.Memory\b/g, 'KliWasm<"Memory", { readonly buffer: ArrayBuffer }>')
+    .replace(/\bWebAssembly\.(Table|Global|Module|Instance)\b/g, 'KliWasm<"$1">')).join("\n");
+  const code = replaced.replace(/\/\*[\s\S]*?\*\//g, "").replace(/\/\/.*$/gm, "");
+  const left = code.match(/(?<![\w"])(RequestInfo|BufferSource|Request|Response|URL|WebAssembly\.\w+|HTML\w+|Window|Document)(?![\w"])/);
+  if (left) throw new Error(`${file}: a DOM type is left (${left[0]}); update domFree in scripts/package-json.mjs`);
+  if (replaced === types) return types;
+  return `${replaced}
+/** The type of \`globalThis[Name]\`'s instances where the project's types declare that global (the
+ *  DOM library, @types/node), else \`Else\`: the package's types need no DOM library. */
+type KliGlobal<Name extends string, Else = never> =
+  typeof globalThis extends { readonly [K in Name]: { prototype: infer T } } ? T : Else;
+/** The same for \`WebAssembly[Name]\`. */
+type KliWasm<Name extends string, Else = object> =
+  typeof globalThis extends { readonly WebAssembly: { readonly [K in Name]: { prototype: infer T } } } ? T : Else;
+`;
+}
 
 const entry = (m) => ({ types: `./${m}.d.ts`, node: `./${m}.node.js`, default: `./${m}.js` });
 const json = {

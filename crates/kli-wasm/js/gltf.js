@@ -6,8 +6,9 @@
 // every glTF viewer plays it. STEP and CUBICSPLINE samplers, and everything not a rotation, are
 // left alone. It uses only the document it is given: any @gltf-transform/core from 3 on.
 // Initialise kli/spline first (`await init()` from "kli/spline").
-import { isKliError } from "./spline.js";
-import { readOptions, resample } from "./resample.js";
+import { isKliError, lent, readOptions, resample } from "./resample.js";
+
+const CALLER = "kli/gltf's smoothRotations";
 
 export { isKliError };
 
@@ -18,8 +19,10 @@ export { isKliError };
 export function smoothRotations(options) {
   const { fps, smoothness } = readOptions(options, 60);
   return function smoothRotations(document) {
+    lent("kli/spline", CALLER);
     const done = new Set();
     for (const animation of document.getRoot().listAnimations()) {
+      const samplers = animation.listSamplers();
       for (const channel of animation.listChannels()) {
         const sampler = channel.getSampler();
         if (channel.getTargetPath() !== "rotation" || !sampler || done.has(sampler)) continue;
@@ -33,7 +36,9 @@ export function smoothRotations(options) {
           times[i] = input.getScalar(i);
           values.set(output.getElement(i, q), 4 * i);
         }
-        const sampled = resample(times, values, fps, smoothness);
+        // An Error about a key names its animation and sampler, as the file does.
+        const where = `animation "${animation.getName()}", sampler ${samplers.indexOf(sampler)}, `;
+        const sampled = resample(times, values, fps, smoothness, { argument: "document", where, caller: CALLER });
         if (!sampled) continue;
         sampler
           .setInput(document.createAccessor(input.getName()).setType("SCALAR").setArray(sampled.times).setBuffer(input.getBuffer()))

@@ -1,13 +1,30 @@
-// The Kuramoto–Lohe chain through rotation keys, resampled for animation formats: shared by
-// kli/three and kli/gltf. Quaternions scalar last (three.js, glTF); times in seconds.
-import { kliSpline } from "./spline.js";
+// Shared by kli/three and kli/gltf: the registry through which they reach kli/spline and
+// kli/average, and the Kuramoto–Lohe chain through rotation keys resampled for animation formats
+// (quaternions scalar last; times in seconds). kli/spline and kli/average register what they lend
+// when imported (scripts/package-json.mjs): kli/three and kli/gltf never import them, so a bundle
+// holds only the entries the app imports (smoothTrack alone: no kli/average, nor its .wasm).
+
+/** By entry ("kli/spline"), what it lends and `ready()`, whether its init() has run. */
+export const entries = {};
+
+/** True for every Error kli throws: an Error with the string properties `argument` and `kind`. */
+export function isKliError(value) {
+  return value instanceof Error && typeof value.argument === "string" && typeof value.kind === "string";
+}
 
 /** A kli Error (argument, kind), as the wasm entries throw them. */
-export function refuse(argument, problem) {
+export function refuse(argument, problem, kind = "invalid") {
   const error = new Error(`${argument} ${problem}`);
   error.argument = argument;
-  error.kind = "invalid";
+  error.kind = kind;
   return error;
+}
+
+/** What `entry` lends, for `caller`; before its init(), an Error that names both. */
+export function lent(entry, caller) {
+  const functions = entries[entry];
+  if (functions?.ready()) return functions;
+  throw refuse(entry, `is not initialised: ${caller} uses it, so call \`await init()\` from "${entry}" first`, "not-initialised");
 }
 
 /** The options `{ fps, smoothness }`, checked; `fps` from 1 to 1000. */
@@ -24,10 +41,28 @@ export function readOptions(options, fps = 60) {
   return chosen;
 }
 
-/** The chain through the keys (4 values a time, scalar last), or null for fewer than 2 keys. */
-export function chainThrough(times, values, smoothness) {
+/** kliSpline's Error about `keys[i]` or `times[i]` (of a flat array the caller never saw), about
+ *  the keys' owner instead (`{ argument, where }`): "track key 1 (at 0.8 s) must be …". */
+function renamed(e, owner, times) {
+  const at = isKliError(e) && /^(keys|times)(?:\[(\d+)\])?(?= )/.exec(e.message);
+  if (!at) return e;
+  const [whole, what, i] = at;
+  const which = i === undefined ? what : what === "keys" ? `key ${i} (at ${times[i]} s)` : `times[${i}]`;
+  const error = refuse(owner.argument, `${owner.where}${which}${e.message.slice(whole.length)}`, e.kind);
+  if (e.component !== undefined) error.component = e.component;
+  return error;
+}
+
+/** The chain through the keys (4 values a key, scalar last), or null for fewer than 2 keys;
+ *  `owner.caller` ("kli/three's smoothTrack") needs kli/spline. */
+export function chainThrough(times, values, smoothness, owner) {
+  const { kliSpline } = lent("kli/spline", owner.caller);
   if (times.length < 2) return null;
-  return kliSpline(values, { times, order: "xyzw", smoothness });
+  try {
+    return kliSpline(values, { times, order: "xyzw", smoothness });
+  } catch (e) {
+    throw renamed(e, owner, times);
+  }
 }
 
 /** The most samples a resampling writes: 10⁷ (40 MB of values). */
@@ -38,8 +73,8 @@ const MAX_SAMPLES = 1e7;
  * is hit): `{ times, values }` as Float32Arrays (the precision of three.js tracks and glTF
  * accessors), or null for fewer than 2 keys.
  */
-export function resample(keyTimes, keyValues, fps, smoothness) {
-  const chain = chainThrough(keyTimes, keyValues, smoothness);
+export function resample(keyTimes, keyValues, fps, smoothness, owner) {
+  const chain = chainThrough(keyTimes, keyValues, smoothness, owner);
   if (!chain) return null;
   try {
     const first = keyTimes[0], last = keyTimes[keyTimes.length - 1];

@@ -5,24 +5,32 @@
 // export), `smoothInterpolation` evaluates it live in the mixer. `blendRotations` blends poses
 // by kli/average's weighted chordal mean, whatever their order. Quaternions are scalar last, as
 // three.js keeps them. Initialise kli/spline first (`await init()` from "kli/spline") for the
-// tracks, kli/average for the blend.
+// tracks, kli/average for the blend; neither is imported here (resample.js, the registry), so an
+// app that only smooths never bundles kli/average, one that only blends never kli/spline.
 import { Interpolant, Quaternion, QuaternionKeyframeTrack } from "three";
-import { blendRotations as blendFlat } from "./average.js";
-import { isKliError } from "./spline.js";
-import { chainThrough, readOptions, refuse, resample } from "./resample.js";
+import { chainThrough, isKliError, lent, readOptions, refuse, resample } from "./resample.js";
 
 export { isKliError };
 
-/** The track's keys, checked: a QuaternionKeyframeTrack (or its shape) with 4 values a time. */
+/** The track's keys, checked: a QuaternionKeyframeTrack (or its shape), 4 values a key. */
 function keysOf(track) {
   const ok = track !== null && typeof track === "object" && typeof track.name === "string" &&
     ArrayBuffer.isView(track.times) && ArrayBuffer.isView(track.values);
   if (!ok) throw refuse("track", "must be a THREE.QuaternionKeyframeTrack (name, times, values)");
-  if (track.values.length !== 4 * track.times.length) {
-    throw refuse("track", `must hold 4 values a time: ${4 * track.times.length} (got ${track.values.length})`);
+  // Another kind of track (positions, morph weights) is named as three.js names it.
+  const type = track.ValueTypeName;
+  if (typeof type === "string" && type !== "quaternion") {
+    throw refuse("track", `must be a THREE.QuaternionKeyframeTrack: "${track.name}" is a ${type} track, and only rotations are smoothed`);
+  }
+  const keys = track.times.length;
+  if (track.values.length !== 4 * keys) {
+    throw refuse("track", `must hold 4 values (a quaternion) per key: ${4 * keys} for its ${keys} key${keys === 1 ? "" : "s"} (got ${track.values.length})`, "wrong-length");
   }
   return { times: track.times, values: track.values };
 }
+
+/** The owner of a track's keys, for Errors (resample.js). */
+const owner = (caller) => ({ argument: "track", where: "", caller: `kli/three's ${caller}` });
 
 /**
  * A new QuaternionKeyframeTrack of the same name through the same keys, resampled from the chain
@@ -32,7 +40,7 @@ function keysOf(track) {
 export function smoothTrack(track, options) {
   const keys = keysOf(track);
   const { fps, smoothness } = readOptions(options, 60);
-  const sampled = resample(keys.times, keys.values, fps, smoothness);
+  const sampled = resample(keys.times, keys.values, fps, smoothness, owner("smoothTrack"));
   return sampled ? new QuaternionKeyframeTrack(track.name, sampled.times, sampled.values) : track.clone();
 }
 
@@ -67,7 +75,7 @@ export function smoothInterpolation(track, options) {
   const keys = keysOf(track);
   const { smoothness } = readOptions(options, 60);
   const smooth = track.clone();
-  const chain = chainThrough(keys.times, keys.values, smoothness);
+  const chain = chainThrough(keys.times, keys.values, smoothness, owner("smoothInterpolation"));
   if (!chain) return smooth;
   smooth.createInterpolant = function (result) {
     return new ChainInterpolant(this.times, this.values, this.getValueSize(), result, chain);
@@ -102,6 +110,7 @@ function refused(name, problem) {
  * Quaternion, an array of them, an array of numbers) or a new one (a Float64Array for values).
  */
 export function blendRotations(poses, weights, out) {
+  const { blendRotations: blendFlat } = lent("kli/average", "kli/three's blendRotations");
   if (!Array.isArray(poses) || poses.length === 0) {
     refused("poses", "must be a non-empty array of poses (THREE.Quaternions, arrays of them, or tracks' values)");
   }

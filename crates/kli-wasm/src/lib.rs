@@ -138,13 +138,16 @@ export type KliErrorKind =
   /** A method of an object after its free(). */
   | "freed"
   /** A call into an object from inside one of its own calls (a getter or Proxy called back). */
-  | "busy";
+  | "busy"
+  /** A call before the entry's `init()` (or `initSync`) has run; `argument` is the entry to
+   *  initialise, e.g. "kli/spline". */
+  | "not-initialised";
 
 /** Every Error kli throws: the message starts with the argument's name, and the same facts are
  *  properties, so code can route an error without reading its text. */
 export interface KliError extends Error {
   /** The argument at fault, as the call names it: "p", "maxTime", "ends[7]"; "this" for the
-   *  object itself (kinds "freed" and "busy"). */
+   *  object itself (kinds "freed" and "busy"); the entry to initialise for "not-initialised". */
   argument: string;
   kind: KliErrorKind;
   /** For kind "not-finite": the component's position in the caller's array (0 is w in the order
