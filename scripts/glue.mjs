@@ -88,8 +88,7 @@ export function mend(source, file = "glue", entry = entryOf(file)) {
   const mended = source
     .replace(THROW, "$1throw rustError(getStringFromWasm0(arg0, arg1));")
     .replace(EXPORTS, `$1wasm = guard(instance.exports, new Set(${JSON.stringify(methods)}));`)
-    .replace(DECLARED, `\n// kli: until init(), every call throws an Error that says so (scripts/glue.mjs).
-const unready = new Proxy({}, { get() { throw kliError(${JSON.stringify(`${entry} is not initialised: call \`await init()\` from "${entry}" first`)}, ${JSON.stringify(entry)}, "not-initialised"); } });
+    .replace(DECLARED, `\nconst unready = new Proxy({}, { get() { throw kliError(${JSON.stringify(`${entry} is not initialised: call \`await init()\` from "${entry}" first`)}, ${JSON.stringify(entry)}, "not-initialised"); } });
 $1wasm = unready;\n`)
     .replace(LOADED, "if (wasm !== unready) return wasm;")
     .replace(FREE, (_, indent, call) => {

@@ -104,7 +104,6 @@ async function __kliFallback(url, inline) {
   if (lends && !glueLent.includes("./resample.js")) {
     if (!glueLent.includes("const unready = ")) throw new Error(`pkg/${m}.js: not mended by scripts/glue.mjs (no unready)`);
     writeFileSync(at(`pkg/${m}.js`), `${glueLent}
-// What kli/three and kli/gltf use of this entry, and whether init() has run (resample.js).
 import { entries as __kliEntries } from './resample.js';
 __kliEntries['kli/${m}'] = { ${lends}, ready: () => wasm !== unready };
 `);
