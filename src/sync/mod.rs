@@ -10,8 +10,10 @@
 //!
 //! - [`Method::Chordal`]: the certified global minimum. Spectral start ([`Method::Spectral`]),
 //!   Riemannian Newton with sparse Cholesky solves, and the [`Certificate`] `S = L − Λ ⪰ 0`.
-//! - [`Method::Robust`]: iteratively reweighted least squares (L1, then Geman–McClure) for graphs
-//!   with wrong edges; reports each edge's final weight and whether it is an outlier.
+//! - [`Method::Robust`]: for graphs with wrong edges. The least-squares optimum when no edge is
+//!   far off from it, or of the edges kept when a few are; iteratively reweighted least squares
+//!   (L1, then Geman–McClure) when many are. Reports each edge's weight and whether it is an
+//!   outlier.
 //! - [`Method::Spectral`]: the spectral relaxation alone, rounded.
 //! - [`SyncFlow`]: the paper's Lohe model on the graph, steppable: the picture, which settles on
 //!   the same minimum.
@@ -85,8 +87,9 @@ pub struct SyncOptions {
     pub method: Method,
     /// The node held at the identity (0 by default).
     pub anchor: usize,
-    /// For [`Method::Robust`]: the Geman–McClure scale `σ` in radians, or `None` for the median
-    /// residual after the L1 rounds.
+    /// For [`Method::Robust`]: the residual scale `σ` in radians (an edge beyond `3σ` is an
+    /// outlier; the Geman–McClure scale of the reweighted rounds), or `None` to measure it from
+    /// the residuals.
     pub scale: Option<f64>,
 }
 
@@ -109,7 +112,8 @@ pub struct Synchronized {
     pub iterations: usize,
     /// For [`Method::Chordal`]: whether the result is provably the global minimum.
     pub certificate: Option<Certificate>,
-    /// For [`Method::Robust`]: each edge's final weight (the caller's times the robust factor).
+    /// For [`Method::Robust`]: each edge's final weight (the caller's times the robust factor: 1
+    /// or 0 for an edge kept or set aside from least squares).
     pub weights: Option<Vec<f64>>,
     /// For [`Method::Robust`]: whether each edge was treated as wrong.
     pub outliers: Option<Vec<bool>>,

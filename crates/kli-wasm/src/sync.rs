@@ -60,8 +60,8 @@ export interface SyncOptions {
   method?: SyncMethod;
   /** The node held at the identity. Default 0. */
   anchor?: number;
-  /** For "robust": the Geman–McClure scale σ in radians (> 0). Default: the median residual
-   *  after the L1 rounds. */
+  /** For "robust": the residual scale σ in radians (> 0): an edge beyond 3σ is an outlier.
+   *  Default: measured from the residuals. */
   scale?: number;
   /** How quaternion arrays are laid out, in and out. Default "wxyz". */
   order?: QuaternionOrder;
@@ -98,11 +98,15 @@ export interface ChordalSynchronized extends SynchronizedBase {
 
 /** The robust solution (`method: "robust"`). */
 export interface RobustSynchronized extends SynchronizedBase {
-  /** Each edge's final weight (the caller's times the robust factor, ≤ it). */
+  /** Each edge's final weight: the caller's times the robust factor, ≤ it (1 or 0 for an edge
+   *  kept or set aside, when a few edges far off were set aside and the rest solved by least
+   *  squares). */
   weights: Float64Array;
-  /** 1 for each edge treated as wrong (its residual beyond 3σ), else 0. */
+  /** 1 for each edge treated as wrong, else 0: beyond 3σ for a given `scale`; by default beyond
+   *  10 typical residuals of the least-squares fit, or, with many edges wrong, 6 median residuals
+   *  of the L1 rounds. */
   outliers: Uint8Array;
-  /** The Geman–McClure scale σ used, radians. */
+  /** The residual scale σ found or given, radians. */
   scale: number;
 }
 
