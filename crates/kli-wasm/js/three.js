@@ -95,7 +95,7 @@ function shapeOf(pose, name) {
   if (numbers && typeof pose.length === "number" && pose.length > 0 && pose.length % 4 === 0) {
     return { kind: "values", bones: pose.length / 4 };
   }
-  return refused(name, "must be a THREE.Quaternion, an array of them, or 4 numbers a bone scalar last (a track's values)");
+  return refused(name, "must be a THREE.Quaternion, an array of them (a bone each), or a track's values (4 numbers a key, scalar last)");
 }
 
 function refused(name, problem) {
@@ -119,7 +119,8 @@ export function blendRotations(poses, weights, out) {
   poses.forEach((pose, p) => {
     const shape = shapeOf(pose, `poses[${p}]`);
     if (shape.kind !== kind || shape.bones !== bones) {
-      refused(`poses[${p}]`, `must have the shape of poses[0] (${bones} ${kind === "values" ? "keys of 4 numbers" : "THREE.Quaternions"})`);
+      const shape = kind === "values" ? `${4 * bones} numbers, 4 a key` : kind === "quaternion" ? "one THREE.Quaternion" : `an array of ${bones} THREE.Quaternion${bones === 1 ? "" : "s"}`;
+      refused(`poses[${p}]`, `must have the shape of poses[0] (${shape})`);
     }
     const at = 4 * bones * p;
     if (kind === "values") flat.set(pose, at);
@@ -140,7 +141,7 @@ export function blendRotations(poses, weights, out) {
     return quaternion(0, out);
   }
   if (out !== undefined && !(Array.isArray(out) && out.length === bones && out.every(isQuaternion))) {
-    refused("out", `must be an array of ${bones} THREE.Quaternions`);
+    refused("out", `must be an array of ${bones} THREE.Quaternion${bones === 1 ? "" : "s"}`);
   }
   const target = out ?? [];
   for (let b = 0; b < bones; b++) target[b] = quaternion(b, target[b]);
