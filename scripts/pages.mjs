@@ -11,7 +11,7 @@
 import { createHash } from "node:crypto";
 import { existsSync, readFileSync, writeFileSync } from "node:fs";
 import { join, relative, resolve } from "node:path";
-import { MORE_LINKS, PAGES, bundle, script } from "../www/pages.js";
+import { EXAMPLES, MORE_LINKS, PAGES, bundle, script } from "../www/pages.js";
 import { LAYOUTS, pictureLinks, pictureSheet } from "./first-pictures.mjs";
 
 const www = new URL("../www/", import.meta.url).pathname;
@@ -22,6 +22,26 @@ function navigation(page) {
     `<a href="${other.html}"${other === page ? ' aria-current="page"' : ""}>${other.title}</a>`);
   links.push(...MORE_LINKS.map((link) => `<a href="${link.href}">${link.title}</a>`));
   return `<nav aria-label="Pages">${links.join(" · ")}</nav>`;
+}
+
+/** The pages' navigation as an example page (www/examples/) shows it: the same links, relative to
+ *  its folder, and the example itself, current. */
+function exampleNavigation(example) {
+  const links = PAGES.map((page) => `<a href="../${page.html}">${page.title}</a>`);
+  const more = MORE_LINKS.some((link) => link.href === example.href) ? MORE_LINKS : [...MORE_LINKS, example];
+  links.push(...more.map((link) => {
+    const href = link.href.replace(/^examples\//, "");
+    return `<a href="${href}"${link.href === example.href ? ' aria-current="page"' : ""}>${link.title}</a>`;
+  }));
+  return `<nav aria-label="Pages">${links.join(" · ")}</nav>`;
+}
+
+/** An example page's HTML with its navigation as the registry makes it, or an Error. */
+function composeExample(example) {
+  const source = readFileSync(join(www, example.href), "utf8");
+  const nav = /^  <nav aria-label="Pages">.*<\/nav>$/m;
+  if (!nav.test(source)) throw new Error(`www/${example.href}: no <nav aria-label="Pages"> on a line of its own`);
+  return source.replace(nav, `  ${exampleNavigation(example)}`);
 }
 
 /** The page's Save section: its own sentence, then each view as PNG and SVG and its data as CSV
@@ -139,6 +159,12 @@ if (command === "names") {
     if (command === "write") writeFileSync(path, wanted);
     // Not written yet is no fault: `make www` writes them.
     if (command === "write" || existsSync(path)) stale.push(page.html);
+  }
+  for (const example of EXAMPLES) {
+    const wanted = composeExample(example);
+    if (readFileSync(join(www, example.href), "utf8") === wanted) continue;
+    if (command === "write") writeFileSync(join(www, example.href), wanted);
+    stale.push(example.href);
   }
   if (command === "check") {
     if (stale.length) {

@@ -99,6 +99,15 @@ export const PAGES = [
 /** Links in the pages' navigation after the pages: the examples. */
 export const MORE_LINKS = [{ href: "examples/three.html", title: "With three.js" }];
 
+/** The example pages (www/examples/), each with the pages' navigation as the registry makes it
+ *  (scripts/pages.mjs writes their `<nav>`): every page, the links after them, and the example
+ *  itself where it is not among those links. */
+export const EXAMPLES = [
+  { href: "examples/three.html", title: "With three.js" },
+  { href: "examples/animation.html", title: "Smooth tracks" },
+  { href: "examples/figures.html", title: "Figures in a text" },
+];
+
 /** The page whose module draws `view`, if any. */
 export const pageOfView = (/** @type {string} */ view) => PAGES.find((page) => Object.hasOwn(page.views, view));
 

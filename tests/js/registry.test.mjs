@@ -70,6 +70,19 @@ test("each page's HTML is made from its folder and the registry (navigation, Sav
   execFileSync("node", ["scripts/pages.mjs", "check"], { cwd: root, stdio: "pipe" });
 });
 
+test("every example page with the pages' navigation is in the registry's EXAMPLES, which writes it", async () => {
+  const { EXAMPLES } = await import("../../www/pages.js");
+  const folder = join(root, "www/examples");
+  const withNav = readdirSync(folder).filter((file) => file.endsWith(".html"))
+    .filter((file) => readFileSync(join(folder, file), "utf8").includes('<nav aria-label="Pages">'));
+  assert.deepEqual(sorted(withNav.map((file) => `examples/${file}`)), sorted(EXAMPLES.map((e) => e.href)));
+  // Each lists every page, the synchronisation page among them.
+  for (const { href } of EXAMPLES) {
+    const html = readFileSync(join(root, "www", href), "utf8");
+    for (const page of PAGES) assert.ok(html.includes(`<a href="../${page.html}">${page.title}</a>`), `${href}: ${page.html}`);
+  }
+});
+
 test("docs/architecture.md lists the registry's pages and the workspace's crates", () => {
   const doc = readFileSync(join(root, "docs/architecture.md"), "utf8");
   const section = (/** @type {string} */ heading) => {
