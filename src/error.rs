@@ -98,6 +98,9 @@ pub enum ErrorKind {
     Invalid(String),
     /// A line of a text read (a pose-graph file) that cannot be read, by its number from 1;
     /// [`ErrorKind::line`] hands the number to bindings, as a property beside the message.
+    /// With the feature `sync` only, the one reader of files (built without it, no module pays
+    /// for the variant's message).
+    #[cfg(feature = "sync")]
     InvalidLine { line: usize, problem: String },
 }
 
@@ -117,7 +120,9 @@ impl ErrorKind {
             ErrorKind::Unstable { .. } => "unstable",
             ErrorKind::TooManySteps { .. } => "too-many-steps",
             ErrorKind::NotUnique { .. } => "not-unique",
-            ErrorKind::Invalid(_) | ErrorKind::InvalidLine { .. } => "invalid",
+            ErrorKind::Invalid(_) => "invalid",
+            #[cfg(feature = "sync")]
+            ErrorKind::InvalidLine { .. } => "invalid",
         }
     }
 
@@ -132,6 +137,7 @@ impl ErrorKind {
     /// The line at fault (from 1), for [`ErrorKind::InvalidLine`].
     pub fn line(&self) -> Option<usize> {
         match self {
+            #[cfg(feature = "sync")]
             ErrorKind::InvalidLine { line, .. } => Some(*line),
             _ => None,
         }
@@ -265,6 +271,7 @@ impl KliError {
                 n(*second)
             ),
             ErrorKind::Invalid(problem) => format!("{arg} {problem}"),
+            #[cfg(feature = "sync")]
             ErrorKind::InvalidLine { line, problem } => format!("{arg} line {line}: {problem}"),
         }
     }
