@@ -19,8 +19,9 @@ WASM_FEATURES := --enable-bulk-memory --enable-nontrapping-float-to-int --enable
 # in one), each bound right after its build, before the next overwrites the .wasm.
 BUILDS := target/builds
 
-.PHONY: mutants fixtures help setup setup-rust setup-node setup-browser pkg www single demo serve test lint publish-check \
-        test-native test-wasm-node test-wasm-portable test-wasm-browser test-package test-page bench clean
+.PHONY: mutants fixtures help setup setup-rust setup-node setup-browser pkg www single demo serve test lint lint-rust lint-js \
+        publish-check test-native test-wasm-node test-wasm-portable test-wasm-browser test-package test-page \
+        lane-rust lane-web bench clean
 
 help:
 	@echo "make demo   build and serve the demo page at http://127.0.0.1:$(PORT)/"
@@ -32,7 +33,9 @@ help:
 	@echo "make mutants   mutation testing of the core crate (long; MUTANTS_ARGS=\"-f FILE\" for one file)"
 	@echo "make fixtures  recompute the reference values from SciPy and GTSAM (tests/fixtures)"
 
-setup: setup-rust setup-node setup-browser
+# The three at once: a fresh machine's wasm-bindgen build (CPU), apt's and npm's downloads.
+setup:
+	$(MAKE) --no-print-directory -j3 setup-rust setup-node setup-browser
 
 setup-rust:
 	@rustup target list --installed | grep -qx $(TARGET) || rustup target add $(TARGET)
@@ -152,18 +155,49 @@ demo: www
 	@echo "Serving the demo at http://127.0.0.1:$(PORT)/  (Ctrl-C to stop)"
 	python3 -m http.server $(PORT) --bind 127.0.0.1 --directory www
 
-test: lint test-native test-wasm-node test-wasm-portable test-package test-wasm-browser test-page
+# Every step of `lint` and the tests, in three phases (docs/testing.md has the times). On two
+# cores one step at a time left a core idle for long stretches (the release builds' LTO and
+# codegen-units = 1, wasm-opt, tests that run on one thread), so the middle phase runs two lanes
+# at once, each one step at a time, in target directories of their own (cargo locks a target
+# directory, so two lanes in one would wait for each other):
+#   setup      the installs, all three at once (a fresh machine's wasm-bindgen build, apt and npm)
+#   lane-rust  fmt, clippy, rustdoc, and the Rust tests but the portable one (target/)
+#   lane-web   the release builds (pkg, www, single: target/builds), the packages' dry runs, tsc,
+#              the npm package's tests (tests/js), and the portable lanes' tests (target/portable)
+#   test-page  last and alone: its budgets of long tasks are measured against the machine's own
+#              plain page loads, so nothing else should be building beside it
+# Each lane's lines are prefixed with its name. A failing step stops its lane and `make test`
+# fails once the other lane is done (`cargo fmt --check` runs before both, to fail at once).
+test: setup
+	cargo fmt --all --check
+	$(MAKE) --no-print-directory -j2 lane-rust lane-web
+	$(MAKE) --no-print-directory test-page
+
+lane-rust:
+	$(MAKE) --no-print-directory -j1 lint-rust test-native test-wasm-node test-wasm-browser 2>&1 | sed -u 's/^/[rust] /'
+lane-web:
+	$(MAKE) --no-print-directory -j1 pkg www publish-check lint-js test-package single test-wasm-portable 2>&1 \
+	  | sed -u 's/^/[web] /'
 
 # Formatting, clippy (native and wasm32), rustdoc, and the page's JavaScript against the
 # generated types: all without warnings; and both packages as they would be published.
-lint: setup-rust www publish-check
+lint: lint-rust lint-js publish-check
+
+# rustdoc over the whole workspace, kli-bench (one documented function) and the examples too:
+# with them the dependencies resolve to the features the first clippy resolved (dev-dependencies
+# and nalgebra's included), so rustdoc reuses clippy's checks of them. Over the libraries alone
+# num-traits' features differed and faer with its 17 dependencies were checked once more (83 s
+# of `lint` here).
+lint-rust: setup-rust
 	cargo fmt --all --check
 	cargo clippy --workspace --all-targets --all-features -- -D warnings
 	cargo clippy --workspace --exclude kli-bench --all-targets --all-features --target $(TARGET) -- -D warnings
 	for entry in $(ENTRIES); do \
 	  cargo clippy -p kli-wasm --all-targets --no-default-features --features $$entry --target $(TARGET) -- -D warnings; \
 	done
-	RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --all-features --exclude kli-bench
+	RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --all-features --lib --examples
+
+lint-js: www
 	tsc -p www/jsconfig.json
 
 # The Rust crate and the npm package, packed and checked as `cargo publish` and `npm publish`
@@ -172,9 +206,11 @@ lint: setup-rust www publish-check
 # with it, the build of faer that verification makes (its features resolved apart from the
 # workspace's, so shared with no other build) took 74 s of a fresh machine's 15 minutes. That
 # the packaged copy holds every file of src/, sync's too, is checked from the package's list.
+# In BUILDS, the web lane's target directory: in target/ its verification waited for the Rust
+# lane's lock on it (3 minutes, while `cargo test` built).
 publish-check: pkg
-	cargo publish --dry-run --allow-dirty --quiet --no-default-features -p kli-rotations
-	@cargo package --list --allow-dirty --quiet -p kli-rotations | grep '^src/' | sort > target/packaged-src.txt
+	cargo publish --dry-run --allow-dirty --quiet --no-default-features -p kli-rotations --target-dir $(BUILDS)
+	@cargo package --list --allow-dirty --quiet -p kli-rotations --target-dir $(BUILDS) | grep '^src/' | sort > target/packaged-src.txt
 	@git ls-files src | sort | diff - target/packaged-src.txt || { echo "files of src/ missing from the crate's package (Cargo.toml's include)"; exit 1; }
 	cd pkg && npm publish --dry-run --loglevel=error
 
@@ -200,8 +236,15 @@ test-wasm-browser: setup-rust setup-browser
 test-package: pkg
 	node --test tests/js/
 
+# Two files at a time (Node 20's runner takes one at a time on 2 cores: os.availableParallelism()
+# − 1), each with its own server and Chromium; then, alone, the files whose assertions depend on
+# the machine's speed: budget and fuzz hold long tasks to budgets (each page's measured from its
+# own plain loads, which another file's browser beside it would lengthen unevenly), and page's
+# slider drag needs more than 150 moves in 4 s (149 with another file beside it, once).
+E2E_ALONE := tests/e2e/budget.test.mjs tests/e2e/fuzz.test.mjs tests/e2e/page.test.mjs
 test-page: pkg www single setup-browser
-	node --test tests/e2e/
+	node --test --test-concurrency=2 $(filter-out $(E2E_ALONE),$(wildcard tests/e2e/*.test.mjs))
+	node --test $(E2E_ALONE)
 
 # Benchmarks, not tests: nothing here is asserted by `make test`.
 bench: pkg www setup-browser
