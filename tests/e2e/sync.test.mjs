@@ -220,6 +220,15 @@ test("a user's own pose graph, opened or dropped, is synchronised in the page's 
   assert.match(rows.Certificate, /^certified/);
   assert.ok((await canvasStats(page, "#sync-file")).drawn > 3000);
   assert.ok(await page.evaluate(() => window.__sent.includes("SyncFile.solve")), "solved in the worker");
+  // A 2D graph with landmarks: poses 0, 2, 4 (ids past the landmarks' 1 and 3), the landmark lines
+  // set aside and counted.
+  const planar = [
+    "VERTEX_SE2 0 0 0 0", "VERTEX_XY 1 5 5", "VERTEX_SE2 2 1 0 0", "VERTEX_XY 3 6 6", "VERTEX_SE2 4 0 1 0",
+    "EDGE_SE2 0 2 1 0 0.2 1 0 0 1 0 1", "EDGE_SE2_XY 0 1 5 5 1 0 1", "EDGE_SE2 2 4 -1 1 0.2 1 0 0 1 0 2", "EDGE_SE2 4 0 0 -1 0.2 1 0 0 1 0 4",
+  ].join("\n");
+  await page.setInputFiles("#file-input", { name: "planar.g2o", mimeType: "text/plain", buffer: Buffer.from(planar) });
+  await page.waitForFunction(() => document.querySelector("#file-status").textContent.startsWith("planar.g2o:"));
+  assert.equal(await page.textContent("#file-status"), "planar.g2o: 3 nodes, 3 edges (3 other lines skipped: landmarks, priors), certified.");
   // Dropped: a bad line is refused with its number, and the graph on show stays.
   await page.evaluate(() => {
     const data = new DataTransfer();
