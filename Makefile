@@ -256,6 +256,7 @@ bench: pkg www setup-browser
 	node bench/smoothness.mjs
 	node bench/average.mjs
 	node bench/sync.mjs
+	node bench/posegraphs.mjs
 	node bench/size.mjs
 	node bench/page.mjs
 	node bench/first-paint.mjs
