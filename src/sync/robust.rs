@@ -137,7 +137,13 @@ pub(crate) fn robust(
         }
         if next == outliers {
             let factors = outliers.iter().map(|&out| if out { 0.0 } else { 1.0 }).collect();
-            return Robust { q, factors, outliers, iterations: steps, scale: scale.unwrap_or(sigma) };
+            return Robust {
+                q,
+                factors,
+                outliers,
+                iterations: steps,
+                scale: scale.unwrap_or(sigma),
+            };
         }
         outliers = next;
         let weights: Vec<f64> = graph
@@ -185,8 +191,7 @@ fn reweighted(
         r * r
     });
     let Rounds { q, factors, iterations, .. } = state;
-    let outliers =
-        normalised(graph, &q, typical_weight).iter().map(|&t| t > threshold).collect();
+    let outliers = normalised(graph, &q, typical_weight).iter().map(|&t| t > threshold).collect();
     Robust { q, factors, outliers, iterations, scale: sigma }
 }
 
@@ -211,8 +216,10 @@ impl Rounds {
         weight: impl Fn(f64) -> f64,
     ) {
         for _ in 0..rounds {
-            let next: Vec<f64> =
-                normalised(graph, &self.q, self.typical_weight).iter().map(|&t| weight(t)).collect();
+            let next: Vec<f64> = normalised(graph, &self.q, self.typical_weight)
+                .iter()
+                .map(|&t| weight(t))
+                .collect();
             let change = moved(&self.factors, &next);
             self.factors = next;
             let weights = graph.weights().iter().zip(&self.factors).map(|(w, f)| w * f).collect();
