@@ -103,7 +103,7 @@ test("<kli-figure>: three figures in running text, one module shared, sized by C
     // A refused attribute is named in the figure, and a corrected one clears it.
     await page.evaluate(() => document.querySelector("#object").setAttribute("p", "1,2"));
     await page.waitForFunction(() => document.querySelector("#object").shadowRoot.querySelector("p").textContent !== "");
-    assert.match((await figures(page))[1].message, /^kli-figure: p must be an array of 4 numbers \[w, x, y, z\]/);
+    assert.match((await figures(page))[1].message, /^kli-figure: p must hold 4 numbers \(got 2\)/);
     await page.evaluate(() => document.querySelector("#object").setAttribute("p", "1,0,0,0"));
     await page.waitForFunction(() => document.querySelector("#object").shadowRoot.querySelector("p").textContent === "");
     assert.deepEqual(await axeViolations(page), []);
