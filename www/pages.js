@@ -9,6 +9,7 @@
 import { AVERAGE } from "./average/state.js";
 import { FIGURE_DEFAULTS as KEYFRAMES_FIGURE, KEYFRAMES } from "./keyframes/state.js";
 import { KLI } from "./kli/state.js";
+import { LEARN } from "./learn/state.js";
 import { FIGURE_DEFAULTS as SWARM_FIGURE, SWARM } from "./swarm/state.js";
 import { FIGURE_DEFAULTS as SYNC_FIGURE, SYNC } from "./sync/state.js";
 
@@ -92,6 +93,23 @@ export const PAGES = [
       graph: ["Graph", "the graph"], hopf: ["Hopf sphere", "the Hopf sphere"], plots: ["Plots", "the plots"],
       results: ["Solutions", "the two solutions"], objects: ["Objects", "the objects"], sweep: ["Sweep", "the wrong-edge sweep"],
       file: ["Your pose graph", "your pose graph's residuals"], edges: ["The edges and nodes", "every edge and node"],
+    },
+  },
+  {
+    name: "learn", html: "learn.html", title: "Learn: a guided tour", state: LEARN, figure: LEARN.defaults,
+    module: () => import("./pkg/learn_demo.js"),
+    views: { turn: "turn", cover: "cover", slerp: "slerp", rolled: "rolled", phases: "phases", lohe: "lohe", tangent: "kli" },
+    canvases: {
+      euler: "#learn-euler", turn: "#learn-turn", cover: "#learn-cover", slerp: "#learn-slerp", hopf: "#learn-hopf",
+      rolled: "#learn-rolled", phases: "#learn-phases", lohe: "#learn-lohe", kli: "#learn-kli", clock: "#learn-clock",
+      steps: "#learn-steps", drift: "#learn-drift",
+    },
+    save: {
+      euler: ["Euler angles", "the Euler angles figure"], turn: ["Turn", "the turn"], cover: ["Double cover", "the double cover"],
+      slerp: ["SLERP", "the SLERP figure"], hopf: ["Hopf sphere", "the Hopf sphere"], rolled: ["Rolled object", "the rolled object"],
+      phases: ["Phases", "the Kuramoto phases"], lohe: ["Swarm on S³", "the swarm on S³"], kli: ["KLI", "the KLI figure"],
+      clock: ["Clock", "the clock"], steps: ["Algorithm 1", "Algorithm 1's steps"], drift: ["Drift", "the drift"],
+      tour: ["Algorithm 1's path", "Algorithm 1's path"],
     },
   },
 ];

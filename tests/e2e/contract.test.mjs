@@ -137,6 +137,7 @@ test("every page shows every refused URL value beside its field at once, and run
     average: ["?n=1&noise=abc", { count: /count/, noise: /noise/ }],
     sync: ["?n=2&wrong=abc&graph=star", { count: /count/, wrong: /wrong/, graph: /graph/ }],
     keyframes: ["?keys=1,0,0,0;nan,0,0,1;0,1,0,0&s=5", { keys: /keys\[1\]/, smoothness: /smoothness/ }],
+    learn: ["?angle=800&axis=w&delta=abc", { angle: /angle/, axis: /axis/, delta: /delta/ }],
   };
   assert.deepEqual(Object.keys(REFUSED).sort(), PAGES.map((page) => page.name).sort(), "a refused query for every page of the registry");
   for (const [url, refused] of PAGES.map((page) => [page.html + REFUSED[page.name][0], REFUSED[page.name][1]])) {
@@ -213,17 +214,20 @@ test("the figure interface under hostile input: every call draws with defaults o
         swarm: await import("./pkg/swarm_demo.js"),
         average: await import("./pkg/average_demo.js"),
         sync: await import("./pkg/sync_demo.js"),
+        learn: await import("./pkg/learn_demo.js"),
       };
       await modules.keyframes.default();
       await modules.swarm.default();
       await modules.average.default();
       await modules.sync.default();
+      await modules.learn.default();
       const figures = [
         [new modules.kli.KliDemo([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]), ["object", "hopf", "filmstrip", "plots"], "path"],
         [new modules.keyframes.KeyframesDemo(new Float64Array([1, 0, 0, 0, 0.8, 0.6, 0, 0, 0.6, 0, 0.8, 0]), new Float64Array(0), 1), ["objects", "hopf", "plots"], "curves"],
         [new modules.swarm.SwarmDemo({ count: 20 }), ["hopf", "objects", "plots"], "swarm"],
         [new modules.average.AverageDemo({ count: 20 }), ["hopf", "objects", "means"], "measurements"],
         [new modules.sync.SyncDemo({ count: 20 }), ["graph", "hopf", "objects", "plots", "results"], "edges"],
+        [new modules.learn.LearnDemo({}), ["euler", "turn", "cover", "slerp", "hopf", "rolled", "phases", "lohe", "kli", "clock", "steps", "drift"], "tour"],
       ];
       const ctx = document.createElement("canvas").getContext("2d");
       const hostileFrames = [null, undefined, 0, "frame", {}, { width: NaN, height: Infinity, pixelRatio: -1, t: "x" },
@@ -281,7 +285,7 @@ test("the figure interface under hostile input: every call draws with defaults o
       for (const [figure] of figures) figure.free();
       return { refusals, unnamed, contract, nan: svgs.filter((svg) => /NaN|Infinity/.test(svg)).length };
     });
-    assert.equal(result.refusals, 100 * 5 * 5);
+    assert.equal(result.refusals, 100 * 6 * 5);
     assert.deepEqual(result.unnamed, []);
     assert.deepEqual(result.contract, []);
     assert.equal(result.nan, 0);

@@ -28,7 +28,12 @@ pub(crate) struct Frame {
     pub pixel_ratio: f64,
     // The swarm is drawn as it is now: its page alone draws no time from a frame.
     #[cfg_attr(
-        not(any(feature = "kli-page", feature = "keyframes-page", feature = "average-page")),
+        not(any(
+            feature = "kli-page",
+            feature = "keyframes-page",
+            feature = "average-page",
+            feature = "learn-page"
+        )),
         allow(dead_code)
     )]
     pub t: f64,

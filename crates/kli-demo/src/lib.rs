@@ -8,14 +8,19 @@
 //! Plain-Rust geometry and data ([`camera`], [`aircraft`], [`scene`], [`ticks`], [`palette`]) are
 //! apart from the files that draw ([`pen`], [`object_view`], [`sphere_view`], [`plots`]) and the
 //! classes themselves, a folder a page named as the page (`kli`, `keyframes`, `swarm`,
-//! `average`, `sync`: the pages' registry, `www/pages.js`, lists them); every export
+//! `average`, `sync`, `learn`: the pages' registry, `www/pages.js`, lists them); every export
 //! says where it came from ([`provenance`]).
 
 pub mod aircraft;
 #[cfg(feature = "average-page")]
 pub mod average;
 pub mod camera;
-#[cfg(any(feature = "kli-page", feature = "keyframes-page", feature = "average-page"))]
+#[cfg(any(
+    feature = "kli-page",
+    feature = "keyframes-page",
+    feature = "average-page",
+    feature = "learn-page"
+))]
 mod clock;
 mod figure;
 pub mod format;
@@ -25,6 +30,8 @@ mod hopf_drag;
 pub mod keyframes;
 #[cfg(feature = "kli-page")]
 pub mod kli;
+#[cfg(feature = "learn-page")]
+pub mod learn;
 pub mod legend;
 pub mod object_view;
 pub mod palette;
@@ -49,6 +56,8 @@ pub use self::kli::KliDemo;
 pub use average::AverageDemo;
 #[cfg(feature = "keyframes-page")]
 pub use keyframes::KeyframesDemo;
+#[cfg(feature = "learn-page")]
+pub use learn::LearnDemo;
 #[cfg(feature = "swarm-page")]
 pub use swarm::SwarmDemo;
 #[cfg(feature = "sync-page")]

@@ -1,0 +1,160 @@
+//! The tour's model against docs/MATH.md's values and against computations written apart from
+//! it: the paper's example (Table 1, T = 11.66, T* = 11.6568), the Hopf images of p and r, the
+//! gimbal lock at pitch 90°, q and −q one rotation, the uncoupled phases turning at their own
+//! rates, the swarm reaching its leader, and the integrators' drift ordered as the text says.
+
+use glam::{DQuat, DVec3};
+use kli::{Integrator, from_wxyz, hopf};
+
+use super::model::*;
+
+fn close(a: f64, b: f64, tolerance: f64) -> bool {
+    (a - b).abs() <= tolerance
+}
+
+#[test]
+fn the_paper_example_gives_table_1_and_t_11_66() {
+    let model = Model::new(Options::default()).unwrap();
+    // MATH.md, "The paper's example": T* = 11.6568, the loop stops at T = 11.66 (δ = 0.01).
+    assert!(close(model.predicted(), 11.6568, 5e-5), "{}", model.predicted());
+    assert!(close(model.path.final_time(), 11.66, 1e-9), "{}", model.path.final_time());
+    // Table 1's rows (w, x, y, z), as MATH.md prints them to 4 decimals.
+    for (t, row) in [
+        (0.2, [0.0943, 0.0943, 0.0943, 0.9866]),
+        (0.55, [0.2270, 0.2270, 0.2270, 0.9195]),
+        (1.8, [0.4364, 0.4364, 0.4364, 0.6548]),
+    ] {
+        let q = kli::to_wxyz(model.kli_at(t));
+        for (c, want) in q.iter().zip(row) {
+            assert!(close(*c, want, 5e-5), "t = {t}: {q:?}");
+        }
+    }
+    // φ0 = π/3, so s(t) = 1 − φ(t)/φ0 and tan(φ/2) = tan(π/6) e^−t (MATH.md, "Closed form").
+    let t: f64 = 1.0;
+    let phi = 2.0 * ((std::f64::consts::PI / 6.0).tan() * (-t).exp()).atan();
+    assert!(close(model.phi(t), phi, 1e-12));
+    assert!(close(model.warp(t), 1.0 - phi / (std::f64::consts::PI / 3.0), 1e-12));
+}
+
+#[test]
+fn the_hopf_map_sends_p_and_r_where_math_md_says_and_ignores_a_roll() {
+    assert!((hopf(paper_p()) - DVec3::new(-1.0, 0.0, 0.0)).length() < 1e-15);
+    assert!((hopf(paper_r()) - DVec3::new(0.0, 1.0, 0.0)).length() < 1e-15);
+    let mut options = Options { axis: Axis::Diagonal, angle: 130.0, ..Options::default() };
+    let still = Model::new(options.clone()).unwrap().nose();
+    // h(q) is where the body x axis points: q x q̄.
+    let q = turn(DVec3::ONE / 3f64.sqrt(), 130.0);
+    assert!((still - q * DVec3::X).length() < 1e-12);
+    for roll in [-180.0, -45.0, 90.0, 180.0] {
+        options.roll = roll;
+        let model = Model::new(options.clone()).unwrap();
+        assert!((model.nose() - still).length() < 1e-12, "roll {roll}");
+        // ... while the wing turns by the roll about the nose.
+        let wing = model.rolled() * DVec3::Y;
+        let cos = wing.dot(q * DVec3::Y);
+        assert!(close(cos, f64::to_radians(roll).cos(), 1e-12), "roll {roll}: {cos}");
+    }
+}
+
+#[test]
+fn euler_angles_lock_at_pitch_90_degrees() {
+    assert!(close(lock_angle(40.0), 50.0, 1e-9));
+    assert!(close(lock_angle(-30.0), 60.0, 1e-9));
+    assert!(close(lock_angle(90.0), 0.0, 1e-6));
+    // At pitch 90°, yaw by a and bank by b give the same rotation as yaw a − b... one freedom lost:
+    // R_z(a) R_y(90°) R_x(b) depends on a − b alone.
+    let one = euler(50.0, 90.0, 20.0);
+    let other = euler(70.0, 90.0, 40.0);
+    assert!(one.dot(other).abs() > 1.0 - 1e-12);
+}
+
+#[test]
+fn a_turn_is_cos_half_plus_axis_sin_half_and_q_and_minus_q_agree() {
+    let q = turn(DVec3::Z, 90.0);
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    assert_eq!(
+        kli::to_wxyz(q).map(|c| (c * 1e12).round() / 1e12),
+        [h, 0.0, 0.0, h].map(|c| (c * 1e12).round() / 1e12)
+    );
+    // 90° about z takes x to y.
+    assert!((q * DVec3::X - DVec3::Y).length() < 1e-15);
+    // 360° is −1: the object back where it started, q on the far side of S³.
+    let full = turn(DVec3::X, 360.0);
+    assert!((full - from_wxyz([-1.0, 0.0, 0.0, 0.0])).length() < 1e-15);
+    let v = DVec3::new(0.3, -0.2, 0.9);
+    let any = turn(DVec3::ONE / 3f64.sqrt(), 77.0);
+    assert!((any * v - (-any) * v).length() < 1e-15);
+    // q v q̄ written out as quaternion products.
+    let pure = DQuat::from_xyzw(v.x, v.y, v.z, 0.0);
+    let turned = any * pure * any.conjugate();
+    assert!((DVec3::new(turned.x, turned.y, turned.z) - any * v).length() < 1e-14);
+}
+
+#[test]
+fn slerp_moves_evenly_and_nlerp_does_not() {
+    let (p, r) = (paper_p(), paper_r());
+    let basis = plane(p, r).unwrap();
+    for s in [0.1, 0.25, 0.5, 0.9] {
+        // φ0 = 60° (MATH.md): SLERP's point is s·60° along.
+        assert!(close(in_plane(slerp(p, r, s), basis).to_degrees(), 60.0 * s, 1e-9));
+        // NLERP's: atan2(s sin 60°, 1 − s + s cos 60°).
+        let third = std::f64::consts::PI / 3.0;
+        let want = (s * third.sin()).atan2(1.0 - s + s * third.cos());
+        assert!(close(in_plane(nlerp(p, r, s), basis), want, 1e-12));
+    }
+}
+
+#[test]
+fn uncoupled_phases_turn_at_their_own_rates_and_coupled_ones_fall_into_step() {
+    let free = Phases::new(0.0);
+    let t = 7.0;
+    let k = (t / SAMPLE).round() as usize;
+    for i in 0..PHASES {
+        let want = free.samples[0][i] + free.omega[i] * t;
+        assert!(close(free.samples[k][i], want, 1e-9), "phase {i}");
+    }
+    assert!(free.omega.iter().all(|w| w.abs() <= GAMMA));
+    // The critical coupling of a uniform spread on [−γ, γ] is 4γ/π ≈ 0.64: at K = 3 they lock.
+    let locked = Phases::new(3.0);
+    assert!(order(locked.at(END)).0 > 0.95, "{}", order(locked.at(END)).0);
+    assert!(order(free.at(END)).0 < 0.5);
+}
+
+#[test]
+fn the_swarm_stays_on_s3_and_reaches_its_pinned_leader() {
+    let r = paper_r();
+    let swarm = Swarm::new(4.0, r);
+    assert!(swarm.spread(0.0) > 90.0);
+    assert!(swarm.spread(END) < 2.0, "{}", swarm.spread(END));
+    for q in swarm.at(END) {
+        assert!(close(q.length(), 1.0, 1e-12));
+    }
+    // Uncoupled, nothing moves.
+    let still = Swarm::new(0.0, r);
+    for (a, b) in still.at(0.0).iter().zip(still.at(END)) {
+        assert!((*a - *b).length() < 1e-13);
+    }
+}
+
+#[test]
+fn euler_drifts_off_s3_rk4_less_and_the_geodesic_step_not_at_all() {
+    let (p, r) = (paper_p(), paper_r());
+    let drift = |i| Drift::new(i, p, r, 0.5).largest();
+    let (euler, rk4, geodesic) =
+        (drift(Integrator::Euler), drift(Integrator::Rk4), drift(Integrator::Geodesic));
+    // Euler's first step: |p + h(r − (p·r)p)|² = 1 + h² sin²φ0, φ0 = 60°.
+    let first = (1.0 + 0.25 * 0.75f64).sqrt() - 1.0;
+    assert!(euler >= first - 1e-15, "{euler} {first}");
+    assert!(rk4 < euler / 20.0 && rk4 > 1e-9, "{rk4}");
+    assert!(geodesic < 1e-15, "{geodesic}");
+}
+
+#[test]
+fn the_options_are_checked_with_the_key_named() {
+    let model = Model::new(Options { digits: 8.0, delta: 0.1, ..Options::default() }).unwrap();
+    // T is the first multiple of δ past T*.
+    let (big_t, star) = (model.path.final_time(), model.predicted());
+    assert!(big_t >= star && big_t < star + 0.1 + 1e-9, "{big_t} {star}");
+    assert_eq!(model.step_at(0.35), 3);
+    assert_eq!(model.step_at(1e9), model.path.steps());
+}

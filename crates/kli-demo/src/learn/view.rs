@@ -1,0 +1,545 @@
+//! The tour's pictures, one function a view, all through the one [`Pen`]: the object
+//! ([`draw_object`]), the sphere S² ([`crate::sphere_view`]'s globe and grid), plots
+//! ([`Panel`]), and a plane of R⁴ cut through S³ (a great circle, drawn as a circle).
+
+use glam::{DQuat, DVec3};
+use kli::{Integrator, hopf};
+
+use super::model::{
+    END, Model, SAMPLE, in_plane, lock_angle, nlerp, order, paper_p, paper_r, plane, slerp,
+};
+use crate::aircraft::Face;
+use crate::camera::Viewport;
+use crate::figure::Frame;
+use crate::format::{exponential, fixed};
+use crate::legend::{Entry, Mark, draw_legend_row};
+use crate::object_view::{draw_object, object_camera};
+use crate::palette::{AXIS_X, AXIS_Y, AXIS_Z, GRID, INK, KLI, MUTED, SLERP};
+use crate::pen::Pen;
+use crate::plots::{Panel, inset, trim};
+use crate::sphere_view::{Side, View, draw_globe, draw_grid_back, draw_grid_front, grid};
+use crate::ticks::decades;
+
+/// A rectangle `(left, top, width, height)`, CSS pixels.
+type Rect = (f64, f64, f64, f64);
+
+/// A line of text at the top left of `rect`.
+fn caption(pen: &Pen, rect: Rect, text: &str) {
+    pen.text(text, (rect.0 + 8.0, rect.1 + 14.0 * pen.text_scale()), INK, 12.5, "left");
+}
+
+/// A line of text at the bottom left of the view (clear of a sphere's z label).
+fn footnote(pen: &Pen, frame: &Frame, text: &str) {
+    pen.text(text, (8.0, frame.height - 10.0), INK, 12.5, "left");
+}
+
+/// An arrow from `from` to `to`, with a head.
+fn arrow(pen: &Pen, from: (f64, f64), to: (f64, f64), color: &str, width: f64) {
+    pen.line(from, to, color, width, &[]);
+    let (dx, dy) = (to.0 - from.0, to.1 - from.1);
+    let length = (dx * dx + dy * dy).sqrt();
+    if length < 1.0 {
+        return;
+    }
+    let (ux, uy) = (dx / length, dy / length);
+    let size = (3.5 * width).max(8.0).min(length);
+    let back = (to.0 - ux * size, to.1 - uy * size);
+    let side = (-uy * size * 0.45, ux * size * 0.45);
+    let head = [to, (back.0 + side.0, back.1 + side.1), (back.0 - side.0, back.1 - side.1)];
+    pen.fill_polygon(&head, color, Some(color));
+}
+
+/// The object turned by `q` in `rect`, seen from the object views' camera.
+fn object(pen: &Pen, rect: Rect, mesh: &[Face], q: DQuat, axes: bool) -> Viewport {
+    let viewport = Viewport::fitting(rect.0, rect.1, rect.2, rect.3, 1.75);
+    draw_object(pen, &viewport, &object_camera(), mesh, q, axes);
+    viewport
+}
+
+/// Section 1: the object turned by yaw, pitch and bank, with the three gimbal axes; the yaw and
+/// roll axes meet at pitch ±90°.
+pub fn draw_euler(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
+    let o = &model.options;
+    let rect = (0.0, 0.0, frame.width, frame.height);
+    let q = super::model::euler(o.yaw, o.pitch, o.bank);
+    let viewport = object(pen, rect, mesh, q, false);
+    let camera = object_camera();
+    let at = |v: DVec3| viewport.pixel(camera.project(v));
+    let axes = super::model::gimbal_axes(o.yaw, o.pitch);
+    for (axis, color, label) in
+        [(axes[0], AXIS_Z, "yaw"), (axes[1], AXIS_Y, "pitch"), (axes[2], AXIS_X, "roll")]
+    {
+        pen.line(at(-axis * 1.45), at(axis * 1.45), color, 2.0, &[6.0, 4.0]);
+        pen.text(label, at(axis * 1.6), color, 12.0, "center");
+    }
+    let apart = lock_angle(o.pitch);
+    let text = if apart < 0.05 {
+        String::from("yaw and roll axes coincide: gimbal lock")
+    } else {
+        format!("yaw and roll axes {}° apart", fixed(apart, 1))
+    };
+    caption(pen, rect, &text);
+}
+
+/// Section 2: the object turned by the axis and angle, the axis drawn through it.
+pub fn draw_turn(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
+    let rect = (0.0, 0.0, frame.width, frame.height);
+    let q = model.turn();
+    let viewport = object(pen, rect, mesh, q, true);
+    let camera = object_camera();
+    let axis = model.options.axis.vector();
+    let at = |v: DVec3| viewport.pixel(camera.project(v));
+    pen.line(at(-axis * 1.6), at(axis * 1.6), INK, 1.5, &[3.0, 3.0]);
+    pen.text("axis", at(-axis * 1.72), INK, 12.0, "center");
+    let o = &model.options;
+    caption(pen, rect, &format!("{}° about {}", trim(o.angle), o.axis.name()));
+    let line = format!("q = {}", quaternion_text(q));
+    pen.text(&line, (8.0, frame.height - 10.0), MUTED, 12.0, "left");
+}
+
+/// `w + x i + y j + z k` to three decimals.
+pub fn quaternion_text(q: DQuat) -> String {
+    let part = |x: f64, unit: &str| {
+        let sign = if x < 0.0 { "−" } else { "+" };
+        format!(" {sign} {}{unit}", fixed(x.abs(), 3))
+    };
+    let w = if q.w < 0.0 { format!("−{}", fixed(-q.w, 3)) } else { fixed(q.w, 3) };
+    format!("{w}{}{}{}", part(q.x, "i"), part(q.y, "j"), part(q.z, "k"))
+}
+
+/// A circle of radius `radius` around `centre`, and where the plane's point `(a, b)` lands.
+struct Plane {
+    centre: (f64, f64),
+    radius: f64,
+}
+
+impl Plane {
+    fn in_rect((left, top, width, height): Rect, text: f64) -> Plane {
+        let margin = 34.0 * text;
+        let radius = ((width.min(height) - 2.0 * margin) / 2.0).max(8.0);
+        Plane { centre: (left + width / 2.0, top + height / 2.0 + 6.0 * text), radius }
+    }
+
+    fn at(&self, angle: f64, length: f64) -> (f64, f64) {
+        let (s, c) = angle.sin_cos();
+        (self.centre.0 + self.radius * length * c, self.centre.1 - self.radius * length * s)
+    }
+
+    fn circle(&self, pen: &Pen) {
+        let points: Vec<(f64, f64)> =
+            (0..=120).map(|k| self.at(k as f64 / 120.0 * std::f64::consts::TAU, 1.0)).collect();
+        pen.polyline(&points, GRID, 2.0, &[]);
+        pen.line(self.at(std::f64::consts::PI, 1.1), self.at(0.0, 1.1), GRID, 1.0, &[]);
+        let half = std::f64::consts::FRAC_PI_2;
+        pen.line(self.at(-half, 1.1), self.at(half, 1.1), GRID, 1.0, &[]);
+    }
+
+    fn arc(&self, pen: &Pen, from: f64, to: f64, color: &str, width: f64, dash: &[f64]) {
+        let n = ((to - from).abs() / 0.03).ceil().max(2.0) as usize;
+        let points: Vec<(f64, f64)> =
+            (0..=n).map(|k| self.at(from + (to - from) * k as f64 / n as f64, 1.0)).collect();
+        pen.polyline(&points, color, width, dash);
+    }
+
+    fn label(&self, pen: &Pen, text: &str, angle: f64, length: f64, color: &str) {
+        pen.text(text, self.at(angle, length), color, 12.5, "center");
+    }
+}
+
+/// Section 3: the great circle of S³ through `1` and the axis `u`, with `q = cos(θ/2) + u
+/// sin(θ/2)` and `−q` on it, and the object turned by each: the same picture.
+pub fn draw_cover(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
+    let (w, h) = (frame.width, frame.height);
+    let wide = w >= 1.3 * h;
+    let (circle, objects) = if wide {
+        ((0.0, 0.0, w * 0.55, h), (w * 0.55, 0.0, w * 0.45, h))
+    } else {
+        ((0.0, 0.0, w, h * 0.62), (0.0, h * 0.62, w, h * 0.38))
+    };
+    let plane = Plane::in_rect(circle, pen.text_scale());
+    plane.circle(pen);
+    let half = 0.5 * model.options.angle.to_radians();
+    let pi = std::f64::consts::PI;
+    plane.arc(pen, 0.0, half, KLI, 3.5, &[]);
+    plane.label(pen, "1", 0.0, 1.22, INK);
+    plane.label(pen, "−1", pi, 1.22, INK);
+    let unit = match model.options.axis {
+        super::model::Axis::X => "i",
+        super::model::Axis::Y => "j",
+        super::model::Axis::Z => "k",
+        super::model::Axis::Diagonal => "u",
+    };
+    plane.label(pen, unit, pi / 2.0, 1.22, INK);
+    pen.disc(plane.at(half + pi, 1.0), 6.5, Some("#ffffff"), Some((KLI, 2.5)));
+    pen.disc(plane.at(half, 1.0), 7.0, Some(KLI), Some((INK, 1.5)));
+    plane.label(pen, "q", half, 1.38, KLI);
+    plane.label(pen, "−q", half + pi, 1.38, KLI);
+    let q = model.turn();
+    let (a, b) = if wide {
+        ((objects.0, 0.0, objects.2, h / 2.0), (objects.0, h / 2.0, objects.2, h / 2.0))
+    } else {
+        ((0.0, objects.1, w / 2.0, objects.3), (w / 2.0, objects.1, w / 2.0, objects.3))
+    };
+    object(pen, a, mesh, q, true);
+    object(pen, b, mesh, -q, true);
+    pen.text("turned by q", (a.0 + a.2 / 2.0, a.1 + a.3 - 6.0), MUTED, 12.0, "center");
+    pen.text("turned by −q", (b.0 + b.2 / 2.0, b.1 + b.3 - 6.0), MUTED, 12.0, "center");
+    let o = &model.options;
+    caption(
+        pen,
+        circle,
+        &format!("θ = {}°: q is {}° round the circle", trim(o.angle), trim(o.angle / 2.0)),
+    );
+}
+
+/// Section 4: the paper's `p` and `r` on their great circle, SLERP's point (even steps) and
+/// NLERP's (the chord's point pushed back), their steps of 0.1 marked.
+pub fn draw_slerp(pen: &Pen, model: &Model, frame: &Frame) {
+    let rect = (0.0, 0.0, frame.width, frame.height);
+    let (p, r) = (paper_p(), paper_r());
+    let Some(basis) = plane(p, r) else { return };
+    let text = pen.text_scale();
+    let mut plane = Plane::in_rect(rect, text);
+    // The arc spans 60°: show the quarter it lies in, larger.
+    plane.radius = (frame.height - 70.0 * text).min(frame.width * 0.8).max(20.0);
+    plane.centre = (frame.width * 0.5 - plane.radius * 0.45, frame.height - 26.0 * text);
+    let end = in_plane(r, basis);
+    plane.arc(pen, -0.1, end + 0.35, GRID, 2.0, &[]);
+    pen.line(plane.at(0.0, 1.0), plane.at(end, 1.0), GRID, 1.0, &[4.0, 3.0]);
+    plane.arc(pen, 0.0, end, SLERP, 3.0, &[]);
+    pen.line(plane.centre, plane.at(0.0, 1.08), GRID, 1.0, &[]);
+    pen.line(plane.centre, plane.at(end, 1.08), GRID, 1.0, &[]);
+    for k in 0..=10 {
+        let s = k as f64 / 10.0;
+        let (a, b) = (in_plane(slerp(p, r, s), basis), in_plane(nlerp(p, r, s), basis));
+        pen.line(plane.at(a, 1.0), plane.at(a, 1.06), SLERP, 1.5, &[]);
+        pen.line(plane.at(b, 0.94), plane.at(b, 1.0), KLI, 1.5, &[]);
+    }
+    let s = model.options.s;
+    let (a, b) = (in_plane(slerp(p, r, s), basis), in_plane(nlerp(p, r, s), basis));
+    pen.disc(plane.at(b, 1.0), 6.0, Some("#ffffff"), Some((KLI, 2.5)));
+    pen.disc(plane.at(a, 1.0), 6.5, Some(SLERP), Some((INK, 1.5)));
+    plane.label(pen, "p", 0.0, 1.13, INK);
+    plane.label(pen, "r", end, 1.13, INK);
+    caption(
+        pen,
+        rect,
+        &format!(
+            "s = {}: SLERP {}° along, NLERP {}° (of 60°)",
+            fixed(s, 2),
+            fixed(a.to_degrees(), 1),
+            fixed(b.to_degrees(), 1)
+        ),
+    );
+    let entries = [
+        Entry { mark: Mark::Disc(Some(SLERP), INK), label: "SLERP" },
+        Entry { mark: Mark::Disc(Some("#ffffff"), KLI), label: "NLERP" },
+    ];
+    let y = frame.height - 10.0;
+    let x = frame.width - 8.0;
+    draw_legend_row(pen, (x, y), &entries);
+}
+
+/// The sphere S² with its grid, seen from the frame's camera, in `rect`; returns how to place a
+/// point.
+fn globe<'a>(pen: &'a Pen<'a>, viewport: &'a Viewport, frame: &'a Frame) -> View<'a> {
+    let view = View { pen, viewport, camera: &frame.camera };
+    let lines = grid();
+    draw_grid_back(&view, &lines);
+    pen.alpha(1.0);
+    draw_globe(&view);
+    draw_grid_front(&view, &lines);
+    view
+}
+
+/// Section 5: where the nose points, `h(q)` (paper eq. 5), and where a wing points, `q j q̄`,
+/// on the circle of directions square to the nose: the roll moves the wing and not the dot.
+pub fn draw_hopf(pen: &Pen, model: &Model, frame: &Frame) {
+    let viewport = frame.sphere_viewport();
+    let view = globe(pen, &viewport, frame);
+    let q = model.rolled();
+    let nose = hopf(q);
+    let wing = q * DVec3::Y;
+    let across = nose.cross(wing);
+    let ring: Vec<DVec3> = (0..=96)
+        .map(|k| {
+            let (s, c) = (k as f64 / 96.0 * std::f64::consts::TAU).sin_cos();
+            wing * c + across * s
+        })
+        .collect();
+    view.polyline_on(&ring, Side::Back, (AXIS_Y, 1.0, &[4.0, 3.0]));
+    view.polyline_on(&ring, Side::Front, (AXIS_Y, 1.5, &[4.0, 3.0]));
+    for (point, fill, ring, label) in
+        [(wing, "#ffffff", AXIS_Y, "wing"), (nose, KLI, INK, "h(q): the nose")]
+    {
+        pen.alpha(if view.in_front(point) { 1.0 } else { 0.45 });
+        let at = view.at(point);
+        pen.disc(at, 7.0, Some(fill), Some((ring, 2.0)));
+        pen.text(label, (at.0, at.1 - 14.0), INK, 12.0, "center");
+    }
+    pen.alpha(1.0);
+    footnote(pen, frame, &format!("h(q) = ({})", vector_text(nose)));
+}
+
+/// `x, y, z` to three decimals.
+pub fn vector_text(v: DVec3) -> String {
+    let c = |x: f64| if x.abs() < 5e-4 { fixed(0.0, 3) } else { fixed(x, 3).replace('-', "−") };
+    format!("{}, {}, {}", c(v.x), c(v.y), c(v.z))
+}
+
+/// Section 5, beside the sphere: the object turned and rolled.
+pub fn draw_rolled(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
+    let rect = (0.0, 0.0, frame.width, frame.height);
+    object(pen, rect, mesh, model.rolled(), true);
+    caption(pen, rect, &format!("rolled {}° about its nose", trim(model.options.roll)));
+}
+
+/// Section 6: the phases on the circle at `t`, coloured by natural frequency, the order parameter
+/// as an arrow; beside them, `R(t)` from 0 to `END`.
+pub fn draw_phases(pen: &Pen, model: &Model, frame: &Frame) {
+    let (w, h) = (frame.width, frame.height);
+    let text = pen.text_scale();
+    let wide = w >= 1.4 * h;
+    let (left, right) = if wide {
+        ((0.0, 0.0, w * 0.42, h), (w * 0.42, 0.0, w * 0.58, h))
+    } else {
+        ((0.0, 0.0, w, h * 0.58), (0.0, h * 0.58, w, h * 0.42))
+    };
+    let plane = Plane::in_rect(left, text);
+    plane.circle(pen);
+    let phases = &model.phases;
+    let theta = phases.at(frame.t);
+    for (&angle, &omega) in theta.iter().zip(&phases.omega) {
+        let color = if omega < 0.0 { SLERP } else { KLI };
+        pen.disc(plane.at(angle, 1.0), 5.5, Some(color), Some(("#ffffff", 1.0)));
+    }
+    let (r, psi) = order(theta);
+    arrow(pen, plane.centre, plane.at(psi, r), INK, 2.5);
+    caption(pen, left, &format!("t = {}   R = {}", fixed(frame.t, 2), fixed(r, 3)));
+    let (l, t, pw, ph) = inset(right, text, 34.0);
+    let panel = Panel {
+        left: l,
+        top: t,
+        width: pw,
+        height: ph,
+        x_min: 0.0,
+        x_max: END,
+        y_min: 0.0,
+        y_max: 1.0,
+    };
+    let ticks: Vec<(f64, String)> = [0.0, 0.5, 1.0].iter().map(|&y| (y, trim(y))).collect();
+    panel.frame_with(pen, "R(t), the order parameter", &ticks, "t");
+    let times: Vec<f64> = (0..phases.samples.len()).map(|k| k as f64 * SAMPLE).collect();
+    panel.series(pen, &times, phases.samples.iter().map(|s| order(s).0), INK, 2.0, &[]);
+    let (x, y) = panel.at(frame.t, r);
+    pen.line((x, panel.top), (x, panel.top + panel.height), MUTED, 1.0, &[3.0, 3.0]);
+    pen.disc((x, y), 4.5, Some(INK), None);
+}
+
+/// Section 6, on S³: the followers' Hopf images with their trails to `t`, the pinned leader
+/// `h(r)` as a star.
+pub fn draw_lohe(pen: &Pen, model: &Model, frame: &Frame) {
+    let viewport = frame.sphere_viewport();
+    let view = globe(pen, &viewport, frame);
+    let swarm = &model.swarm;
+    let last = ((frame.t.max(0.0) / SAMPLE).round() as usize).min(swarm.samples.len() - 1);
+    let followers = swarm.samples[0].len();
+    for i in 0..followers {
+        let trail: Vec<DVec3> =
+            swarm.samples[..=last].iter().step_by(3).map(|s| hopf(s[i])).collect();
+        view.polyline_on(&trail, Side::Back, (SLERP, 1.0, &[]));
+        view.polyline_on(&trail, Side::Front, (SLERP, 1.5, &[]));
+    }
+    for q in swarm.at(frame.t) {
+        let point = hopf(*q);
+        pen.alpha(if view.in_front(point) { 1.0 } else { 0.45 });
+        pen.disc(view.at(point), 5.5, Some(SLERP), Some(("#ffffff", 1.0)));
+    }
+    let leader = hopf(swarm.leader);
+    pen.alpha(if view.in_front(leader) { 1.0 } else { 0.45 });
+    pen.disc(view.at(leader), 8.0, Some(KLI), Some((INK, 2.0)));
+    pen.text("h(r), pinned", (view.at(leader).0, view.at(leader).1 - 16.0), INK, 12.0, "center");
+    pen.alpha(1.0);
+    let text =
+        format!("t = {}   widest: {}° from r", fixed(frame.t, 2), fixed(swarm.spread(frame.t), 1));
+    footnote(pen, frame, &text);
+}
+
+/// Section 7: the great circle through `p` and `r`, `q(t)` on it, `r` split at `q` into its part
+/// along `q`, `(q·r) q`, and the tangent part `r − (q·r) q`, which is `q′` (paper eq. 3).
+pub fn draw_kli(pen: &Pen, model: &Model, frame: &Frame) {
+    let rect = (0.0, 0.0, frame.width, frame.height);
+    let (p, r) = (paper_p(), paper_r());
+    let Some(basis) = plane(p, r) else { return };
+    let mut plane = Plane::in_rect(rect, pen.text_scale());
+    plane.centre.0 -= plane.radius * 0.2;
+    plane.circle(pen);
+    let end = in_plane(r, basis);
+    plane.arc(pen, 0.0, end, SLERP, 1.5, &[5.0, 4.0]);
+    let q = model.kli_at(frame.t);
+    let a = in_plane(q, basis);
+    plane.arc(pen, 0.0, a, KLI, 3.5, &[]);
+    let dot = q.dot(r);
+    // r from the centre, and its part along q.
+    pen.line(plane.centre, plane.at(end, 1.0), MUTED, 1.0, &[]);
+    pen.line(plane.centre, plane.at(a, dot), MUTED, 1.5, &[4.0, 3.0]);
+    pen.line(plane.at(a, dot), plane.at(end, 1.0), GRID, 1.0, &[2.0, 2.0]);
+    // The tangent part, drawn at q: (r − (q·r) q) has plane coordinates from `end` and `a`.
+    let tangent = r - q * dot;
+    let (tx, ty) = (tangent.dot(basis.0), tangent.dot(basis.1));
+    let from = plane.at(a, 1.0);
+    let to = (from.0 + plane.radius * tx, from.1 - plane.radius * ty);
+    arrow(pen, from, to, KLI, 2.5);
+    pen.disc(plane.at(0.0, 1.0), 6.0, Some("#ffffff"), Some((INK, 2.0)));
+    pen.disc(plane.at(end, 1.0), 6.0, Some(INK), Some(("#ffffff", 1.5)));
+    pen.disc(from, 7.0, Some(KLI), Some((INK, 1.5)));
+    plane.label(pen, "p", 0.0, 1.16, INK);
+    plane.label(pen, "r", end, 1.16, INK);
+    plane.label(pen, "(q·r) q", a, dot * 0.5 - 0.12, MUTED);
+    pen.text("q′", (to.0 + 10.0, to.1 - 6.0), KLI, 13.0, "left");
+    let phi = model.phi(frame.t);
+    caption(
+        pen,
+        rect,
+        &format!(
+            "t = {}   φ = {}°   |q′| = sin φ = {}",
+            fixed(frame.t, 2),
+            fixed(phi.to_degrees(), 2),
+            fixed(phi.sin(), 4)
+        ),
+    );
+}
+
+/// Section 7, the clock: KLI's `s(t) = 1 − φ(t)/φ₀` against SLERP's steady `t/T`, `t` marked.
+pub fn draw_clock(pen: &Pen, model: &Model, frame: &Frame) {
+    let text = pen.text_scale();
+    let (l, t, w, h) = inset((0.0, 0.0, frame.width, frame.height), text, 40.0);
+    let panel = Panel {
+        left: l,
+        top: t,
+        width: w,
+        height: h,
+        x_min: 0.0,
+        x_max: END,
+        y_min: 0.0,
+        y_max: 1.0,
+    };
+    let ticks: Vec<(f64, String)> = [0.0, 0.5, 1.0].iter().map(|&y| (y, trim(y))).collect();
+    panel.frame_with(pen, "how far along the arc: s", &ticks, "t");
+    let times: Vec<f64> = (0..=240).map(|k| k as f64 / 240.0 * END).collect();
+    let big_t = model.path.final_time();
+    panel.series(pen, &times, times.iter().map(|&x| (x / big_t).min(1.0)), SLERP, 1.5, &[5.0, 4.0]);
+    panel.series(pen, &times, times.iter().map(|&x| model.warp(x)), KLI, 3.0, &[]);
+    let now = frame.t.clamp(0.0, END);
+    let (x, y) = panel.at(now, model.warp(now));
+    pen.line((x, panel.top), (x, panel.top + panel.height), MUTED, 1.0, &[3.0, 3.0]);
+    pen.disc((x, y), 5.0, Some(KLI), Some((INK, 1.5)));
+    let entries = [
+        Entry { mark: Mark::Line(KLI, 3.0, &[]), label: "KLI" },
+        Entry { mark: Mark::Line(SLERP, 1.5, &[5.0, 4.0]), label: "SLERP, t/T" },
+    ];
+    draw_legend_row(pen, (l + w, t + h - 10.0 * text), &entries);
+}
+
+/// Section 7, Algorithm 1: `‖r − qₙ‖` at each step `tₙ = nδ` on a log scale, the tolerance ε,
+/// the stop `T` and the prediction `T*`, step `⌊t/δ⌋` marked.
+pub fn draw_steps(pen: &Pen, model: &Model, frame: &Frame) {
+    let text = pen.text_scale();
+    let (l, t, w, h) = inset((0.0, 0.0, frame.width, frame.height), text, 46.0);
+    let r = model.path.target();
+    let digits = model.options.digits;
+    let y_min = -(digits + 1.0).ceil();
+    let panel =
+        Panel { left: l, top: t, width: w, height: h, x_min: 0.0, x_max: END, y_min, y_max: 0.5 };
+    let every = if digits > 6.0 { 2 } else { 1 };
+    let ticks: Vec<(f64, String)> =
+        decades(y_min as i32, 0, every).into_iter().map(|e| (e as f64, format!("1e{e}"))).collect();
+    panel.frame_with(pen, "‖r − qₙ‖ at each step", &ticks, "t");
+    let distance = |q: DQuat| (r - q).length().max(1e-300).log10();
+    let times = model.path.times();
+    let values: Vec<f64> = model.path.quaternions().iter().map(|&q| distance(q)).collect();
+    if times.len() <= 160 {
+        let points: Vec<(f64, f64)> =
+            times.iter().zip(&values).map(|(&x, &y)| panel.at(x, y)).collect();
+        pen.dots(&points, 2.5, KLI);
+    } else {
+        panel.series(pen, times, values.iter().copied(), KLI, 2.0, &[]);
+    }
+    let eps = -digits;
+    pen.line(panel.at(0.0, eps), panel.at(END, eps), INK, 1.0, &[5.0, 3.0]);
+    pen.text("ε", (panel.at(END, eps).0 + 6.0, panel.at(END, eps).1), INK, 12.0, "left");
+    let (big_t, star) = (model.path.final_time(), model.predicted());
+    if big_t <= END {
+        let (x, _) = panel.at(big_t, 0.0);
+        pen.line((x, panel.top), (x, panel.top + panel.height), INK, 1.5, &[]);
+        pen.text(
+            &format!("T = {}", fixed(big_t, 2)),
+            (x - 4.0, panel.top + 10.0 * text),
+            INK,
+            11.5,
+            "right",
+        );
+    }
+    if star <= END {
+        let (x, _) = panel.at(star, 0.0);
+        pen.line(
+            (x, panel.top + 16.0 * text),
+            (x, panel.top + panel.height),
+            MUTED,
+            1.0,
+            &[2.0, 3.0],
+        );
+    }
+    let n = model.step_at(frame.t);
+    if let (Some(&x), Some(&y)) = (times.get(n), values.get(n)) {
+        pen.disc(panel.at(x, y), 6.0, Some(KLI), Some((INK, 2.0)));
+    }
+}
+
+/// Section 8: `| |q| − 1 |` for Euler, RK4 and the geodesic step at the reader's step size on the
+/// paper's example, on a log scale (what lies below 1e-17 drawn at 1e-17), the chosen one thick.
+pub fn draw_drift(pen: &Pen, model: &Model, frame: &Frame) {
+    let text = pen.text_scale();
+    let (l, t, w, h) = inset((0.0, 0.0, frame.width, frame.height), text, 46.0);
+    let panel = Panel {
+        left: l,
+        top: t,
+        width: w,
+        height: h,
+        x_min: 0.0,
+        x_max: END,
+        y_min: -17.0,
+        y_max: 0.0,
+    };
+    let ticks: Vec<(f64, String)> =
+        decades(-16, 0, 4).into_iter().map(|e| (e as f64, format!("1e{e}"))).collect();
+    panel.frame_with(pen, "| |q| − 1 |, the drift off S³", &ticks, "t");
+    let mut entries = Vec::new();
+    for drift in &model.drifts {
+        let chosen = drift.integrator == model.options.integrator;
+        let (color, label) = integrator_style(drift.integrator);
+        let width = if chosen { 3.5 } else { 1.25 };
+        let ys = drift.drift.iter().map(|&d| if d > 0.0 { d.log10().max(-17.0) } else { -17.0 });
+        panel.series(pen, &drift.times, ys, color, width, &[]);
+        entries.push(Entry { mark: Mark::Line(color, width, &[]), label });
+    }
+    draw_legend_row(pen, (l + w, t + 8.0 * text), &entries);
+    let chosen = model.drifts.iter().find(|d| d.integrator == model.options.integrator);
+    if let Some(d) = chosen {
+        let largest = d.largest();
+        let text = if largest == 0.0 { String::from("0") } else { exponential(largest, 1) };
+        let line = format!("{}: largest drift {text}", integrator_style(d.integrator).1);
+        // Between the curves: Euler and RK4 have fallen below 1e-11 by then, the geodesic step
+        // stays at rounding, below.
+        pen.text(&line, (l + 0.3 * w, t + 0.8 * h), INK, 12.0, "left");
+    }
+}
+
+/// Each integrator's colour and name.
+pub fn integrator_style(integrator: Integrator) -> (&'static str, &'static str) {
+    match integrator {
+        Integrator::Euler => (KLI, "Euler"),
+        Integrator::Rk4 => (SLERP, "RK4"),
+        Integrator::Geodesic => (AXIS_Y, "geodesic"),
+    }
+}

@@ -1,0 +1,188 @@
+// End-to-end tests of the tour (learn.html, made from www/learn/) in Debian's headless Chromium:
+// its figures drawn, the clock started only as a moving figure is scrolled to (never with reduced
+// motion), the other pages' figures loaded only as their section nears, the text quoting values
+// that MATH.md gives or that this file computes afresh (the Kuramoto phases integrated here, the
+// closed form, T* from its formula), an exercise setting its figure, printing with the answers,
+// WCAG 2.2 AA and 390 px.
+import { test } from "node:test";
+import assert from "node:assert/strict";
+import { join } from "node:path";
+import { artifacts, axeViolations, canvasStats, open, setup } from "./browser.mjs";
+
+setup();
+
+const CANVASES = ["euler", "turn", "cover", "slerp", "hopf", "rolled", "phases", "lohe", "kli", "clock", "steps", "drift"];
+const text = (page, selector) => page.textContent(selector).then((t) => t.trim());
+
+/** The Kuramoto figure's phases computed here, apart from the module: 20 natural frequencies evenly
+ *  spread on [−0.5, 0.5], phases started at multiples of the golden angle, RK4 at step 0.01 on
+ *  θᵢ′ = ωᵢ + (K/N) Σⱼ sin(θⱼ − θᵢ) (summed pair by pair, not through the order parameter);
+ *  returns R at time t. */
+function kuramotoOrder(coupling, t) {
+  const n = 20;
+  const omega = Array.from({ length: n }, (_, i) => 0.5 * ((2 * (i + 0.5)) / n - 1));
+  const golden = Math.PI * (3 - Math.sqrt(5));
+  let theta = Array.from({ length: n }, (_, i) => (i * golden) % (2 * Math.PI));
+  const rate = (th) => th.map((ti, i) => omega[i] + (coupling / n) * th.reduce((sum, tj) => sum + Math.sin(tj - ti), 0));
+  const h = 0.01;
+  for (let k = 0; k < Math.round(t / h); k++) {
+    const add = (a, b, f) => a.map((x, i) => x + f * b[i]);
+    const k1 = rate(theta), k2 = rate(add(theta, k1, h / 2)), k3 = rate(add(theta, k2, h / 2)), k4 = rate(add(theta, k3, h));
+    theta = theta.map((x, i) => x + (h / 6) * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]));
+  }
+  const [s, c] = theta.reduce(([s, c], x) => [s + Math.sin(x), c + Math.cos(x)], [0, 0]);
+  return Math.hypot(s, c) / n;
+}
+
+/** MATH.md's closed form on the paper's example: φ(t) with tan(φ/2) = tan(φ₀/2) e^−t, φ₀ = π/3. */
+const phiDegrees = (t) => (2 * Math.atan(Math.tan(Math.PI / 6) * Math.exp(-t)) * 180) / Math.PI;
+/** MATH.md's T* = ln(tan(φ₀/2) / tan(arcsin(ε/2))). */
+const predicted = (epsilon) => Math.log(Math.tan(Math.PI / 6) / Math.tan(Math.asin(epsilon / 2)));
+
+test("the tour draws every figure and quotes MATH.md's values; the clock starts only as a moving figure is reached", async () => {
+  const { page, context, problems } = await open("learn.html");
+  for (const name of ["euler", "turn", "cover", "slerp"]) {
+    assert.ok((await canvasStats(page, `#learn-${name}`)).drawn > 2000, name);
+  }
+  // The section of section 7: the paper's example, ε = 1e-5, δ = 0.01: T = 11.66 and T* = 11.6568.
+  const steps = await text(page, "#steps-out");
+  assert.match(steps, /stops after 1166 steps, at T = 11\.66; T\* = 11\.6568\./);
+  assert.equal(predicted(1e-5).toFixed(4), "11.6568");
+  // A quarter turn about z: cos 45° + sin 45° k; the nose (x) goes to y (MATH.md's h(r) = (0, 1, 0) too).
+  assert.equal(await text(page, "#turn-out"), "q = 0.707 + 0.000 i + 0.000 j + 0.707 k");
+  assert.equal(await text(page, "#hopf-out"), "The nose points to (0.000, 1.000, 0.000); a wing to (−1.000, 0.000, 0.000).");
+  // The yaw and roll axes at pitch 40° are 90° − 40° apart.
+  assert.equal(await text(page, "#lock-out"), "50.0°");
+  // Nothing plays while the moving figures are off screen.
+  await page.waitForTimeout(800);
+  assert.equal(await text(page, "#play"), "Play");
+  assert.equal(await text(page, "#readout"), "t = 0.00 / 12.00");
+  // The other pages' figures are not loaded yet.
+  assert.equal(await page.evaluate(() => customElements.get("kli-figure")), undefined);
+  // Scrolled to the phases, the clock starts from 0 and the text follows it.
+  await page.locator("#learn-phases").scrollIntoViewIfNeeded();
+  await page.waitForFunction(() => document.querySelector("#play").textContent === "Pause", null, { timeout: 5000 });
+  await page.waitForFunction(() => /At t = [1-9]/.test(document.querySelector("#phases-out").textContent), null, { timeout: 10000 });
+  for (const name of ["phases", "lohe", "kli", "clock", "steps", "drift", "hopf", "rolled"]) {
+    await page.locator(`#learn-${name}`).scrollIntoViewIfNeeded();
+    assert.ok((await canvasStats(page, `#learn-${name}`)).drawn > 2000, name);
+  }
+  // Paused at a time, the phases' R is the one computed here, and KLI's φ the closed form's.
+  await page.click("#play");
+  await page.evaluate(() => {
+    const time = /** @type {HTMLInputElement} */ (document.querySelector("#time"));
+    time.value = "6";
+    time.dispatchEvent(new Event("input", { bubbles: true }));
+  });
+  const phases = await text(page, "#phases-out");
+  const [, r] = phases.match(/^At t = 6\.00, R = ([\d.]+)\.$/);
+  assert.ok(Math.abs(Number(r) - kuramotoOrder(1.5, 6)) < 2e-3, `${phases} against ${kuramotoOrder(1.5, 6)}`);
+  assert.match(await text(page, "#kli-out"), new RegExp(`^At t = 6\\.00, φ = ${phiDegrees(6).toFixed(2)}°`));
+  // The many rotations: the other pages' figures come as their section nears, and draw.
+  await page.locator("#many").scrollIntoViewIfNeeded();
+  await page.waitForFunction(() => customElements.get("kli-figure") !== undefined, null, { timeout: 10000 });
+  await page.locator("#fig-average").scrollIntoViewIfNeeded();
+  await page.waitForFunction(() => {
+    const canvas = document.querySelector("#fig-average")?.shadowRoot?.querySelector("canvas");
+    return canvas && canvas.width > 300;
+  }, null, { timeout: 20000 });
+  await page.screenshot({ path: join(artifacts, "learn.png"), fullPage: true });
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test("an exercise opens, sets its figure, and its answer is the one the figure then shows", async () => {
+  const { page, context, problems } = await open("learn.html", { reducedMotion: "reduce" });
+  // One more digit of ε: T* grows by about ln 10.
+  const digits = page.locator("details.exercise", { hasText: "one more digit" });
+  await digits.locator("summary").click();
+  await digits.locator("a.set").click();
+  await page.waitForURL(/digits=6/);
+  const want = predicted(1e-6);
+  assert.equal(want.toFixed(4), "13.9594");
+  assert.match(await text(page, "#steps-out"), new RegExp(`at T = 13\\.96; T\\* = ${want.toFixed(4)}\\.`));
+  assert.equal(await page.inputValue("[name=digits]"), "6");
+  assert.equal(await page.getAttribute("[name=digits]", "aria-valuetext"), "ε = 10⁻⁶");
+  // Halfway along the arc: φ = 30° at t = ln(tan 30° / tan 15°) = 0.768.
+  const half = page.locator("details.exercise", { hasText: "halfway along the arc" });
+  await half.locator("summary").click();
+  await half.locator("a.set").click();
+  assert.equal(await text(page, "#readout"), "t = 0.77 / 12.00");
+  assert.equal(Math.log(Math.tan(Math.PI / 6) / Math.tan(Math.PI / 12)).toFixed(3), "0.768");
+  assert.match(await text(page, "#kli-out"), new RegExp(`^At t = 0\\.77, φ = ${phiDegrees(0.77).toFixed(2)}°, s = 0\\.50`));
+  // Gimbal lock: the axes 0° apart; a full turn: q = −1; NLERP behind SLERP at s = 0.25.
+  await page.locator("details.exercise", { hasText: "pitch 90°" }).locator("summary").click();
+  await page.locator("details.exercise", { hasText: "pitch 90°" }).locator("a.set").click();
+  assert.equal(await text(page, "#lock-out"), "0.0°");
+  await page.click("a.set[href='?angle=360#cover']");
+  assert.equal(await text(page, "#cover-out"), "θ = 360°, q = −1.000 + 0.000 i + 0.000 j + 0.000 k");
+  assert.equal(await page.getAttribute("[name=angle]", "aria-valuetext"), "360° about z");
+  await page.locator("details.exercise", { hasText: "s = 0.25" }).locator("summary").click();
+  await page.locator("details.exercise", { hasText: "s = 0.25" }).locator("a.set").click();
+  const nlerp = (Math.atan2(0.25 * Math.sin(Math.PI / 3), 0.75 + 0.25 * Math.cos(Math.PI / 3)) * 180) / Math.PI;
+  assert.equal(await text(page, "#slerp-out"), `At s = 0.25 SLERP is 15.00° along the arc, NLERP ${nlerp.toFixed(2)}°.`);
+  // A roll leaves the Hopf point where it was.
+  const before = await text(page, "#hopf-out");
+  await page.locator("details.exercise", { hasText: "roll by 180°" }).locator("summary").click();
+  await page.locator("details.exercise", { hasText: "roll by 180°" }).locator("a.set").click();
+  const after = await text(page, "#hopf-out");
+  assert.equal(after.slice(0, after.indexOf(";")), before.slice(0, before.indexOf(";")));
+  assert.notEqual(after, before);
+  // Printed, every exercise shows its answer, and no control is on paper.
+  await page.emulateMedia({ media: "print" });
+  await page.evaluate(() => dispatchEvent(new Event("beforeprint")));
+  const answers = await page.$$eval("details.exercise", (all) => all.map((d) => d.open && d.querySelector("p:last-child").getBoundingClientRect().height > 0));
+  assert.ok(answers.length >= 9 && answers.every(Boolean), JSON.stringify(answers));
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test("reduced motion: nothing plays by itself, not even as a moving figure is reached", async () => {
+  const { page, context, problems } = await open("learn.html", { reducedMotion: "reduce" });
+  await page.locator("#learn-phases").scrollIntoViewIfNeeded();
+  await page.waitForTimeout(1200);
+  assert.equal(await text(page, "#play"), "Play");
+  assert.equal(await text(page, "#readout"), "t = 0.00 / 12.00");
+  // The reader's own press plays it.
+  await page.click("button.play-from[data-figure=phases]");
+  await page.waitForFunction(() => document.querySelector("#readout").textContent !== "t = 0.00 / 12.00", null, { timeout: 5000 });
+  await page.click("#play");
+  // The other pages' figures come still, at a time of their own, never autoplaying.
+  await page.locator("#many").scrollIntoViewIfNeeded();
+  await page.waitForFunction(() => customElements.get("kli-figure") !== undefined, null, { timeout: 10000 });
+  assert.deepEqual(await page.$$eval("kli-figure", (all) => all.filter((f) => f.hasAttribute("autoplay")).length), 0);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test("WCAG 2.2 AA and 390 px, every control in words", async () => {
+  const { page, context } = await open("learn.html", { reducedMotion: "reduce" });
+  // Every slider of the tour says its value in words.
+  const sliders = await page.$$eval("input[type=range]", (all) => all.map((s) => [s.name || s.id || s.dataset.attribute, s.getAttribute("aria-valuetext")]));
+  assert.ok(sliders.length >= 16);
+  for (const [name, words] of sliders) assert.ok(words && /[a-zθεδ°%=]/.test(words), `${name}: ${words}`);
+  assert.equal(await page.getAttribute("[name=angle]", "aria-valuetext"), "90° about z");
+  // Every canvas is described in words.
+  for (const name of CANVASES) assert.ok(((await page.getAttribute(`#learn-${name}`, "aria-label")) ?? "").length > 40, name);
+  // The glossary: each term links to where the tour explains it.
+  const glossary = await page.$$eval("#glossary dd a", (links) => links.map((a) => a.getAttribute("href")));
+  assert.ok(glossary.length >= 20);
+  for (const href of glossary) assert.ok(await page.$(href), href);
+  await page.locator("#many").scrollIntoViewIfNeeded();
+  await page.waitForFunction(() => customElements.get("kli-figure") !== undefined, null, { timeout: 10000 });
+  // Each of the other pages' figures says what it shows once its module has built it.
+  await page.waitForFunction(() => [...document.querySelectorAll("kli-figure")]
+    .every((f) => f.shadowRoot?.querySelector("canvas")?.getAttribute("aria-label")), null, { timeout: 30000 });
+  assert.deepEqual(await axeViolations(page), []);
+  await context.close();
+  const narrow = await open("learn.html", { viewport: { width: 390, height: 844 }, reducedMotion: "reduce" });
+  assert.ok(await narrow.page.evaluate(() => document.documentElement.scrollWidth <= 390), "no horizontal scrolling");
+  for (const name of ["euler", "cover", "hopf", "phases", "kli"]) {
+    await narrow.page.locator(`#learn-${name}`).scrollIntoViewIfNeeded();
+    assert.ok((await canvasStats(narrow.page, `#learn-${name}`)).drawn > 1500, name);
+  }
+  assert.deepEqual(await axeViolations(narrow.page), []);
+  await narrow.page.screenshot({ path: join(artifacts, "learn-390px.png"), fullPage: true });
+  assert.deepEqual(narrow.problems, []);
+  await narrow.context.close();
+});

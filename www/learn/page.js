@@ -1,0 +1,231 @@
+// @ts-check
+// The tour (learn.html): a descriptor for the page runtime (runtime.js) whose one run holds every
+// section's figure (crates/kli-demo/src/learn/), the text that quotes the figures' values as they
+// change, the exercises' links that set a figure to the state they ask about, the clock started
+// as a moving section comes into view (never with reduced motion), and the live figures of the
+// other pages (<kli-figure>), loaded only as their section nears the screen.
+import * as learn from "../pkg/learn_demo.js";
+import { LearnDemo } from "../pkg/learn_demo.js";
+import { $ } from "../runtime/dom.js";
+import { page as registered } from "../pages.js";
+import { Player } from "../runtime/player.js";
+import { Page } from "../runtime/runtime.js";
+
+/** @typedef {import("./state.js").LearnState} LearnState */
+/** @typedef {import("../runtime/runtime.js").Host<LearnState, LearnDemo>} Host */
+
+const AXES = /** @type {Record<string, string>} */ ({ x: "x", y: "y", z: "z", diagonal: "the diagonal (1, 1, 1)" });
+const SUPERSCRIPT = /** @type {Record<string, string>} */ ({ "-": "⁻", 0: "⁰", 1: "¹", 2: "²", 3: "³", 4: "⁴", 5: "⁵", 6: "⁶", 7: "⁷", 8: "⁸", 9: "⁹" });
+const power = (/** @type {number} */ digits) => `10${`-${digits}`.replace(/./g, (c) => SUPERSCRIPT[c] ?? c)}`;
+const fixed = (/** @type {number} */ x, /** @type {number} */ digits) => x.toFixed(digits).replace(/^-(?=0\.0*$)/, "").replace("-", "−");
+/** [w, x, y, z] as "w + x i + y j + z k", three decimals. */
+const quaternion = (/** @type {ArrayLike<number>} */ q) => {
+  const part = (/** @type {number} */ x, /** @type {string} */ unit) => `${x < -5e-4 ? " − " : " + "}${Math.abs(x).toFixed(3)} ${unit}`;
+  return `${fixed(q[0], 3)}${part(q[1], "i")}${part(q[2], "j")}${part(q[3], "k")}`;
+};
+const vector = (/** @type {ArrayLike<number>} */ v) => `(${Array.from(v, (c) => fixed(Math.abs(c) < 5e-4 ? 0 : c, 3)).join(", ")})`;
+
+/** Each slider's value in words, beside it and for a screen reader (`aria-valuetext`). */
+const WORDS = /** @type {Record<string, (value: number, state: LearnState) => string>} */ ({
+  yaw: (v) => `${v}° yaw`,
+  pitch: (v) => `${v}° pitch`,
+  bank: (v) => `${v}° bank`,
+  angle: (v, state) => `${v}° about ${AXES[state.axis] ?? state.axis}`,
+  s: (v) => `s = ${v.toFixed(2)}`,
+  roll: (v) => `${v}° roll about the nose`,
+  coupling: (v) => `K = ${v}`,
+  lohe: (v) => `K = ${v}`,
+  digits: (v) => `ε = ${power(v)}`,
+  delta: (v) => `δ = ${v}`,
+  step: (v) => `h = ${v}`,
+});
+
+/** @type {Page<LearnState, LearnDemo>} */
+const page = new Page({
+  entry: registered("learn"),
+  module: learn,
+  form: "#learn-inputs",
+  readout: (run, t) => {
+    quoteTime(run, t);
+    return `t = ${t.toFixed(2)} / ${run.span[1].toFixed(2)}`;
+  },
+  labels: (run, t) => {
+    const now = run.readings(t);
+    const { finalTime, steps } = run.summary;
+    return {
+      phases: `Twenty Kuramoto phases on a circle at t = ${t.toFixed(2)}: order parameter R = ${now.order.toFixed(3)}.`,
+      lohe: `Eight followers on S³ flowing to the pinned leader at t = ${t.toFixed(2)}: the farthest is ${now.spreadDegrees.toFixed(1)}° from it.`,
+      kli: `KLI on the great circle from p to r at t = ${t.toFixed(2)}: φ = ${now.phiDegrees.toFixed(2)}°, the velocity is the tangent part of r.`,
+      clock: `KLI's progress along the arc against time: s = ${now.s.toFixed(3)} at t = ${t.toFixed(2)}, fast at first, then slow; SLERP's a straight line.`,
+      steps: `Algorithm 1's distance to r at each step on a log scale, a straight fall; ${steps} steps, stopping at T = ${finalTime.toFixed(2)}.`,
+    };
+  },
+  data: { file: (run) => `kli-tour-algorithm-1-eps-${run.summary.epsilon.toExponential(0)}` },
+  file: (run, view, t) => `kli-tour-${view}${["phases", "lohe", "kli", "clock", "steps"].includes(view) ? `-t${t.toFixed(2)}` : ""}`,
+  stride: () => 0.01,
+  video: {
+    views: ["kli", "clock"],
+    title: () => "KLI: the paper's flow on the great circle, and its clock",
+    file: () => "kli-tour-kli",
+  },
+  shown: (host, run, state) => {
+    showValues(host);
+    quoteSummary(run, state);
+    quoteTime(run, host.t);
+  },
+  input: (host) => {
+    showValues(host);
+    return false;
+  },
+  wire: (host) => wireTour(host),
+});
+
+/** The sliders' values beside them, and in words for a screen reader. */
+function showValues(/** @type {Host} */ host) {
+  const state = host.read();
+  for (const [name, words] of Object.entries(WORDS)) {
+    const field = host.field(name);
+    const value = Number(field.value);
+    const text = words(value, state);
+    field.setAttribute("aria-valuetext", text);
+    $(`#${name}-value`, HTMLOutputElement).textContent = text;
+  }
+}
+
+/** The values the text quotes that follow the controls alone. */
+function quoteSummary(/** @type {LearnDemo} */ run, /** @type {LearnState} */ state) {
+  const s = run.summary;
+  $("#lock-out", HTMLOutputElement).textContent = `${s.lockDegrees.toFixed(1)}°`;
+  $("#turn-out", HTMLOutputElement).textContent = `q = ${quaternion(s.turn)}`;
+  $("#cover-out", HTMLOutputElement).textContent = `θ = ${state.angle}°, q = ${quaternion(s.turn)}`;
+  $("#slerp-out", HTMLOutputElement).textContent =
+    `At s = ${state.s.toFixed(2)} SLERP is ${s.slerpDegrees.toFixed(2)}° along the arc, NLERP ${s.nlerpDegrees.toFixed(2)}°.`;
+  $("#hopf-out", HTMLOutputElement).textContent = `The nose points to ${vector(s.nose)}; a wing to ${vector(s.wing)}.`;
+  const d = s.drift;
+  const e = (/** @type {number} */ x) => x.toExponential(1);
+  $("#drift-out", HTMLOutputElement).textContent =
+    `The largest drift at h = ${state.step}: Euler ${e(d.euler)}, RK4 ${e(d.rk4)}, geodesic ${e(d.geodesic)}.`;
+}
+
+/** The values the text quotes that follow the clock. */
+function quoteTime(/** @type {LearnDemo} */ run, /** @type {number} */ t) {
+  const now = run.readings(t);
+  const s = run.summary;
+  const at = `At t = ${t.toFixed(2)}`;
+  $("#phases-out", HTMLOutputElement).textContent = `${at}, R = ${now.order.toFixed(3)}.`;
+  $("#lohe-out", HTMLOutputElement).textContent =
+    `${at}, R = ${now.swarmOrder.toFixed(3)}; the farthest follower is a ${now.spreadDegrees.toFixed(1)}° turn from r.`;
+  $("#kli-out", HTMLOutputElement).textContent =
+    `${at}, φ = ${now.phiDegrees.toFixed(2)}°, s = ${now.s.toFixed(3)}: q = ${quaternion(now.q)}.`;
+  $("#steps-out", HTMLOutputElement).textContent =
+    `Step n = ${now.step} at t = ${now.stepTime.toFixed(2)}: ‖r − q‖ = ${now.distance.toExponential(2)}. ` +
+    `With ε = ${power(Math.round(-Math.log10(s.epsilon)))} and δ = ${page.host.state.delta} the loop stops after ${s.steps} steps, ` +
+    `at T = ${s.finalTime.toFixed(2)}; T* = ${s.predictedTime.toFixed(4)}.`;
+  $("#time", HTMLInputElement).setAttribute("aria-valuetext", `t = ${t.toFixed(2)} of ${run.span[1]}`);
+}
+
+/** Plays the clock from 0 (a reader's press: reduced motion asks only that nothing starts by itself). */
+function playFromStart(/** @type {Host} */ host) {
+  host.seek(0);
+  if (!page.playing) page.play();
+}
+
+/** The exercises' links, the buttons of the clock, printing with the answers, and the figures'
+ *  own start as they come into view. */
+function wireTour(/** @type {Host} */ host) {
+  for (const link of document.querySelectorAll("a.set")) {
+    link.addEventListener("click", (event) => {
+      const a = /** @type {HTMLAnchorElement} */ (link);
+      event.preventDefault();
+      const state = a.dataset.state ? JSON.parse(a.dataset.state) : {};
+      if (Object.keys(state).length) host.apply({ ...host.state, ...state });
+      if (a.dataset.t !== undefined) host.seek(Number(a.dataset.t));
+      if (a.dataset.play) playFromStart(host);
+    });
+  }
+  for (const button of document.querySelectorAll("button.play-from")) {
+    button.addEventListener("click", () => playFromStart(host));
+  }
+  const step = (/** @type {number} */ by) => host.seek(Math.round((host.t + by * host.state.delta) * 1e6) / 1e6);
+  $("#step-on", HTMLButtonElement).addEventListener("click", () => step(1));
+  $("#step-back", HTMLButtonElement).addEventListener("click", () => step(-1));
+  // Printed, each exercise shows its answer (a closed <details> would print its question alone).
+  /** @type {HTMLDetailsElement[]} */
+  let opened = [];
+  addEventListener("beforeprint", () => {
+    opened = [...document.querySelectorAll("details:not([open])")].map((d) => /** @type {HTMLDetailsElement} */ (d));
+    opened.forEach((d) => (d.open = true));
+  });
+  addEventListener("afterprint", () => opened.forEach((d) => (d.open = false)));
+  startOnArrival(host);
+  loadOtherFigures();
+}
+
+/** A section whose figures move starts the clock from 0 the first time it comes into view (each
+ *  section its own start), unless the reader asked for reduced motion. */
+function startOnArrival(/** @type {Host} */ host) {
+  if (Player.reducedMotion()) return;
+  const started = new Set();
+  const observer = new IntersectionObserver((entries) => {
+    for (const entry of entries) {
+      if (!entry.isIntersecting || started.has(entry.target)) continue;
+      started.add(entry.target);
+      observer.unobserve(entry.target);
+      playFromStart(host);
+    }
+  }, { threshold: 0.6 });
+  for (const id of ["#learn-phases", "#learn-lohe", "#learn-kli"]) observer.observe($(id, HTMLCanvasElement));
+}
+
+/** The other pages' figures (<kli-figure>, each loading its page's module) are defined only as
+ *  their section nears the screen; each plays (and rests off screen) unless motion is reduced.
+ *  Until then (and with no script) each shows a link to its page. */
+function loadOtherFigures() {
+  const section = $("#many", HTMLElement);
+  // A single-file copy of the tour (make single) holds its own module alone: from file:// the
+  // other pages' modules are not there to load, and their figures stay links to their pages.
+  if (location.protocol === "file:") {
+    section.querySelectorAll(".figure-control").forEach((control) => control.remove());
+    return;
+  }
+  const observer = new IntersectionObserver((entries) => {
+    if (!entries.some((entry) => entry.isIntersecting)) return;
+    observer.disconnect();
+    const still = Player.reducedMotion();
+    for (const figure of section.querySelectorAll("kli-figure")) {
+      if (still) figure.setAttribute("t", figure.id === "fig-swarm" ? "8" : "4");
+      else figure.setAttribute("autoplay", "");
+    }
+    import("../kli-figure.js");
+  }, { rootMargin: "600px" });
+  observer.observe(section);
+  const set = (/** @type {string} */ id, /** @type {string} */ attribute, /** @type {string} */ value) => {
+    document.getElementById(id)?.setAttribute(attribute, value);
+    const slider = /** @type {HTMLInputElement | null} */ (section.querySelector(`input[data-figure="${id}"]`));
+    if (slider) {
+      slider.value = value;
+      slider.setAttribute("aria-valuetext", words(attribute, Number(value)));
+    }
+  };
+  for (const slider of section.querySelectorAll("input[data-figure]")) {
+    const input = /** @type {HTMLInputElement} */ (slider);
+    input.addEventListener("input", () => set(String(input.dataset.figure), String(input.dataset.attribute), input.value));
+  }
+  for (const button of section.querySelectorAll("button.set-figure")) {
+    const b = /** @type {HTMLButtonElement} */ (button);
+    b.addEventListener("click", () => set(String(b.dataset.figure), String(b.dataset.attribute), String(b.dataset.value)));
+  }
+}
+
+/** A figure control's value in words. */
+function words(/** @type {string} */ attribute, /** @type {number} */ value) {
+  if (attribute === "outliers") return `${Math.round(value * 100)}% wild`;
+  if (attribute === "wrong") return `${Math.round(value * 100)}% wrong`;
+  if (attribute === "coupling") return `K = ${value}`;
+  return `${attribute} ${value}`;
+}
+
+// The runtime plays a page as it opens; the tour's clock waits until a moving figure is in view.
+page.start().then((ready) => {
+  if (ready) page.host.seek(0);
+});
