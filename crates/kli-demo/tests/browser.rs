@@ -283,7 +283,7 @@ fn text_boxes(svg: &str, ctx: &CanvasRenderingContext2d) -> Vec<([f64; 4], Strin
 #[wasm_bindgen_test]
 fn no_two_labels_of_a_figure_overlap() {
     use js_sys::{Float64Array, Object, Reflect};
-    use kli_demo::{AverageDemo, KeyframesDemo, KliDemo, SwarmDemo, SyncDemo};
+    use kli_demo::{AverageDemo, KeyframesDemo, KliDemo, LearnDemo, SwarmDemo, SyncDemo};
     use wasm_bindgen::JsValue;
 
     let frame = |width: f64, height: f64, t: f64| {
@@ -329,6 +329,24 @@ fn no_two_labels_of_a_figure_overlap() {
                 .map(|method| SyncDemo::sweep_error(small(), share, method).unwrap())
         })
         .collect();
+    // The tour at its start, and with every control moved: the lock, a double turn about the
+    // diagonal rolled, SLERP near its end, ε = 1e-8 with a coarse δ, RK4 at a fine step.
+    let learn = LearnDemo::new(None).unwrap();
+    let moved = Object::new();
+    for (key, value) in [
+        ("pitch", JsValue::from(90.0)),
+        ("axis", JsValue::from("diagonal")),
+        ("angle", JsValue::from(360.0)),
+        ("roll", JsValue::from(120.0)),
+        ("s", JsValue::from(0.9)),
+        ("digits", JsValue::from(8.0)),
+        ("delta", JsValue::from(0.3)),
+        ("integrator", JsValue::from("rk4")),
+        ("step", JsValue::from(0.1)),
+    ] {
+        Reflect::set(&moved, &key.into(), &value).unwrap();
+    }
+    let learn_moved = LearnDemo::new(Some(JsValue::from(moved).unchecked_into())).unwrap();
     // (view, wide screen size, phone size) of each class, as the pages lay them out.
     let sphere = [(560.0, 420.0), (358.0, 268.0)];
     let svgs: Vec<(String, String)> = [
@@ -403,6 +421,32 @@ fn no_two_labels_of_a_figure_overlap() {
         let svg = SyncDemo::sweep_svg(&frame(w, h, 0.0), &sync_shares, &sync_errors, 0.1);
         (format!("sync sweep {w}×{h}"), Ok(svg))
     }))
+    .chain(
+        // As www/first-pictures.json measures the tour's canvases; early, midway and at the end.
+        [
+            ("euler", [(770.0, 300.0), (340.0, 300.0)]),
+            ("turn", [(770.0, 300.0), (340.0, 300.0)]),
+            ("cover", [(770.0, 320.0), (340.0, 380.0)]),
+            ("slerp", [(770.0, 300.0), (340.0, 300.0)]),
+            ("hopf", [(370.0, 320.0), (340.0, 320.0)]),
+            ("rolled", [(370.0, 300.0), (340.0, 300.0)]),
+            ("phases", [(770.0, 300.0), (340.0, 400.0)]),
+            ("lohe", [(770.0, 340.0), (340.0, 340.0)]),
+            ("kli", [(770.0, 320.0), (340.0, 320.0)]),
+            ("clock", [(770.0, 220.0), (340.0, 220.0)]),
+            ("steps", [(770.0, 260.0), (340.0, 260.0)]),
+            ("drift", [(770.0, 280.0), (340.0, 280.0)]),
+        ]
+        .iter()
+        .flat_map(|(view, sizes)| {
+            let (learn, learn_moved) = (&learn, &learn_moved);
+            sizes.iter().flat_map(move |&(w, h)| {
+                [(0.2, learn), (2.0, learn_moved), (12.0, learn)].map(|(t, run)| {
+                    (format!("learn {view} {w}×{h} at {t}"), run.to_svg(view, &frame(w, h, t)))
+                })
+            })
+        }),
+    )
     .map(|(name, svg)| (name, svg.unwrap()))
     .collect();
     let ctx = canvas(1, 1);

@@ -12,7 +12,7 @@ use crate::aircraft::Face;
 use crate::camera::Viewport;
 use crate::figure::Frame;
 use crate::format::{exponential, fixed};
-use crate::legend::{Entry, Mark, draw_legend_row};
+use crate::legend::{Entry, Mark, TextBox, clear_place, draw_legend_row, text_box};
 use crate::object_view::{draw_object, object_camera};
 use crate::palette::{AXIS_X, AXIS_Y, AXIS_Z, GRID, INK, KLI, MUTED, SLERP};
 use crate::pen::Pen;
@@ -56,13 +56,20 @@ fn object(pen: &Pen, rect: Rect, mesh: &[Face], q: DQuat, axes: bool) -> Viewpor
     viewport
 }
 
+/// `rect` less a line of text above and below: where a figure with a caption and a footnote
+/// draws its object.
+fn between_lines(pen: &Pen, (left, top, width, height): Rect) -> Rect {
+    let line = 22.0 * pen.text_scale();
+    (left, top + line, width, (height - 2.0 * line).max(10.0))
+}
+
 /// Section 1: the object turned by yaw, pitch and bank, with the three gimbal axes; the yaw and
 /// roll axes meet at pitch ±90°.
 pub fn draw_euler(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
     let o = &model.options;
     let rect = (0.0, 0.0, frame.width, frame.height);
     let q = super::model::euler(o.yaw, o.pitch, o.bank);
-    let viewport = object(pen, rect, mesh, q, false);
+    let viewport = object(pen, between_lines(pen, rect), mesh, q, false);
     let camera = object_camera();
     let at = |v: DVec3| viewport.pixel(camera.project(v));
     let axes = super::model::gimbal_axes(o.yaw, o.pitch);
@@ -85,7 +92,7 @@ pub fn draw_euler(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
 pub fn draw_turn(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
     let rect = (0.0, 0.0, frame.width, frame.height);
     let q = model.turn();
-    let viewport = object(pen, rect, mesh, q, true);
+    let viewport = object(pen, between_lines(pen, rect), mesh, q, true);
     let camera = object_camera();
     let axis = model.options.axis.vector();
     let at = |v: DVec3| viewport.pixel(camera.project(v));
@@ -114,10 +121,11 @@ struct Plane {
 }
 
 impl Plane {
+    /// The largest circle in `rect` with room for its labels, below a caption's line.
     fn in_rect((left, top, width, height): Rect, text: f64) -> Plane {
-        let margin = 34.0 * text;
-        let radius = ((width.min(height) - 2.0 * margin) / 2.0).max(8.0);
-        Plane { centre: (left + width / 2.0, top + height / 2.0 + 6.0 * text), radius }
+        let (margin, caption) = (34.0 * text, 22.0 * text);
+        let radius = ((width.min(height - caption) - 2.0 * margin) / 2.0).max(8.0);
+        Plane { centre: (left + width / 2.0, top + caption + (height - caption) / 2.0), radius }
     }
 
     fn at(&self, angle: f64, length: f64) -> (f64, f64) {
@@ -144,6 +152,20 @@ impl Plane {
     fn label(&self, pen: &Pen, text: &str, angle: f64, length: f64, color: &str) {
         pen.text(text, self.at(angle, length), color, 12.5, "center");
     }
+
+    /// The label of the circle's point at `angle`, outside it and clear of the labels `taken`
+    /// (which it joins).
+    fn clear_label(
+        &self,
+        pen: &Pen,
+        text: &str,
+        angle: f64,
+        color: &str,
+        taken: &mut Vec<TextBox>,
+    ) {
+        let at = clear_place(pen, text, (self.at(angle, 1.0), self.centre), 24.0, 12.5, taken);
+        pen.text(text, at, color, 12.5, "center");
+    }
 }
 
 /// Section 3: the great circle of S³ through `1` and the axis `u`, with `q = cos(θ/2) + u
@@ -163,6 +185,10 @@ pub fn draw_cover(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
     plane.arc(pen, 0.0, half, KLI, 3.5, &[]);
     plane.label(pen, "1", 0.0, 1.22, INK);
     plane.label(pen, "−1", pi, 1.22, INK);
+    let mut taken: Vec<TextBox> = [("1", 0.0), ("−1", pi)]
+        .iter()
+        .map(|&(text, angle)| text_box(pen, text, plane.at(angle, 1.22), 12.5))
+        .collect();
     let unit = match model.options.axis {
         super::model::Axis::X => "i",
         super::model::Axis::Y => "j",
@@ -170,10 +196,11 @@ pub fn draw_cover(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
         super::model::Axis::Diagonal => "u",
     };
     plane.label(pen, unit, pi / 2.0, 1.22, INK);
+    taken.push(text_box(pen, unit, plane.at(pi / 2.0, 1.22), 12.5));
     pen.disc(plane.at(half + pi, 1.0), 6.5, Some("#ffffff"), Some((KLI, 2.5)));
     pen.disc(plane.at(half, 1.0), 7.0, Some(KLI), Some((INK, 1.5)));
-    plane.label(pen, "q", half, 1.38, KLI);
-    plane.label(pen, "−q", half + pi, 1.38, KLI);
+    plane.clear_label(pen, "q", half, KLI, &mut taken);
+    plane.clear_label(pen, "−q", half + pi, KLI, &mut taken);
     let q = model.turn();
     let (a, b) = if wide {
         ((objects.0, 0.0, objects.2, h / 2.0), (objects.0, h / 2.0, objects.2, h / 2.0))
@@ -240,23 +267,27 @@ pub fn draw_slerp(pen: &Pen, model: &Model, frame: &Frame) {
     draw_legend_row(pen, (x, y), &entries);
 }
 
-/// The sphere S² with its grid, seen from the frame's camera, in `rect`; returns how to place a
-/// point.
-fn globe<'a>(pen: &'a Pen<'a>, viewport: &'a Viewport, frame: &'a Frame) -> View<'a> {
+/// The sphere S² with its grid, seen from the frame's camera, in `viewport`; returns how to
+/// place a point, and the axis labels' boxes (for the labels placed after them to keep clear of).
+fn globe<'a>(
+    pen: &'a Pen<'a>,
+    viewport: &'a Viewport,
+    frame: &'a Frame,
+) -> (View<'a>, Vec<TextBox>) {
     let view = View { pen, viewport, camera: &frame.camera };
     let lines = grid();
     draw_grid_back(&view, &lines);
     pen.alpha(1.0);
     draw_globe(&view);
-    draw_grid_front(&view, &lines);
-    view
+    let labels = draw_grid_front(&view, &lines);
+    (view, labels)
 }
 
 /// Section 5: where the nose points, `h(q)` (paper eq. 5), and where a wing points, `q j q̄`,
 /// on the circle of directions square to the nose: the roll moves the wing and not the dot.
 pub fn draw_hopf(pen: &Pen, model: &Model, frame: &Frame) {
     let viewport = frame.sphere_viewport();
-    let view = globe(pen, &viewport, frame);
+    let (view, mut labels) = globe(pen, &viewport, frame);
     let q = model.rolled();
     let nose = hopf(q);
     let wing = q * DVec3::Y;
@@ -275,7 +306,8 @@ pub fn draw_hopf(pen: &Pen, model: &Model, frame: &Frame) {
         pen.alpha(if view.in_front(point) { 1.0 } else { 0.45 });
         let at = view.at(point);
         pen.disc(at, 7.0, Some(fill), Some((ring, 2.0)));
-        pen.text(label, (at.0, at.1 - 14.0), INK, 12.0, "center");
+        let place = clear_place(pen, label, (at, view.at(DVec3::ZERO)), 18.0, 12.0, &mut labels);
+        pen.text(label, place, INK, 12.0, "center");
     }
     pen.alpha(1.0);
     footnote(pen, frame, &format!("h(q) = ({})", vector_text(nose)));
@@ -290,7 +322,7 @@ pub fn vector_text(v: DVec3) -> String {
 /// Section 5, beside the sphere: the object turned and rolled.
 pub fn draw_rolled(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
     let rect = (0.0, 0.0, frame.width, frame.height);
-    object(pen, rect, mesh, model.rolled(), true);
+    object(pen, between_lines(pen, rect), mesh, model.rolled(), true);
     caption(pen, rect, &format!("rolled {}° about its nose", trim(model.options.roll)));
 }
 
@@ -340,7 +372,7 @@ pub fn draw_phases(pen: &Pen, model: &Model, frame: &Frame) {
 /// `h(r)` as a star.
 pub fn draw_lohe(pen: &Pen, model: &Model, frame: &Frame) {
     let viewport = frame.sphere_viewport();
-    let view = globe(pen, &viewport, frame);
+    let (view, mut labels) = globe(pen, &viewport, frame);
     let swarm = &model.swarm;
     let last = ((frame.t.max(0.0) / SAMPLE).round() as usize).min(swarm.samples.len() - 1);
     let followers = swarm.samples[0].len();
@@ -358,7 +390,10 @@ pub fn draw_lohe(pen: &Pen, model: &Model, frame: &Frame) {
     let leader = hopf(swarm.leader);
     pen.alpha(if view.in_front(leader) { 1.0 } else { 0.45 });
     pen.disc(view.at(leader), 8.0, Some(KLI), Some((INK, 2.0)));
-    pen.text("h(r), pinned", (view.at(leader).0, view.at(leader).1 - 16.0), INK, 12.0, "center");
+    let centre = view.at(DVec3::ZERO);
+    let place =
+        clear_place(pen, "h(r), pinned", (view.at(leader), centre), 20.0, 12.0, &mut labels);
+    pen.text("h(r), pinned", place, INK, 12.0, "center");
     pen.alpha(1.0);
     let text =
         format!("t = {}   widest: {}° from r", fixed(frame.t, 2), fixed(swarm.spread(frame.t), 1));
@@ -396,8 +431,12 @@ pub fn draw_kli(pen: &Pen, model: &Model, frame: &Frame) {
     plane.label(pen, "p", 0.0, 1.16, INK);
     plane.label(pen, "r", end, 1.16, INK);
     plane.label(pen, "(q·r) q", a, dot * 0.5 - 0.12, MUTED);
-    pen.text("q′", (to.0 + 10.0, to.1 - 6.0), KLI, 13.0, "left");
     let phi = model.phi(frame.t);
+    // Named while the arrow is long enough to see (φ > 10°: |q′| = sin φ); near r it shrinks
+    // to nothing and its name would sit on r's.
+    if phi > 10f64.to_radians() {
+        pen.text("q′", (to.0 + 10.0, to.1 - 6.0), KLI, 13.0, "left");
+    }
     caption(
         pen,
         rect,
