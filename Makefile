@@ -228,8 +228,9 @@ test-wasm-node: setup-rust
 # macros and build scripts are built once for both (in a directory of its own it took 183 s,
 # here 73 s, on a busy machine). What it computes is checked natively, where the
 # plain lanes are under test too: each of their operations bit for bit against the same one on
-# each f64 (src/lanes.rs), and the batch kernels are one source generic over the lanes. Running
-# the whole wasm suite on them once more took 105–169 s of `make test` and checked nothing else.
+# each f64 (src/lanes.rs), and the batch kernels, one source generic over the lanes, give the
+# same bits on them as on the lanes in use (src/batch/fast.rs). Running the whole wasm suite on
+# them once more took 105–169 s of `make test`.
 # Without `sync`, which uses no lanes and would check faer once more.
 lint-wasm-portable: setup-rust
 	CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-C target-feature=-simd128" \
