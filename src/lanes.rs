@@ -327,7 +327,7 @@ mod imp {
     test,
     not(any(all(target_arch = "wasm32", target_feature = "simd128"), target_arch = "x86_64"))
 ))]
-mod portable {
+pub(crate) mod portable {
     #[derive(Clone, Copy)]
     pub struct Lanes(pub [f64; 2]);
     #[derive(Clone, Copy)]
@@ -438,135 +438,149 @@ use portable as imp;
 
 pub use imp::{Lanes, Mask};
 
+/// The traits over an implementation's inherent operations: for the lanes in use, and under
+/// test for the plain lanes too where they are not the ones in use, so that the native tests run
+/// the batch kernels on them as wasm without `simd128` does.
+macro_rules! simd_traits {
+    ($imp:ident) => {
+        impl SimdMask for $imp::Mask {
+            #[inline(always)]
+            fn splat(value: bool) -> Self {
+                $imp::Mask::splat(value)
+            }
+            #[inline(always)]
+            fn all(self) -> bool {
+                $imp::Mask::all(self)
+            }
+        }
+
+        impl Simd for $imp::Lanes {
+            type Mask = $imp::Mask;
+            const LANES: usize = 2;
+            #[inline(always)]
+            fn load(x: &[f64]) -> Self {
+                Self::new(x[0], x[1])
+            }
+            #[inline(always)]
+            fn load_quaternions(q: &[f64]) -> [Self; 4] {
+                // Each half of a quaternion is one load; two interleaves put the pairs side by side.
+                let (wx0, yz0) = (Self::new(q[0], q[1]), Self::new(q[2], q[3]));
+                let (wx1, yz1) = (Self::new(q[4], q[5]), Self::new(q[6], q[7]));
+                let ((w, x), (y, z)) = (wx0.interleave(wx1), yz0.interleave(yz1));
+                [w, x, y, z]
+            }
+            #[inline(always)]
+            fn store_quaternions([w, x, y, z]: [Self; 4], out: &mut [f64]) {
+                let ((wx0, wx1), (yz0, yz1)) = (w.interleave(x), y.interleave(z));
+                for (k, half) in [wx0, yz0, wx1, yz1].into_iter().enumerate() {
+                    out[2 * k..2 * k + 2].copy_from_slice(&half.to_array());
+                }
+            }
+            #[inline(always)]
+            fn splat(x: f64) -> Self {
+                Self::new(x, x)
+            }
+            #[inline(always)]
+            fn abs(self) -> Self {
+                $imp::Lanes::abs(self)
+            }
+            #[inline(always)]
+            fn sqrt(self) -> Self {
+                $imp::Lanes::sqrt(self)
+            }
+            #[inline(always)]
+            fn max(self, o: Self) -> Self {
+                $imp::Lanes::max(self, o)
+            }
+            #[inline(always)]
+            fn round_ties_even(self) -> Self {
+                $imp::Lanes::round_ties_even(self)
+            }
+            #[inline(always)]
+            fn le(self, o: Self) -> $imp::Mask {
+                $imp::Lanes::le(self, o)
+            }
+            #[inline(always)]
+            fn lt(self, o: Self) -> $imp::Mask {
+                $imp::Lanes::lt(self, o)
+            }
+            #[inline(always)]
+            fn eq(self, o: Self) -> $imp::Mask {
+                $imp::Lanes::eq(self, o)
+            }
+            #[inline(always)]
+            fn select(mask: $imp::Mask, yes: Self, no: Self) -> Self {
+                $imp::Lanes::select(mask, yes, no)
+            }
+            #[inline(always)]
+            fn bits_sub_shl52(self, o: u64) -> Self {
+                $imp::Lanes::bits_sub_shl52(self, o)
+            }
+        }
+
+        impl Add for $imp::Lanes {
+            type Output = Self;
+            #[inline(always)]
+            fn add(self, o: Self) -> Self {
+                $imp::Lanes::add(self, o)
+            }
+        }
+
+        impl Sub for $imp::Lanes {
+            type Output = Self;
+            #[inline(always)]
+            fn sub(self, o: Self) -> Self {
+                $imp::Lanes::sub(self, o)
+            }
+        }
+
+        impl Mul for $imp::Lanes {
+            type Output = Self;
+            #[inline(always)]
+            fn mul(self, o: Self) -> Self {
+                $imp::Lanes::mul(self, o)
+            }
+        }
+
+        impl Div for $imp::Lanes {
+            type Output = Self;
+            #[inline(always)]
+            fn div(self, o: Self) -> Self {
+                $imp::Lanes::div(self, o)
+            }
+        }
+
+        impl Neg for $imp::Lanes {
+            type Output = Self;
+            #[inline(always)]
+            fn neg(self) -> Self {
+                $imp::Lanes::neg(self)
+            }
+        }
+
+        impl BitAnd for $imp::Mask {
+            type Output = Self;
+            #[inline(always)]
+            fn bitand(self, o: Self) -> Self {
+                self.and(o)
+            }
+        }
+    };
+}
+
+simd_traits!(imp);
+
 impl Lanes {
     #[inline(always)]
     pub fn splat(x: f64) -> Self {
         Self::new(x, x)
     }
 }
-
-impl SimdMask for Mask {
-    #[inline(always)]
-    fn splat(value: bool) -> Self {
-        Mask::splat(value)
-    }
-    #[inline(always)]
-    fn all(self) -> bool {
-        Mask::all(self)
-    }
-}
-
-impl Simd for Lanes {
-    type Mask = Mask;
-    const LANES: usize = 2;
-    #[inline(always)]
-    fn load(x: &[f64]) -> Self {
-        Self::new(x[0], x[1])
-    }
-    #[inline(always)]
-    fn load_quaternions(q: &[f64]) -> [Self; 4] {
-        // Each half of a quaternion is one load; two interleaves put the pairs side by side.
-        let (wx0, yz0) = (Self::new(q[0], q[1]), Self::new(q[2], q[3]));
-        let (wx1, yz1) = (Self::new(q[4], q[5]), Self::new(q[6], q[7]));
-        let ((w, x), (y, z)) = (wx0.interleave(wx1), yz0.interleave(yz1));
-        [w, x, y, z]
-    }
-    #[inline(always)]
-    fn store_quaternions([w, x, y, z]: [Self; 4], out: &mut [f64]) {
-        let ((wx0, wx1), (yz0, yz1)) = (w.interleave(x), y.interleave(z));
-        for (k, half) in [wx0, yz0, wx1, yz1].into_iter().enumerate() {
-            out[2 * k..2 * k + 2].copy_from_slice(&half.to_array());
-        }
-    }
-    #[inline(always)]
-    fn splat(x: f64) -> Self {
-        Self::new(x, x)
-    }
-    #[inline(always)]
-    fn abs(self) -> Self {
-        Lanes::abs(self)
-    }
-    #[inline(always)]
-    fn sqrt(self) -> Self {
-        Lanes::sqrt(self)
-    }
-    #[inline(always)]
-    fn max(self, o: Self) -> Self {
-        Lanes::max(self, o)
-    }
-    #[inline(always)]
-    fn round_ties_even(self) -> Self {
-        Lanes::round_ties_even(self)
-    }
-    #[inline(always)]
-    fn le(self, o: Self) -> Mask {
-        Lanes::le(self, o)
-    }
-    #[inline(always)]
-    fn lt(self, o: Self) -> Mask {
-        Lanes::lt(self, o)
-    }
-    #[inline(always)]
-    fn eq(self, o: Self) -> Mask {
-        Lanes::eq(self, o)
-    }
-    #[inline(always)]
-    fn select(mask: Mask, yes: Self, no: Self) -> Self {
-        Lanes::select(mask, yes, no)
-    }
-    #[inline(always)]
-    fn bits_sub_shl52(self, o: u64) -> Self {
-        Lanes::bits_sub_shl52(self, o)
-    }
-}
-
-impl Add for Lanes {
-    type Output = Self;
-    #[inline(always)]
-    fn add(self, o: Self) -> Self {
-        Lanes::add(self, o)
-    }
-}
-
-impl Sub for Lanes {
-    type Output = Self;
-    #[inline(always)]
-    fn sub(self, o: Self) -> Self {
-        Lanes::sub(self, o)
-    }
-}
-
-impl Mul for Lanes {
-    type Output = Self;
-    #[inline(always)]
-    fn mul(self, o: Self) -> Self {
-        Lanes::mul(self, o)
-    }
-}
-
-impl Div for Lanes {
-    type Output = Self;
-    #[inline(always)]
-    fn div(self, o: Self) -> Self {
-        Lanes::div(self, o)
-    }
-}
-
-impl Neg for Lanes {
-    type Output = Self;
-    #[inline(always)]
-    fn neg(self) -> Self {
-        Lanes::neg(self)
-    }
-}
-
-impl BitAnd for Mask {
-    type Output = Self;
-    #[inline(always)]
-    fn bitand(self, o: Self) -> Self {
-        self.and(o)
-    }
-}
+#[cfg(all(
+    test,
+    any(all(target_arch = "wasm32", target_feature = "simd128"), target_arch = "x86_64")
+))]
+simd_traits!(portable);
 
 #[cfg(test)]
 mod tests {

@@ -459,6 +459,51 @@ mod tests {
         }
     }
 
+    #[test]
+    fn the_plain_lanes_give_the_kernels_the_same_bits() {
+        // What wasm without `simd128` runs (the plain [f64; 2] lanes) against the lanes in use
+        // here, over pairs near, far and antipodal, at times in and past the flow's span.
+        use crate::lanes::portable;
+        let plain = |x: [[f64; 4]; 2]| [0, 1, 2, 3].map(|c| portable::Lanes::new(x[0][c], x[1][c]));
+        let lanes = |x: [[f64; 4]; 2]| [0, 1, 2, 3].map(|c| Lanes::new(x[0][c], x[1][c]));
+        let same = |a: [Lanes; 4], b: [portable::Lanes; 4]| {
+            (0..4).all(|c| a[c].to_array().map(f64::to_bits) == b[c].to_array().map(f64::to_bits))
+        };
+        let q = |a: f64, b: f64| to_wxyz(unit_q(&[a.cos(), b.sin(), a.sin() * b.cos(), 0.3 - a]));
+        let mut checked = 0;
+        for k in 0..200 {
+            let (a, b) = (0.37 * k as f64, 0.91 * k as f64 + 0.2);
+            let (p, r) = ([q(a, b), q(b, a)], [q(a + 0.01 * b, b), q(a + 3.1, -b)]);
+            let antipodal = [p[0].map(|x| -x), r[1]];
+            for r in [r, antipodal] {
+                for (t0, t1) in [(0.0, 1.0), (0.25, 0.75), (3.0, 11.66), (20.0, 1e-9)] {
+                    for shortest in [true, false] {
+                        let (x, _) =
+                            slerp_kernel(&lanes(p), &lanes(r), Lanes::new(t0, t1), shortest);
+                        let (y, _) = slerp_kernel(
+                            &plain(p),
+                            &plain(r),
+                            portable::Lanes::new(t0, t1),
+                            shortest,
+                        );
+                        assert!(same(x, y), "slerp at {k}, {t0}, {t1}");
+                        let (x, _) =
+                            kli_exact_kernel(&lanes(p), &lanes(r), Lanes::new(t0, t1), shortest);
+                        let (y, _) = kli_exact_kernel(
+                            &plain(p),
+                            &plain(r),
+                            portable::Lanes::new(t0, t1),
+                            shortest,
+                        );
+                        assert!(same(x, y), "KLI at {k}, {t0}, {t1}");
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        assert_eq!(checked, 3200);
+    }
+
     fn unit_q(q: &[f64]) -> DQuat {
         unit("q", from_wxyz(q.try_into().unwrap())).unwrap()
     }

@@ -657,8 +657,9 @@ fn kli_meets_the_tolerance_or_throws() {
 
 #[wasm_bindgen_test]
 fn built_with_the_lanes_the_run_asked_for() {
-    // `make test-wasm-portable` builds without simd128 and says so: the batch kernels above ran
-    // on the plain [f64; 2] lanes there, and on wasm SIMD in `make test-wasm-node`.
+    // The batch kernels above ran on wasm SIMD (`make test-wasm-node`). A build without simd128
+    // (`KLI_LANES=portable`, the plain [f64; 2] lanes) would say so; `make lint-wasm-portable`
+    // builds it, and the native tests check those lanes bit for bit (src/lanes.rs).
     let portable = option_env!("KLI_LANES") == Some("portable");
     assert_eq!(cfg!(target_feature = "simd128"), !portable);
 }
