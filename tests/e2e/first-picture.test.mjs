@@ -53,10 +53,15 @@ async function held(html, viewport) {
 
 /** A screenshot of each canvas's box, scrolled into view (a full-page screenshot would lay the
  *  page out at another size for a moment: a layout shift, and on a wide screen the phone's
- *  pictures fetched). */
-async function shots(page, selectors) {
+ *  pictures fetched). With `live`, each once its canvas has taken over from its picture: the
+ *  tour (learn.html) draws a figure only as it nears the screen. */
+async function shots(page, selectors, live = false) {
   const result = [];
   for (const selector of selectors) {
+    if (live) {
+      await page.locator(selector).scrollIntoViewIfNeeded();
+      await page.waitForFunction((id) => !document.getElementById(`${id}-first`), selector.slice(1), { timeout: 10000 });
+    }
     result.push(await page.locator(selector).screenshot({ animations: "disabled" }));
   }
   return result;
@@ -92,11 +97,11 @@ for (const layout of LAYOUTS) {
         // computing it (the synchronisation page's solutions, from its worker) keeps its picture
         // till then.
         await tab.waitForTimeout(600);
+        const after = await shots(tab, selectors, true);
         await tab.waitForFunction(() => document.querySelectorAll(".first-picture").length === 0, null, { timeout: 20000 })
           .catch(() => {});
         assert.equal(await tab.locator(".first-picture").count(), 0, "the live canvases took over");
         const shifts = await tab.evaluate((from) => window.__shifts.filter((shift) => shift.at >= from).map((shift) => shift.text), handover);
-        const after = await shots(tab, selectors);
         assert.equal(await tab.textContent("#readout"), readout, "the HTML's readout is the live one at rest");
         for (const [i, selector] of selectors.entries()) {
           const difference = await compare(tab, before[i], after[i], { slack: 1 });

@@ -41,9 +41,23 @@ const predicted = (epsilon) => Math.log(Math.tan(Math.PI / 6) / Math.tan(Math.as
 
 test("the tour draws every figure and quotes MATH.md's values; the clock starts only as a moving figure is reached", async () => {
   const { page, context, problems } = await open("learn.html");
+  // A figure far down the tour is not set up at load: its canvas is blank behind its first
+  // picture; scrolled to, it is drawn.
+  const painted = (selector) => page.evaluate((selector) => {
+    const canvas = /** @type {HTMLCanvasElement} */ (document.querySelector(selector));
+    const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
+    return data.some((value, i) => i % 4 === 3 && value > 0);
+  }, selector);
+  await page.waitForTimeout(500);
+  assert.equal(await painted("#learn-drift"), false, "the drift figure drawn at load");
+  assert.equal(await page.locator("#learn-drift-first").count(), 1);
   for (const name of ["euler", "turn", "cover", "slerp"]) {
+    await page.locator(`#learn-${name}`).scrollIntoViewIfNeeded();
+    await page.waitForFunction((id) => !document.getElementById(`${id}-first`), `learn-${name}`, { timeout: 5000 });
     assert.ok((await canvasStats(page, `#learn-${name}`)).drawn > 2000, name);
   }
+  assert.equal(await painted("#learn-euler"), true);
+  await page.evaluate(() => scrollTo(0, 0));
   // The section of section 7: the paper's example, ε = 1e-5, δ = 0.01: T = 11.66 and T* = 11.6568.
   const steps = await text(page, "#steps-out");
   assert.match(steps, /stops after 1166 steps, at T = 11\.66; T\* = 11\.6568\./);
@@ -65,6 +79,7 @@ test("the tour draws every figure and quotes MATH.md's values; the clock starts 
   await page.waitForFunction(() => /At t = [1-9]/.test(document.querySelector("#phases-out").textContent), null, { timeout: 10000 });
   for (const name of ["phases", "lohe", "kli", "clock", "steps", "drift", "hopf", "rolled"]) {
     await page.locator(`#learn-${name}`).scrollIntoViewIfNeeded();
+    await page.waitForFunction((id) => !document.getElementById(`${id}-first`), `learn-${name}`, { timeout: 5000 });
     assert.ok((await canvasStats(page, `#learn-${name}`)).drawn > 2000, name);
   }
   // Paused at a time, the phases' R is the one computed here, and KLI's φ the closed form's.
@@ -179,6 +194,7 @@ test("WCAG 2.2 AA and 390 px, every control in words", async () => {
   assert.ok(await narrow.page.evaluate(() => document.documentElement.scrollWidth <= 390), "no horizontal scrolling");
   for (const name of ["euler", "cover", "hopf", "phases", "kli"]) {
     await narrow.page.locator(`#learn-${name}`).scrollIntoViewIfNeeded();
+    await narrow.page.waitForFunction((id) => !document.getElementById(`${id}-first`), `learn-${name}`, { timeout: 5000 });
     assert.ok((await canvasStats(narrow.page, `#learn-${name}`)).drawn > 1500, name);
   }
   assert.deepEqual(await axeViolations(narrow.page), []);

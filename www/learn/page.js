@@ -40,6 +40,12 @@ const WORDS = /** @type {Record<string, (value: number, state: LearnState) => st
   step: (v) => `h = ${v}`,
 });
 
+/** The views whose canvas is near the screen (within 400 px). A view far from it keeps its first
+ *  picture, which is that view at the tour's start, until it comes near: a long article sets up
+ *  only the figures a reader is about to see (twelve views drawn at load were most of the load's
+ *  work). Once the reader changes a control, the runtime draws every view again. */
+const near = new Set();
+
 /** @type {Page<LearnState, LearnDemo>} */
 const page = new Page({
   entry: registered("learn"),
@@ -63,6 +69,7 @@ const page = new Page({
   data: { file: (run) => `kli-tour-algorithm-1-eps-${run.summary.epsilon.toExponential(0)}` },
   file: (run, view, t) => `kli-tour-${view}${["phases", "lohe", "kli", "clock", "steps"].includes(view) ? `-t${t.toFixed(2)}` : ""}`,
   stride: () => 0.01,
+  waiting: (run, view) => !near.has(view),
   video: {
     views: ["kli", "clock"],
     title: () => "KLI: the paper's flow on the great circle, and its clock",
@@ -223,6 +230,24 @@ function words(/** @type {string} */ attribute, /** @type {number} */ value) {
   if (attribute === "wrong") return `${Math.round(value * 100)}% wrong`;
   if (attribute === "coupling") return `K = ${value}`;
   return `${attribute} ${value}`;
+}
+
+/** Each canvas that comes near the screen joins `near` and is drawn. */
+const nearing = new IntersectionObserver((entries) => {
+  const came = [];
+  for (const entry of entries) {
+    const view = /** @type {HTMLElement} */ (entry.target).dataset.view ?? "";
+    if (entry.isIntersecting && !near.has(view)) {
+      near.add(view);
+      came.push(view);
+    }
+  }
+  if (came.length && page.host.run) page.host.redraw(came);
+}, { rootMargin: "400px" });
+for (const [view, selector] of Object.entries(registered("learn").canvases)) {
+  const canvas = $(selector, HTMLCanvasElement);
+  canvas.dataset.view = view;
+  nearing.observe(canvas);
 }
 
 // The runtime plays a page as it opens; the tour's clock waits until a moving figure is in view.
