@@ -65,7 +65,7 @@ test("the tour draws every figure and quotes MATH.md's values; the clock starts 
   // A quarter turn about z: cos 45° + sin 45° k; the nose (x) goes to y (MATH.md's h(r) = (0, 1, 0) too).
   assert.equal(await text(page, "#turn-out"), "q = 0.707 + 0.000 i + 0.000 j + 0.707 k");
   assert.equal(await text(page, "#hopf-out"), "The nose points to (0.000, 1.000, 0.000); a wing to (−1.000, 0.000, 0.000).");
-  // The yaw and roll axes at pitch 40° are 90° − 40° apart.
+  // The yaw and bank axes at pitch 40° are 90° − 40° apart.
   assert.equal(await text(page, "#lock-out"), "50.0°");
   // Nothing plays while the moving figures are off screen.
   await page.waitForTimeout(800);
@@ -77,6 +77,19 @@ test("the tour draws every figure and quotes MATH.md's values; the clock starts 
   await page.locator("#learn-phases").scrollIntoViewIfNeeded();
   await page.waitForFunction(() => document.querySelector("#play").textContent === "Pause", null, { timeout: 5000 });
   await page.waitForFunction(() => /At t = [1-9]/.test(document.querySelector("#phases-out").textContent), null, { timeout: 10000 });
+  // Let section 6 run on, then come to section 7: the clock starts again from 0 there, so KLI's
+  // figure is seen in mid-flow (not at its end with φ = 0), and again each time another moving
+  // figure comes into view.
+  const shownTime = () => page.evaluate(() => Number(document.querySelector("#readout").textContent.match(/^t = ([\d.]+)/)[1]));
+  await page.waitForFunction(() => /At t = ([3-9]|1\d)\./.test(document.querySelector("#phases-out").textContent), null, { timeout: 15000 });
+  assert.ok((await shownTime()) >= 3);
+  await page.locator("#learn-kli").scrollIntoViewIfNeeded();
+  await page.waitForFunction(() => Number(document.querySelector("#kli-out").textContent.match(/^At t = ([\d.]+)/)[1]) < 1.5, null, { timeout: 3000 });
+  assert.ok((await shownTime()) < 2, `t = ${await shownTime()} in section 7`);
+  assert.equal(await text(page, "#play"), "Pause");
+  await page.waitForFunction(() => /At t = [1-9]/.test(document.querySelector("#kli-out").textContent), null, { timeout: 10000 });
+  await page.locator("#learn-phases").scrollIntoViewIfNeeded();
+  await page.waitForFunction(() => Number(document.querySelector("#phases-out").textContent.match(/^At t = ([\d.]+)/)[1]) < 1, null, { timeout: 3000 });
   for (const name of ["phases", "lohe", "kli", "clock", "steps", "drift", "hopf", "rolled"]) {
     await page.locator(`#learn-${name}`).scrollIntoViewIfNeeded();
     await page.waitForFunction((id) => !document.getElementById(`${id}-first`), `learn-${name}`, { timeout: 5000 });
@@ -118,11 +131,14 @@ test("an exercise opens, sets its figure, and its answer is the one the figure t
   assert.match(await text(page, "#steps-out"), new RegExp(`at T = 13\\.96; T\\* = ${want.toFixed(4)}\\.`));
   assert.equal(await page.inputValue("[name=digits]"), "6");
   assert.equal(await page.getAttribute("[name=digits]", "aria-valuetext"), "ε = 10⁻⁶");
+  // The clock (and the plots' axes) now run past that stop, to 15, so T and T* are on show.
+  assert.match(await text(page, "#readout"), / \/ 15\.00$/);
+  assert.equal(await page.getAttribute("#time", "max"), "15");
   // Halfway along the arc: φ = 30° at t = ln(tan 30° / tan 15°) = 0.768.
   const half = page.locator("details.exercise", { hasText: "halfway along the arc" });
   await half.locator("summary").click();
   await half.locator("a.set").click();
-  assert.equal(await text(page, "#readout"), "t = 0.77 / 12.00");
+  assert.equal(await text(page, "#readout"), "t = 0.77 / 15.00");
   assert.equal(Math.log(Math.tan(Math.PI / 6) / Math.tan(Math.PI / 12)).toFixed(3), "0.768");
   assert.match(await text(page, "#kli-out"), new RegExp(`^At t = 0\\.77, φ = ${phiDegrees(0.77).toFixed(2)}°, s = 0\\.50`));
   // Gimbal lock: the axes 0° apart; a full turn: q = −1; NLERP behind SLERP at s = 0.25.

@@ -2,7 +2,7 @@
 // The tour (learn.html): a descriptor for the page runtime (runtime.js) whose one run holds every
 // section's figure (crates/kli-demo/src/learn/), the text that quotes the figures' values as they
 // change, the exercises' links that set a figure to the state they ask about, the clock started
-// as a moving section comes into view (never with reduced motion), and the live figures of the
+// from 0 as each moving figure comes into view (never with reduced motion), and the live figures of the
 // other pages (<kli-figure>), loaded only as their section nears the screen.
 import * as learn from "../pkg/learn_demo.js";
 import { LearnDemo } from "../pkg/learn_demo.js";
@@ -168,16 +168,18 @@ function wireTour(/** @type {Host} */ host) {
   loadOtherFigures();
 }
 
-/** A section whose figures move starts the clock from 0 the first time it comes into view (each
- *  section its own start), unless the reader asked for reduced motion. */
+/** A moving figure (the phases, the swarm on S³, KLI) starts the clock from 0 each time it comes
+ *  into view after another of them was the last to start it, so the reader always meets it in
+ *  mid-flow (the shared clock would otherwise have run on, in the section before, to its end);
+ *  never with reduced motion. Coming back to the one that started last leaves the clock alone. */
 function startOnArrival(/** @type {Host} */ host) {
   if (Player.reducedMotion()) return;
-  const started = new Set();
+  /** @type {Element | null} */
+  let last = null;
   const observer = new IntersectionObserver((entries) => {
     for (const entry of entries) {
-      if (!entry.isIntersecting || started.has(entry.target)) continue;
-      started.add(entry.target);
-      observer.unobserve(entry.target);
+      if (!entry.isIntersecting || entry.target === last) continue;
+      last = entry.target;
       playFromStart(host);
     }
   }, { threshold: 0.6 });

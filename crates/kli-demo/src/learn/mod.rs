@@ -1,6 +1,7 @@
 //! The `LearnDemo` class: the tour's run (learn.html, "Rotations, from a turn to the Kuramoto
 //! flow"). One run holds every section's figure, each a view: the reader's controls are its
-//! options, and the tour's clock (0 to 12, past the paper's T = 11.66) moves the flows. What it
+//! options, and the tour's clock (0 to 12, past the paper's T = 11.66, or on past Algorithm 1's stop
+//! for a smaller ε) moves the flows. What it
 //! computes is `model`, its pictures `view`; this file is the class and the run contract.
 
 mod model;
@@ -22,7 +23,7 @@ use crate::figure::{Figure, Frame, Layer, Motion, Record, View, names};
 use crate::format::{Json, joined};
 use crate::pen::Pen;
 use crate::provenance::{Provenance, Value};
-use model::{Axis, END, Model, Options, in_plane, nlerp, paper_p, paper_r, plane, slerp};
+use model::{Axis, Model, Options, in_plane, nlerp, paper_p, paper_r, plane, slerp};
 
 /// Every section's figure for one setting of the reader's controls, the tour's clock, and the
 /// object's mesh.
@@ -59,7 +60,7 @@ export interface LearnDemoOptions {
 }
 /** What the tour's run sums up to: each section's figures' values at rest. */
 export interface LearnSummary {
-  /** Degrees between the yaw and roll axes: 90 − |pitch|. */
+  /** Degrees between the yaw and bank axes: 90 − |pitch|. */
   lockDegrees: number;
   /** The turn's quaternion [w, x, y, z]. */
   turn: number[];
@@ -93,8 +94,8 @@ impl LearnDemo {
     pub fn new(options: Option<LearnDemoOptions>) -> JsResult<LearnDemo> {
         let model = Model::new(read_options(options.map(JsValue::from))?)?;
         Ok(LearnDemo {
+            clock: Clock::new(0.0, model.end),
             model,
-            clock: Clock::new(0.0, END),
             mesh: aircraft(),
             summary: OnceCell::new(),
         })
@@ -103,7 +104,7 @@ impl LearnDemo {
     /// The values the tour's text quotes at time `t` (a non-finite `t` reads as 0).
     #[wasm_bindgen(unchecked_return_type = "LearnReadings")]
     pub fn readings(&self, t: f64) -> JsValue {
-        let t = crate::figure::finite(t).clamp(0.0, END);
+        let t = crate::figure::finite(t).clamp(0.0, self.model.end);
         let m = &self.model;
         let (order, _) = model::order(m.phases.at(t));
         let n = m.step_at(t);

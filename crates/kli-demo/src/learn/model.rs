@@ -8,7 +8,8 @@ use kli::closed_form::{angle_at, reach_time, time_warp};
 use kli::great_arc::GreatArc;
 use kli::{Integrator, KliError, KliOptions, KliPath, from_wxyz, hopf, kli};
 
-/// The tour's clock: every moving figure runs from 0 to this (past the paper's T = 11.66).
+/// The tour's clock runs from 0 to at least this (past the paper's T = 11.66); further when the
+/// reader's ε stops Algorithm 1 later ([`Model::end`]). The drift figure's runs end here.
 pub const END: f64 = 12.0;
 /// The Kuramoto and Lohe flows are sampled every `SAMPLE` units of time.
 pub const SAMPLE: f64 = 0.02;
@@ -158,7 +159,7 @@ pub fn nlerp(p: DQuat, r: DQuat, s: f64) -> DQuat {
 /// The Kuramoto model on the circle (Kuramoto 1975), `θᵢ′ = ωᵢ + (K/N) Σⱼ sin(θⱼ − θᵢ)`
 /// `= ωᵢ + K R sin(ψ − θᵢ)`, with `N` = [`PHASES`] natural frequencies evenly spread on
 /// `[−γ, γ]` and starting phases spread by the golden angle; RK4 with step `SAMPLE/2`, sampled
-/// every [`SAMPLE`] from 0 to [`END`].
+/// every [`SAMPLE`] from 0 to `end`.
 pub struct Phases {
     pub omega: Vec<f64>,
     /// `samples[k][i]`, phase `i` at time `k·SAMPLE`.
@@ -166,7 +167,7 @@ pub struct Phases {
 }
 
 impl Phases {
-    pub fn new(coupling: f64) -> Phases {
+    pub fn new(coupling: f64, end: f64) -> Phases {
         let n = PHASES;
         let omega: Vec<f64> =
             (0..n).map(|i| GAMMA * (2.0 * (i as f64 + 0.5) / n as f64 - 1.0)).collect();
@@ -178,7 +179,7 @@ impl Phases {
             theta.iter().zip(&omega).map(|(&t, &w)| w + coupling * r * (psi - t).sin()).collect()
         };
         let h = SAMPLE / 2.0;
-        let count = (END / SAMPLE).round() as usize;
+        let count = (end / SAMPLE).round() as usize;
         let mut samples = Vec::with_capacity(count + 1);
         samples.push(theta.clone());
         for _ in 0..count {
@@ -222,7 +223,7 @@ fn sample_index(t: f64, len: usize) -> usize {
 /// N = [`FOLLOWERS`] + 1 oscillators, all to all,
 /// `qᵢ′ = (K/N) Σⱼ (qⱼ − (qᵢ·qⱼ) qᵢ)` for each follower, the leader `r` fixed. With one follower
 /// this is KLI at time `Kt/2`. RK4 with step `SAMPLE/2`, each step put back on S³; sampled every
-/// [`SAMPLE`].
+/// [`SAMPLE`] from 0 to `end`.
 pub struct Swarm {
     pub leader: DQuat,
     /// `samples[k][i]`, follower `i` at time `k·SAMPLE`.
@@ -230,7 +231,7 @@ pub struct Swarm {
 }
 
 impl Swarm {
-    pub fn new(coupling: f64, leader: DQuat) -> Swarm {
+    pub fn new(coupling: f64, leader: DQuat, end: f64) -> Swarm {
         let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
         let mut q: Vec<DQuat> = (0..FOLLOWERS)
             .map(|i| {
@@ -248,7 +249,7 @@ impl Swarm {
             q.iter().map(|&x| (sum - x * x.dot(sum)) * (coupling / n)).collect()
         };
         let h = SAMPLE / 2.0;
-        let count = (END / SAMPLE).round() as usize;
+        let count = (end / SAMPLE).round() as usize;
         let mut samples = Vec::with_capacity(count + 1);
         samples.push(q.clone());
         for _ in 0..count {
@@ -325,6 +326,9 @@ pub struct Model {
     /// The great circle from the paper's `p` to `r`.
     pub arc: GreatArc,
     pub drifts: Vec<Drift>,
+    /// The end of the tour's clock: [`END`], or later if Algorithm 1 stops (or `T*` falls)
+    /// later, so that the stop and `T*` are on show: the first whole time past both by 0.25.
+    pub end: f64,
 }
 
 impl Model {
@@ -342,9 +346,12 @@ impl Model {
         })?;
         let arc = GreatArc::new(p, r, true)?;
         let drifts = Integrator::ALL.iter().map(|&i| Drift::new(i, p, r, options.step)).collect();
+        let predicted = reach_time(&arc, options.epsilon());
+        let end = END.max((path.final_time().max(predicted) + 0.25).ceil());
         Ok(Model {
-            phases: Phases::new(options.coupling),
-            swarm: Swarm::new(options.lohe, r),
+            phases: Phases::new(options.coupling, end),
+            swarm: Swarm::new(options.lohe, r, end),
+            end,
             path,
             arc,
             drifts,

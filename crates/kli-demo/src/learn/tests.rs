@@ -106,7 +106,7 @@ fn slerp_moves_evenly_and_nlerp_does_not() {
 
 #[test]
 fn uncoupled_phases_turn_at_their_own_rates_and_coupled_ones_fall_into_step() {
-    let free = Phases::new(0.0);
+    let free = Phases::new(0.0, END);
     let t = 7.0;
     let k = (t / SAMPLE).round() as usize;
     for i in 0..PHASES {
@@ -115,7 +115,7 @@ fn uncoupled_phases_turn_at_their_own_rates_and_coupled_ones_fall_into_step() {
     }
     assert!(free.omega.iter().all(|w| w.abs() <= GAMMA));
     // The critical coupling of a uniform spread on [−γ, γ] is 4γ/π ≈ 0.64: at K = 3 they lock.
-    let locked = Phases::new(3.0);
+    let locked = Phases::new(3.0, END);
     assert!(order(locked.at(END)).0 > 0.95, "{}", order(locked.at(END)).0);
     assert!(order(free.at(END)).0 < 0.5);
 }
@@ -123,14 +123,14 @@ fn uncoupled_phases_turn_at_their_own_rates_and_coupled_ones_fall_into_step() {
 #[test]
 fn the_swarm_stays_on_s3_and_reaches_its_pinned_leader() {
     let r = paper_r();
-    let swarm = Swarm::new(4.0, r);
+    let swarm = Swarm::new(4.0, r, END);
     assert!(swarm.spread(0.0) > 90.0);
     assert!(swarm.spread(END) < 2.0, "{}", swarm.spread(END));
     for q in swarm.at(END) {
         assert!(close(q.length(), 1.0, 1e-12));
     }
     // Uncoupled, nothing moves.
-    let still = Swarm::new(0.0, r);
+    let still = Swarm::new(0.0, r, END);
     for (a, b) in still.at(0.0).iter().zip(still.at(END)) {
         assert!((*a - *b).length() < 1e-13);
     }
@@ -157,4 +157,25 @@ fn the_options_are_checked_with_the_key_named() {
     assert!(big_t >= star && big_t < star + 0.1 + 1e-9, "{big_t} {star}");
     assert_eq!(model.step_at(0.35), 3);
     assert_eq!(model.step_at(1e9), model.path.steps());
+}
+
+#[test]
+fn the_clock_reaches_past_the_stop_for_every_epsilon() {
+    // The paper's ε = 1e-5: the clock ends at 12, past T = 11.66.
+    assert_eq!(Model::new(Options::default()).unwrap().end, END);
+    // One more digit: T = 13.96, so the clock (and the plots' axes) go on to 15.
+    for digits in 1..=10 {
+        let model = Model::new(Options { digits: digits as f64, ..Options::default() }).unwrap();
+        let (big_t, star) = (model.path.final_time(), model.predicted());
+        assert!(
+            model.end >= big_t.max(star) + 0.25,
+            "digits {digits}: {} {big_t} {star}",
+            model.end
+        );
+        assert!(model.end >= END && model.end == model.end.round());
+        assert!((model.phases.samples.len() - 1) as f64 * SAMPLE >= model.end - 1e-9);
+    }
+    let six = Model::new(Options { digits: 6.0, ..Options::default() }).unwrap();
+    assert!(close(six.path.final_time(), 13.96, 1e-9));
+    assert_eq!(six.end, 15.0);
 }

@@ -64,7 +64,7 @@ fn between_lines(pen: &Pen, (left, top, width, height): Rect) -> Rect {
 }
 
 /// Section 1: the object turned by yaw, pitch and bank, with the three gimbal axes; the yaw and
-/// roll axes meet at pitch ±90°.
+/// bank axes meet at pitch ±90°.
 pub fn draw_euler(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
     let o = &model.options;
     let rect = (0.0, 0.0, frame.width, frame.height);
@@ -74,16 +74,16 @@ pub fn draw_euler(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
     let at = |v: DVec3| viewport.pixel(camera.project(v));
     let axes = super::model::gimbal_axes(o.yaw, o.pitch);
     for (axis, color, label) in
-        [(axes[0], AXIS_Z, "yaw"), (axes[1], AXIS_Y, "pitch"), (axes[2], AXIS_X, "roll")]
+        [(axes[0], AXIS_Z, "yaw"), (axes[1], AXIS_Y, "pitch"), (axes[2], AXIS_X, "bank")]
     {
         pen.line(at(-axis * 1.45), at(axis * 1.45), color, 2.0, &[6.0, 4.0]);
         pen.text(label, at(axis * 1.6), color, 12.0, "center");
     }
     let apart = lock_angle(o.pitch);
     let text = if apart < 0.05 {
-        String::from("yaw and roll axes coincide: gimbal lock")
+        String::from("yaw and bank axes coincide: gimbal lock")
     } else {
-        format!("yaw and roll axes {}° apart", fixed(apart, 1))
+        format!("yaw and bank axes {}° apart", fixed(apart, 1))
     };
     caption(pen, rect, &text);
 }
@@ -327,7 +327,7 @@ pub fn draw_rolled(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
 }
 
 /// Section 6: the phases on the circle at `t`, coloured by natural frequency, the order parameter
-/// as an arrow; beside them, `R(t)` from 0 to `END`.
+/// as an arrow; beside them, `R(t)` from 0 to the clock's end.
 pub fn draw_phases(pen: &Pen, model: &Model, frame: &Frame) {
     let (w, h) = (frame.width, frame.height);
     let text = pen.text_scale();
@@ -355,7 +355,7 @@ pub fn draw_phases(pen: &Pen, model: &Model, frame: &Frame) {
         width: pw,
         height: ph,
         x_min: 0.0,
-        x_max: END,
+        x_max: model.end,
         y_min: 0.0,
         y_max: 1.0,
     };
@@ -459,17 +459,17 @@ pub fn draw_clock(pen: &Pen, model: &Model, frame: &Frame) {
         width: w,
         height: h,
         x_min: 0.0,
-        x_max: END,
+        x_max: model.end,
         y_min: 0.0,
         y_max: 1.0,
     };
     let ticks: Vec<(f64, String)> = [0.0, 0.5, 1.0].iter().map(|&y| (y, trim(y))).collect();
     panel.frame_with(pen, "how far along the arc: s", &ticks, "t");
-    let times: Vec<f64> = (0..=240).map(|k| k as f64 / 240.0 * END).collect();
+    let times: Vec<f64> = (0..=240).map(|k| k as f64 / 240.0 * model.end).collect();
     let big_t = model.path.final_time();
     panel.series(pen, &times, times.iter().map(|&x| (x / big_t).min(1.0)), SLERP, 1.5, &[5.0, 4.0]);
     panel.series(pen, &times, times.iter().map(|&x| model.warp(x)), KLI, 3.0, &[]);
-    let now = frame.t.clamp(0.0, END);
+    let now = frame.t.clamp(0.0, model.end);
     let (x, y) = panel.at(now, model.warp(now));
     pen.line((x, panel.top), (x, panel.top + panel.height), MUTED, 1.0, &[3.0, 3.0]);
     pen.disc((x, y), 5.0, Some(KLI), Some((INK, 1.5)));
@@ -488,8 +488,16 @@ pub fn draw_steps(pen: &Pen, model: &Model, frame: &Frame) {
     let r = model.path.target();
     let digits = model.options.digits;
     let y_min = -(digits + 1.0).ceil();
-    let panel =
-        Panel { left: l, top: t, width: w, height: h, x_min: 0.0, x_max: END, y_min, y_max: 0.5 };
+    let panel = Panel {
+        left: l,
+        top: t,
+        width: w,
+        height: h,
+        x_min: 0.0,
+        x_max: model.end,
+        y_min,
+        y_max: 0.5,
+    };
     let every = if digits > 6.0 { 2 } else { 1 };
     let ticks: Vec<(f64, String)> =
         decades(y_min as i32, 0, every).into_iter().map(|e| (e as f64, format!("1e{e}"))).collect();
@@ -505,10 +513,16 @@ pub fn draw_steps(pen: &Pen, model: &Model, frame: &Frame) {
         panel.series(pen, times, values.iter().copied(), KLI, 2.0, &[]);
     }
     let eps = -digits;
-    pen.line(panel.at(0.0, eps), panel.at(END, eps), INK, 1.0, &[5.0, 3.0]);
-    pen.text("ε", (panel.at(END, eps).0 + 6.0, panel.at(END, eps).1), INK, 12.0, "left");
+    pen.line(panel.at(0.0, eps), panel.at(model.end, eps), INK, 1.0, &[5.0, 3.0]);
+    pen.text(
+        "ε",
+        (panel.at(model.end, eps).0 + 6.0, panel.at(model.end, eps).1),
+        INK,
+        12.0,
+        "left",
+    );
     let (big_t, star) = (model.path.final_time(), model.predicted());
-    if big_t <= END {
+    if big_t <= model.end {
         let (x, _) = panel.at(big_t, 0.0);
         pen.line((x, panel.top), (x, panel.top + panel.height), INK, 1.5, &[]);
         pen.text(
@@ -519,7 +533,7 @@ pub fn draw_steps(pen: &Pen, model: &Model, frame: &Frame) {
             "right",
         );
     }
-    if star <= END {
+    if star <= model.end {
         let (x, _) = panel.at(star, 0.0);
         pen.line(
             (x, panel.top + 16.0 * text),
