@@ -20,6 +20,15 @@ pub(crate) struct Panel {
 }
 
 impl Panel {
+    /// The rectangle `(left, top, width, height)` showing `x` = `(min, max)` across and `y` up.
+    pub fn new(
+        (left, top, width, height): (f64, f64, f64, f64),
+        x: (f64, f64),
+        y: (f64, f64),
+    ) -> Self {
+        Panel { left, top, width, height, x_min: x.0, x_max: x.1, y_min: y.0, y_max: y.1 }
+    }
+
     pub fn at(&self, x: f64, y: f64) -> (f64, f64) {
         let span = self.x_max - self.x_min;
         let fx = if span > 0.0 { (x - self.x_min) / span } else { 0.0 };

@@ -349,16 +349,7 @@ pub fn draw_phases(pen: &Pen, model: &Model, frame: &Frame) {
     arrow(pen, plane.centre, plane.at(psi, r), INK, 2.5);
     caption(pen, left, &format!("t = {}   R = {}", fixed(frame.t, 2), fixed(r, 3)));
     let (l, t, pw, ph) = inset(right, text, 34.0);
-    let panel = Panel {
-        left: l,
-        top: t,
-        width: pw,
-        height: ph,
-        x_min: 0.0,
-        x_max: model.end,
-        y_min: 0.0,
-        y_max: 1.0,
-    };
+    let panel = Panel::new((l, t, pw, ph), (0.0, model.end), (0.0, 1.0));
     let ticks: Vec<(f64, String)> = [0.0, 0.5, 1.0].iter().map(|&y| (y, trim(y))).collect();
     panel.frame_with(pen, "R(t), the order parameter", &ticks, "t");
     let times: Vec<f64> = (0..phases.samples.len()).map(|k| k as f64 * SAMPLE).collect();
@@ -453,16 +444,7 @@ pub fn draw_kli(pen: &Pen, model: &Model, frame: &Frame) {
 pub fn draw_clock(pen: &Pen, model: &Model, frame: &Frame) {
     let text = pen.text_scale();
     let (l, t, w, h) = inset((0.0, 0.0, frame.width, frame.height), text, 40.0);
-    let panel = Panel {
-        left: l,
-        top: t,
-        width: w,
-        height: h,
-        x_min: 0.0,
-        x_max: model.end,
-        y_min: 0.0,
-        y_max: 1.0,
-    };
+    let panel = Panel::new((l, t, w, h), (0.0, model.end), (0.0, 1.0));
     let ticks: Vec<(f64, String)> = [0.0, 0.5, 1.0].iter().map(|&y| (y, trim(y))).collect();
     panel.frame_with(pen, "how far along the arc: s", &ticks, "t");
     let times: Vec<f64> = (0..=240).map(|k| k as f64 / 240.0 * model.end).collect();
@@ -488,16 +470,7 @@ pub fn draw_steps(pen: &Pen, model: &Model, frame: &Frame) {
     let r = model.path.target();
     let digits = model.options.digits;
     let y_min = -(digits + 1.0).ceil();
-    let panel = Panel {
-        left: l,
-        top: t,
-        width: w,
-        height: h,
-        x_min: 0.0,
-        x_max: model.end,
-        y_min,
-        y_max: 0.5,
-    };
+    let panel = Panel::new((l, t, w, h), (0.0, model.end), (y_min, 0.5));
     let every = if digits > 6.0 { 2 } else { 1 };
     let ticks: Vec<(f64, String)> =
         decades(y_min as i32, 0, every).into_iter().map(|e| (e as f64, format!("1e{e}"))).collect();
@@ -554,16 +527,7 @@ pub fn draw_steps(pen: &Pen, model: &Model, frame: &Frame) {
 pub fn draw_drift(pen: &Pen, model: &Model, frame: &Frame) {
     let text = pen.text_scale();
     let (l, t, w, h) = inset((0.0, 0.0, frame.width, frame.height), text, 46.0);
-    let panel = Panel {
-        left: l,
-        top: t,
-        width: w,
-        height: h,
-        x_min: 0.0,
-        x_max: END,
-        y_min: -17.0,
-        y_max: 0.0,
-    };
+    let panel = Panel::new((l, t, w, h), (0.0, END), (-17.0, 0.0));
     let ticks: Vec<(f64, String)> =
         decades(-16, 0, 4).into_iter().map(|e| (e as f64, format!("1e{e}"))).collect();
     panel.frame_with(pen, "| |q| − 1 |, the drift off S³", &ticks, "t");

@@ -4,7 +4,7 @@
 use crate::format::fixed;
 use crate::palette::{INK, KLI, MUTED, SLERP};
 use crate::pen::Pen;
-use crate::plots::{Panel, Rect, inset, plot_area, trim};
+use crate::plots::{Panel, inset, plot_area, trim};
 
 /// How many samples the history keeps (the oldest are dropped, so memory stays flat).
 pub const HISTORY: usize = 1500;
@@ -39,11 +39,6 @@ impl History {
     }
 }
 
-fn panel(area: Rect, x: (f64, f64), y: (f64, f64)) -> Panel {
-    let (left, top, width, height) = area;
-    Panel { left, top, width, height, x_min: x.0, x_max: x.1, y_min: y.0, y_max: y.1 }
-}
-
 fn ticks(values: &[f64]) -> Vec<(f64, String)> {
     values.iter().map(|&v| (v, trim(v))).collect()
 }
@@ -56,16 +51,16 @@ pub fn draw_history(pen: &Pen, width: f64, height: f64, history: &History) {
         _ => (0.0, 1.0),
     };
     let x = (first, last);
-    let order = panel(plot_area(0, width, height, pen.text_scale()), x, (0.0, 1.0));
+    let order = Panel::new(plot_area(0, width, height, pen.text_scale()), x, (0.0, 1.0));
     order.frame_with(pen, "order parameter R = |m|", &ticks(&[0.0, 0.25, 0.5, 0.75, 1.0]), "t");
     order.series(pen, &history.times, history.order.iter().copied(), KLI, 2.0, &[]);
-    let rotation = panel(plot_area(1, width, height, pen.text_scale()), x, (0.25, 1.0));
+    let rotation = Panel::new(plot_area(1, width, height, pen.text_scale()), x, (0.25, 1.0));
     rotation.frame_with(pen, "rotation order λmax(Q)", &ticks(&[0.25, 0.5, 0.75, 1.0]), "t");
     rotation.series(pen, &history.times, history.rotation.iter().copied(), SLERP, 2.0, &[]);
     let (low, high) =
         history.potential.iter().fold((0.0_f64, 0.0_f64), |(l, h), &v| (l.min(v), h.max(v)));
     let span = if high > low { high - low } else { 1.0 };
-    let potential = panel(plot_area(2, width, height, pen.text_scale()), x, (low, low + span));
+    let potential = Panel::new(plot_area(2, width, height, pen.text_scale()), x, (low, low + span));
     let labels =
         [low, low + 0.5 * span, low + span].map(|v| (v, fixed(v, if span < 10.0 { 2 } else { 0 })));
     potential.frame_with(pen, "potential (K N/2)|m|²", &labels, "t");
@@ -83,8 +78,11 @@ pub fn draw_sweep(
 ) {
     let (low, high) = couplings.iter().fold((current, current), |(l, h), &k| (l.min(k), h.max(k)));
     let (low, high) = if high > low { (low, high) } else { (low - 1.0, high + 1.0) };
-    let p =
-        panel(inset((0.0, 0.0, width, height), pen.text_scale(), 46.0), (low, high), (0.0, 1.0));
+    let p = Panel::new(
+        inset((0.0, 0.0, width, height), pen.text_scale(), 46.0),
+        (low, high),
+        (0.0, 1.0),
+    );
     p.frame_with(pen, "final R against the coupling K", &ticks(&[0.0, 0.5, 1.0]), "K");
     let n = couplings.len().min(orders.len());
     p.series(pen, &couplings[..n], orders[..n].iter().copied(), KLI, 2.0, &[]);

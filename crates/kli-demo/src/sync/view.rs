@@ -153,10 +153,6 @@ pub fn draw_objects(pen: &Pen, model: &Model, mesh: &[Face], (width, height): (f
     }
 }
 
-fn panel((left, top, width, height): (f64, f64, f64, f64), x: (f64, f64), y: (f64, f64)) -> Panel {
-    Panel { left, top, width, height, x_min: x.0, x_max: x.1, y_min: y.0, y_max: y.1 }
-}
-
 /// The flow's cost `f` (log) with the chordal optimum, and its median error to the truth with
 /// both solutions' errors: side by side when wide, stacked when narrow.
 pub fn draw_plots(pen: &Pen, model: &Model, (width, height): (f64, f64)) {
@@ -186,7 +182,7 @@ pub fn draw_plots(pen: &Pen, model: &Model, (width, height): (f64, f64)) {
         .log10()
         .ceil()
         .max(floor + 1.0);
-    let cost = panel(cell(0), x, (floor, high));
+    let cost = Panel::new(cell(0), x, (floor, high));
     let every = ((high - floor) / 4.0).ceil().max(1.0);
     let ticks: Vec<(f64, String)> = (0..=((high - floor) / every) as usize)
         .map(|k| floor + k as f64 * every)
@@ -225,7 +221,7 @@ pub fn draw_plots(pen: &Pen, model: &Model, (width, height): (f64, f64)) {
         .fold(lines.iter().fold(0.0_f64, |h, &(e, _)| h.max(e)), |h, &e| h.max(e.to_degrees()));
     let step = nice_step(1.1 * largest.max(0.5));
     let top = step * (1.1 * largest.max(0.5) / step).ceil();
-    let error = panel(cell(1), x, (0.0, top));
+    let error = Panel::new(cell(1), x, (0.0, top));
     let ticks: Vec<(f64, String)> =
         [0.0, 0.5 * top, top].iter().map(|&v| (v, format!("{}°", trim(v)))).collect();
     let title = "median error to the truth";
@@ -286,7 +282,7 @@ pub fn draw_sides(pen: &Pen, sides: &[Side], (width, height): (f64, f64)) {
         let (left, top, w, h) = inset((cl, ct + head, cw, ch - head), s, 40.0);
         let step = nice_step(most).max(1.0);
         let y_top = step * (most / step).ceil();
-        let p = panel((left, top, w, h), (0.0, 5.0), (0.0, y_top));
+        let p = Panel::new((left, top, w, h), (0.0, 5.0), (0.0, y_top));
         let ticks: Vec<(f64, String)> =
             [0.0, 0.5 * y_top, y_top].iter().map(|&v| (v, trim(v.round()))).collect();
         p.frame_y(pen, "edges by residual", &ticks);
