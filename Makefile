@@ -147,11 +147,14 @@ www/examples/vendor/.built: pkg/.built node_modules/.installed
 	@touch $@
 
 # Each page as one self-contained HTML file (scripts, style sheet and .wasm inlined) that works
-# opened from file:// with no server and no network: dist/single/<page>.html for every page.
+# opened from file:// with no server and no network: dist/single/<page>.html for every page;
+# then the teacher's kit, those pages and the tour's figures as SVG in one zip the site serves
+# (www/kli-teaching-kit.zip, linked from teach.html).
 single: www
 	node scripts/single.mjs
+	node scripts/kit.mjs
 
-demo: www
+demo: single
 	@echo "Serving the demo at http://127.0.0.1:$(PORT)/  (Ctrl-C to stop)"
 	python3 -m http.server $(PORT) --bind 127.0.0.1 --directory www
 

@@ -11,16 +11,19 @@
 import { createHash } from "node:crypto";
 import { existsSync, readFileSync, writeFileSync } from "node:fs";
 import { join, relative, resolve } from "node:path";
+import { pathToFileURL } from "node:url";
 import { EXAMPLES, MORE_LINKS, PAGES, bundle, script } from "../www/pages.js";
 import { LAYOUTS, pictureLinks, pictureSheet } from "./first-pictures.mjs";
+import { DOCUMENTS, documentPage } from "./documents.mjs";
 
 const www = new URL("../www/", import.meta.url).pathname;
 
-/** The pages' navigation as `page` shows it: every page of the registry, then the examples. */
+/** The pages' navigation as `page` (a page of the registry, or the address of another page at the
+ *  site's root) shows it: every page of the registry, then the other links. */
 function navigation(page) {
-  const links = PAGES.map((other) =>
-    `<a href="${other.html}"${other === page ? ' aria-current="page"' : ""}>${other.title}</a>`);
-  links.push(...MORE_LINKS.map((link) => `<a href="${link.href}">${link.title}</a>`));
+  const current = (/** @type {string} */ href) => (href === page?.html || href === page ? ' aria-current="page"' : "");
+  const links = PAGES.map((other) => `<a href="${other.html}"${current(other.html)}>${other.title}</a>`);
+  links.push(...MORE_LINKS.map((link) => `<a href="${link.href}"${current(link.href)}>${link.title}</a>`));
   return `<nav aria-label="Pages">${links.join(" · ")}</nav>`;
 }
 
@@ -30,7 +33,7 @@ function exampleNavigation(example) {
   const links = PAGES.map((page) => `<a href="../${page.html}">${page.title}</a>`);
   const more = MORE_LINKS.some((link) => link.href === example.href) ? MORE_LINKS : [...MORE_LINKS, example];
   links.push(...more.map((link) => {
-    const href = link.href.replace(/^examples\//, "");
+    const href = link.href.startsWith("examples/") ? link.href.slice("examples/".length) : `../${link.href}`;
     return `<a href="${href}"${link.href === example.href ? ' aria-current="page"' : ""}>${link.title}</a>`;
   }));
   return `<nav aria-label="Pages">${links.join(" · ")}</nav>`;
@@ -68,6 +71,24 @@ function piece(source, page, pattern, what) {
   return found;
 }
 
+/** The English text of each page whose text lives apart from its markup, in www/<name>/strings/en.js
+ *  (one file a language; the tour's): its `page`, each piece by key. */
+const STRINGS = Object.fromEntries(await Promise.all(PAGES.map(async (page) => {
+  const file = join(www, page.name, "strings", "en.js");
+  return [page.name, existsSync(file) ? (await import(pathToFileURL(file).href)).page : undefined];
+})));
+
+/** `source` with each `{{key}}` replaced by the page's English piece of that key (its script puts
+ *  another language's in place), or an Error naming a key the strings lack. */
+function filled(source, page) {
+  const strings = STRINGS[page.name];
+  if (!strings) return source;
+  return source.replace(/\{\{([\w.-]+)\}\}/g, (_, key) => {
+    if (!Object.hasOwn(strings, key)) throw new Error(`www/${page.name}/page.html: {{${key}}} is not in strings/en.js`);
+    return strings[key];
+  });
+}
+
 /**
  * A page's HTML at its address, `www/<html>`, from its folder: `page.html` (its <title>, its
  * description, then its body: the header, <main> with `<section id="save">` holding only its
@@ -80,7 +101,7 @@ function piece(source, page, pattern, what) {
  * largest contentful paint came 0.4–1.4 s later with it, on every page (2026-11-26).
  */
 export function compose(page) {
-  const source = readFileSync(join(www, page.name, "page.html"), "utf8");
+  const source = filled(readFileSync(join(www, page.name, "page.html"), "utf8"), page);
   const style = readFileSync(join(www, page.name, "style.css"), "utf8");
   const [title] = piece(source, page, /^<title>[^<]+<\/title>$/m, "no <title> on a line of its own");
   const [description] = piece(source, page, /^<meta name="description" content="[^"]+">$/m, 'no <meta name="description"> on a line of its own');
@@ -122,7 +143,7 @@ async function offlineFiles() {
   });
   const modules = Object.keys(element.metafile.inputs).map((input) => relative(www, resolve(input)));
   // The pages' worker (runtime/offload.js starts it as it is, unbundled).
-  const files = new Set(["style.css", "kli-figure.css", "vendor/codecs.js", "runtime/worker.js", ...modules]);
+  const files = new Set(["style.css", "kli-figure.css", "vendor/codecs.js", "runtime/worker.js", ...DOCUMENTS.map((doc) => doc.html), ...modules]);
   for (const page of PAGES) {
     files.add(page.html);
     files.add(bundle(page));
@@ -159,6 +180,13 @@ if (command === "names") {
     if (command === "write") writeFileSync(path, wanted);
     // Not written yet is no fault: `make www` writes them.
     if (command === "write" || existsSync(path)) stale.push(page.html);
+  }
+  for (const doc of DOCUMENTS) {
+    const wanted = documentPage(doc, navigation(doc.html));
+    const path = join(www, doc.html);
+    if (existsSync(path) && readFileSync(path, "utf8") === wanted) continue;
+    if (command === "write") writeFileSync(path, wanted);
+    if (command === "write" || existsSync(path)) stale.push(doc.html);
   }
   for (const example of EXAMPLES) {
     const wanted = composeExample(example);

@@ -7,6 +7,7 @@ import { build } from "esbuild";
 import { mkdir, readFile, writeFile } from "node:fs/promises";
 import { join } from "node:path";
 import { MORE_LINKS, PAGES, bundle as bundleOf, script as scriptOf } from "../www/pages.js";
+import { DOCUMENTS } from "./documents.mjs";
 import { LAYOUTS, pictureSheet } from "./first-pictures.mjs";
 
 const root = new URL("../", import.meta.url).pathname;
@@ -42,6 +43,28 @@ const otherPages = {
   },
 };
 
+/** The links of the navigation that lead out of the one-file pages removed: the examples (they need
+ *  the site's import map and vendored files) and the documents `make single` does not write. */
+function withoutOtherLinks(html, page) {
+  const kept = new Set(DOCUMENTS.filter((doc) => doc.single).map((doc) => doc.html));
+  for (const link of MORE_LINKS.filter((link) => !kept.has(link.href))) {
+    const before = html;
+    html = html.replace(` · <a href="${link.href}">${link.title}</a>`, "");
+    if (html === before) throw new Error(`${page}: no link to ${link.href} in its navigation`);
+  }
+  return html;
+}
+
+/** A document of the site (scripts/documents.mjs) with its style sheet inside. */
+async function singleDocument(doc) {
+  const css = await readFile(join(www, "style.css"), "utf8");
+  const html = (await readFile(join(www, doc.html), "utf8"))
+    .replace('<link rel="stylesheet" href="style.css">', () => `<style>\n${css}</style>`);
+  if (html.includes('href="style.css"')) throw new Error(`${doc.html}: its style sheet was not inlined`);
+  await writeFile(join(out, doc.html), withoutOtherLinks(html, doc.html));
+  return html.length;
+}
+
 /** The page's HTML with its style sheet and bundled script inside, and nothing to fetch. */
 async function single(entry) {
   const [page, script] = [entry.html, scriptOf(entry)];
@@ -67,8 +90,7 @@ async function single(entry) {
   replace(/^<link rel="(modulepreload|preload)"[^>]*>\n/gm, "");
   replace('<link rel="stylesheet" href="style.css">', () => `<style>\n${css}</style>`);
   replace(`<script type="module" src="${bundleOf(entry)}"></script>`, () => `<script type="module">\n${code}</script>`);
-  // The examples need the site's import map and vendored files: not part of the one-file pages.
-  for (const link of MORE_LINKS) replace(` · <a href="${link.href}">${link.title}</a>`, "");
+  html = withoutOtherLinks(html, page);
   // The first pictures' sheets (scripts/first-pictures.mjs) inside: their pictures are data:
   // addresses already.
   for (const layout of LAYOUTS) {
@@ -85,6 +107,7 @@ for (const page of PAGES) {
   const bytes = await single(page);
   console.log(`dist/single/${page.html}: ${bytes} bytes`);
 }
+for (const doc of DOCUMENTS.filter((doc) => doc.single)) console.log(`dist/single/${doc.html}: ${await singleDocument(doc)} bytes`);
 
 // <kli-figure> as one classic script with every page's module inside: `<script src="kli-figure.js">`
 // works in documentation sites and slide decks, and from file:// (where module scripts do not).

@@ -114,8 +114,13 @@ export const PAGES = [
   },
 ];
 
-/** Links in the pages' navigation after the pages: the examples. */
-export const MORE_LINKS = [{ href: "examples/three.html", title: "With three.js" }];
+/** Links in the pages' navigation after the pages: the site's documents (docs/*.md rendered by
+ *  scripts/documents.mjs) and the examples. */
+export const MORE_LINKS = [
+  { href: "math.html", title: "The mathematics" },
+  { href: "teach.html", title: "For teachers" },
+  { href: "examples/three.html", title: "With three.js" },
+];
 
 /** The example pages (www/examples/), each with the pages' navigation as the registry makes it
  *  (scripts/pages.mjs writes their `<nav>`): every page, the links after them, and the example

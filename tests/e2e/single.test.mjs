@@ -3,9 +3,9 @@
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
 import { existsSync } from "node:fs";
-import { copyFile, mkdtemp, writeFile } from "node:fs/promises";
+import { copyFile, mkdir, mkdtemp, readFile, writeFile } from "node:fs/promises";
 import { tmpdir } from "node:os";
-import { join } from "node:path";
+import { dirname, join } from "node:path";
 import { pathToFileURL } from "node:url";
 import { chromium } from "playwright-core";
 import { CHROMIUM } from "../../scripts/static-server.mjs";
@@ -16,13 +16,35 @@ let browser;
 before(async () => (browser = await chromium.launch(CHROMIUM)));
 after(async () => browser?.close());
 
-/** Non-blank pixels of each canvas on the page. */
-const drawn = (page) => page.evaluate(() => Array.from(document.querySelectorAll("canvas"), (canvas) => {
+/** Drawn pixels of each visible canvas on the page: painted (not transparent, as a canvas starts) and
+ *  not white. A figure that sets itself up as it nears the screen (the tour's) is scrolled to
+ *  first. */
+const drawn = async (page) => {
+  // Not a figure hidden until it has something to show (the synchronisation page's own file).
+  const ids = await page.evaluate(() => Array.from(document.querySelectorAll("canvas"))
+    .filter((canvas) => canvas.checkVisibility()).map((canvas) => canvas.id));
+  const counts = [];
+  for (const id of ids) {
+    await page.locator(`canvas#${id}`).scrollIntoViewIfNeeded();
+    await page.waitForFunction((id) => {
+      const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById(id));
+      const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
+      for (let i = 0; i < data.length; i += 4) if (data[i + 3] > 0 && (data[i] < 250 || data[i + 1] < 250 || data[i + 2] < 250)) return true;
+      return false;
+    }, id, { timeout: 5000 }).catch(() => {});
+    counts.push({ id, count: await page.evaluate(paint, id) });
+  }
+  return counts;
+};
+
+/** The painted, non-white pixels of the canvas `id`. */
+const paint = (/** @type {string} */ id) => {
+  const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById(id));
   const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
   let count = 0;
-  for (let i = 0; i < data.length; i += 4) if (data[i] < 250 || data[i + 1] < 250 || data[i + 2] < 250) count++;
-  return { id: canvas.id, count };
-}));
+  for (let i = 0; i < data.length; i += 4) if (data[i + 3] > 0 && (data[i] < 250 || data[i + 1] < 250 || data[i + 2] < 250)) count++;
+  return count;
+};
 
 for (const { html: name } of PAGES) {
   test(`dist/single/${name} works from file:// with no server and no network`, async () => {
@@ -66,7 +88,8 @@ test("dist/single/kli-figure.js: one classic script, the element with every modu
     <title>note</title><script src="kli-figure.js"></script></head><body>
     <p>KLI on S²:</p><kli-figure view="hopf" style="width: 320px"></kli-figure>
     <p>A swarm:</p><kli-figure view="swarm" count="60" t="2" style="width: 320px"></kli-figure>
-    <p>Keys:</p><kli-figure view="keyframes" style="width: 320px"></kli-figure></body></html>`);
+    <p>Keys:</p><kli-figure view="keyframes" style="width: 320px"></kli-figure>
+    <p>The tour's SLERP, as teach.html shows it:</p><kli-figure view="slerp" s="0.25" style="width: 320px"></kli-figure></body></html>`);
   const context = await browser.newContext();
   const page = await context.newPage();
   const problems = [];
@@ -81,11 +104,54 @@ test("dist/single/kli-figure.js: one classic script, the element with every modu
       const canvas = f.shadowRoot.querySelector("canvas");
       const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
       let count = 0;
-      for (let i = 0; i < data.length; i += 4) if (data[i] < 250 || data[i + 1] < 250 || data[i + 2] < 250) count++;
+      for (let i = 0; i < data.length; i += 4) if (data[i + 3] > 0 && (data[i] < 250 || data[i + 1] < 250 || data[i + 2] < 250)) count++;
       return count;
     }));
     drawn.forEach((count, i) => assert.ok(count > 1000, `figure ${i} is blank`));
     assert.ok(await page.evaluate(() => Math.abs(document.querySelector("kli-figure").end - 11.66) < 1e-9));
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test("the teacher's kit: one zip with every one-file page, the mathematics, the tour's figures as SVG and the element; its tour works from file://", async () => {
+  const { unzipSync, strFromU8 } = await import("fflate");
+  const zip = join(root, "www/kli-teaching-kit.zip");
+  assert.ok(existsSync(zip), `${zip} is missing: run make single`);
+  const files = unzipSync(await readFile(zip));
+  const names = Object.keys(files).map((name) => name.replace(/^kli-teaching-kit\//, ""));
+  for (const { html } of PAGES) {
+    assert.ok(names.includes(`pages/${html}`), `the kit has no pages/${html}`);
+    // The one-file pages themselves (the tests above open each).
+    assert.ok(Buffer.from(files[`kli-teaching-kit/pages/${html}`]).equals(await readFile(join(root, "dist/single", html))), `pages/${html} is not make single's`);
+  }
+  for (const name of ["pages/math.html", "element/kli-figure.js", "element/kli-figure.css", "README.txt"]) assert.ok(names.includes(name), `the kit has no ${name}`);
+  const tour = PAGES.find((page) => page.name === "learn");
+  for (const view of Object.keys(tour.canvases)) {
+    const svg = strFromU8(files[`kli-teaching-kit/figures/tour-${view}.svg`] ?? new Uint8Array());
+    assert.match(svg, /^<svg[^>]*width="1200"[^>]*height="900"/, `figures/tour-${view}.svg is not the tour's ${view} figure at 1200 × 900`);
+    assert.ok((svg.match(/<(?:path|polygon|polyline|line|circle|ellipse|text)\b/g) ?? []).length >= 10, `figures/tour-${view}.svg draws almost nothing`);
+  }
+  // Unzipped on a disk: the mathematics reads with its style inside; the tour draws its figures.
+  const dir = await mkdtemp(join(tmpdir(), "kli-kit-"));
+  for (const [name, bytes] of Object.entries(files)) {
+    await mkdir(dirname(join(dir, name)), { recursive: true });
+    await writeFile(join(dir, name), bytes);
+  }
+  const context = await browser.newContext({ viewport: { width: 390, height: 800 } });
+  const page = await context.newPage();
+  const problems = [];
+  const folder = pathToFileURL(join(dir, "kli-teaching-kit/pages/")).href;
+  await context.route("**/*", (route) => (route.request().url().startsWith(folder) ? route.continue() : (problems.push(route.request().url()), route.abort())));
+  page.on("pageerror", (e) => problems.push(`pageerror: ${e.message}`));
+  try {
+    await page.goto(`${folder}math.html`);
+    // The site's style sheet is inside (its header rule: at most 1200 px wide).
+    assert.equal(await page.evaluate(() => getComputedStyle(document.querySelector(".page-header")).maxWidth), "1200px");
+    await page.click('a[href="learn.html"] >> nth=0');
+    await page.waitForFunction(() => document.querySelector("#load-status")?.hidden, null, { timeout: 10000 });
+    for (const { id, count } of await drawn(page)) assert.ok(count > 100, `the kit's learn.html: canvas #${id} is blank`);
     assert.deepEqual(problems, []);
   } finally {
     await context.close();
