@@ -133,7 +133,8 @@ www/vendor/codecs.js: www/runtime/video/codecs.js node_modules/.installed
 
 # What the examples import by name through their import map, served locally: the package's
 # kli, kli/spline, kli/average and kli/three (which imports both); three.js as one minified
-# module with its source map, as an app's bundler would serve it; reveal.js for the example deck (examples/slides.html).
+# module with its source map, as an app's bundler would serve it; reveal.js and its speaker-notes
+# plugin for the example deck (examples/slides.html).
 www/examples/vendor/.built: pkg/.built node_modules/.installed
 	rm -rf www/examples/vendor
 	mkdir -p www/examples/vendor/kli www/examples/vendor/three www/examples/vendor/reveal/theme
@@ -142,6 +143,7 @@ www/examples/vendor/.built: pkg/.built node_modules/.installed
 	esbuild node_modules/three/build/three.module.js --bundle --format=esm --minify --sourcemap \
 	  --log-level=warning --outfile=www/examples/vendor/three/three.module.js
 	cp node_modules/reveal.js/dist/reveal.mjs www/examples/vendor/reveal/reveal.module.js
+	cp node_modules/reveal.js/dist/plugin/notes.mjs www/examples/vendor/reveal/notes.module.js
 	cp node_modules/reveal.js/dist/reveal.css www/examples/vendor/reveal/
 	cp node_modules/reveal.js/dist/theme/white.css www/examples/vendor/reveal/theme/
 	@touch $@

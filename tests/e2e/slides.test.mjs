@@ -1,5 +1,6 @@
 // The example deck (www/examples/slides.html): reveal.js from the dev dependencies, served
-// locally, three slides with <kli-figure>s. As a teacher uses it: a figure animates on its slide
+// locally, a lecture in the tour's order with a <kli-figure> and speaker notes on each slide. As a
+// teacher uses it: a figure animates on its slide
 // and stops off it, stays sharp when reveal.js scales the deck, and the deck's PDF (reveal.js's
 // print-pdf mode, printed by Chromium) holds the figures as vector paths, not images.
 import { test } from "node:test";
@@ -24,7 +25,7 @@ const figureReady = (page, id) => page.waitForFunction((id) => {
 }, id);
 
 test("a figure animates on its slide, stops off it, and is drawn at the pixels it covers when the deck scales", async () => {
-  const { page, context, problems } = await open("examples/slides.html#/1", { viewport: { width: 1500, height: 1000 } });
+  const { page, context, problems } = await open("examples/slides.html#/slide-hopf", { viewport: { width: 1500, height: 1000 } });
   try {
     await figureReady(page, "hopf");
     const first = await canvasHash(page, "hopf");
@@ -76,6 +77,43 @@ test("the deck's PDF holds the figures as vector paths and no images", async () 
       }
     }
     assert.ok(segments > 1000, `${segments} path segments`);
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test("the lecture: every slide has speaker notes, the notes plugin is on, and every figure draws on its slide", async () => {
+  const { page, context, problems } = await open("examples/slides.html", { viewport: { width: 1280, height: 900 } });
+  try {
+    await page.waitForFunction(() => window.Reveal?.isReady?.());
+    const slides = await page.evaluate(() => Array.from(document.querySelectorAll(".slides > section"), (section) => ({
+      notes: section.querySelector("aside.notes")?.textContent.trim().length ?? 0,
+      figures: Array.from(section.querySelectorAll("kli-figure"), (figure) => figure.id),
+    })));
+    assert.ok(slides.length >= 15, `${slides.length} slides: a lecture follows the tour`);
+    slides.forEach(({ notes }, i) => assert.ok(notes > 80, `slide ${i} has no speaker notes`));
+    assert.ok(await page.evaluate(() => Boolean(window.Reveal.getPlugin("notes"))), "the speaker notes plugin is registered (S opens them)");
+    // The tour's views, each drawn: painted, non-white pixels in its canvas once its slide shows.
+    for (const [index, { figures }] of slides.entries()) {
+      if (figures.length === 0) continue;
+      await page.evaluate((index) => window.Reveal.slide(index), index);
+      for (const id of figures) {
+        // A refused attribute is written in the figure (and the figure never gets a run).
+        const refused = await page.waitForFunction((id) => document.getElementById(id).message?.textContent || document.getElementById(id).run,
+          id, { timeout: 10000 }).then(() => page.evaluate((id) => document.getElementById(id).message?.textContent ?? "", id));
+        assert.equal(refused, "", `slide ${index}: the figure #${id} refused an attribute`);
+        await figureReady(page, id);
+        const painted = await page.waitForFunction((id) => {
+          const canvas = document.getElementById(id).shadowRoot.querySelector("canvas");
+          const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
+          let count = 0;
+          for (let i = 0; i < data.length; i += 4) if (data[i + 3] > 0 && (data[i] < 250 || data[i + 1] < 250 || data[i + 2] < 250)) count++;
+          return count > 2000 && count;
+        }, id, { timeout: 10000 }).then((handle) => handle.jsonValue(), () => 0);
+        assert.ok(painted > 2000, `slide ${index}: the figure #${id} is blank`);
+      }
+    }
     assert.deepEqual(problems, []);
   } finally {
     await context.close();
