@@ -11,6 +11,8 @@ import { EXAMPLES, MORE_LINKS, PAGES } from "../../www/pages.js";
 const www = new URL("../../www/", import.meta.url).pathname;
 const SITE = [...PAGES.map((page) => page.html), ...MORE_LINKS.map((link) => link.href),
   ...EXAMPLES.map((example) => example.href), "examples/slides.html"];
+/** Pages outside the navigation: one figure for an iframe (teach.html links it). */
+const FRAMES = ["figure/index.html"];
 
 /** Every `href` and `src` of `html`'s tags, outside scripts (whose text is code, not links; and
  *  markup shown as text, `&lt;script src=…`, is no tag). */
@@ -24,7 +26,7 @@ const ids = (/** @type {string} */ html) => new Set([...html.matchAll(/\s(?:id|n
 test("every page of the site is there, and every link on it names a file and a part that are", () => {
   const broken = [];
   let checked = 0;
-  for (const page of SITE) {
+  for (const page of [...SITE, ...FRAMES]) {
     const path = join(www, page);
     assert.ok(existsSync(path), `${page} is linked from the navigation but make www does not write it`);
     const html = readFileSync(path, "utf8");
@@ -39,6 +41,11 @@ test("every page of the site is there, and every link on it names a file and a p
         continue;
       }
       const isFolder = statSync(target).isDirectory();
+      // A folder is served as its index.html, as static hosts do.
+      if (isFolder && !existsSync(join(target, "index.html"))) {
+        broken.push(`${page}: ${address} (a folder with no index.html)`);
+        continue;
+      }
       if (part && !isFolder && target.endsWith(".html") && !ids(readFileSync(target, "utf8")).has(decodeURIComponent(part))) {
         broken.push(`${page}: ${address} (no id "${part}" there)`);
       }
