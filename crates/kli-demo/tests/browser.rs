@@ -465,3 +465,36 @@ fn no_two_labels_of_a_figure_overlap() {
     }
     assert!(overlaps.is_empty(), "labels overlap:\n{}", overlaps.join("\n"));
 }
+
+/// The averaging sphere names each of the four means beside a ring of its own colour, so that it
+/// reads alone (a <kli-figure>, a slide, its SVG), away from the page's bars that share the
+/// colours.
+#[wasm_bindgen_test]
+fn the_averaging_sphere_names_each_mean_in_its_own_colour() {
+    use js_sys::{Object, Reflect};
+    use kli_demo::AverageDemo;
+    use wasm_bindgen::JsValue;
+
+    let frame = Object::new();
+    for (key, value) in [("width", 800.0), ("height", 600.0)] {
+        Reflect::set(&frame, &key.into(), &value.into()).unwrap();
+    }
+    let svg = AverageDemo::new(None).unwrap().to_svg("hopf", &JsValue::from(frame)).unwrap();
+    assert!(!svg.contains("bars"), "the legend points to the page's bars");
+    let mut colours = Vec::new();
+    for label in
+        ["the chordal mean", "the quaternion mean", "the geodesic (Karcher) mean", "the median"]
+    {
+        let at =
+            svg.find(&format!(">{label}<")).unwrap_or_else(|| panic!("no legend entry {label:?}"));
+        // Its mark, drawn just before its text: a ring (a white disc with a coloured stroke).
+        let mark = &svg[svg[..at].rfind("<circle").expect("a mark before the label")..at];
+        let stroke =
+            mark.split("stroke=\"").nth(1).and_then(|s| s.split('"').next()).expect("a ring");
+        colours.push(stroke.to_string());
+    }
+    let mut distinct = colours.clone();
+    distinct.sort();
+    distinct.dedup();
+    assert_eq!(distinct.len(), 4, "the four means' rings share colours: {colours:?}");
+}

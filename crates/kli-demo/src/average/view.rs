@@ -3,6 +3,7 @@
 //! bar; and the sweep of the errors against the outlier share.
 
 use glam::DVec3;
+use kli::average::Method;
 use kli::hopf::hopf;
 
 use super::model::{Model, STYLES};
@@ -12,7 +13,7 @@ use crate::figure::{Frame, Layer};
 use crate::format::fixed;
 use crate::legend::{Entry, Mark, draw_legend};
 use crate::object_view::{draw_object, object_camera};
-use crate::palette::{GRID, INK, KLI, MUTED};
+use crate::palette::{GRID, INK, MUTED};
 use crate::pen::Pen;
 use crate::sphere_view::{Side, View, draw_globe, draw_grid_back, draw_grid_front, grid};
 use crate::sweep::{Curve, draw_error_sweep};
@@ -74,7 +75,16 @@ fn draw_still(view: &View, model: &Model) {
         pen.disc(view.at(p), 5.0, Some("#ffffff"), Some((style.colour, 2.5)));
     }
     pen.alpha(1.0);
-    let entries = [
+    // Each mean by its own ring: the figure stands alone (a <kli-figure>, a slide, its SVG), away
+    // from the page's bars that share the colours.
+    let names: Vec<String> = STYLES
+        .iter()
+        .map(|style| match style.method {
+            Method::Median => "the median".to_string(),
+            _ => format!("the {} mean", style.name),
+        })
+        .collect();
+    let mut entries = vec![
         Entry { mark: Mark::Disc(Some(DATUM), DATUM), label: "a measurement h(r_j)" },
         Entry {
             mark: Mark::Disc(Some(WILD), WILD),
@@ -83,11 +93,11 @@ fn draw_still(view: &View, model: &Model) {
         Entry {
             mark: Mark::Disc(Some(INK), INK), label: "★ the truth; ● the follower, from 1"
         },
-        Entry {
-            mark: Mark::Disc(Some("#ffffff"), KLI),
-            label: "the four means (colours as in the bars)",
-        },
     ];
+    entries.extend(STYLES.iter().zip(&names).map(|(style, name)| Entry {
+        mark: Mark::Disc(Some("#ffffff"), style.colour),
+        label: name,
+    }));
     draw_legend(pen, view.viewport, &entries, None);
 }
 
