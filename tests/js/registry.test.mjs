@@ -11,6 +11,7 @@ import { execFileSync } from "node:child_process";
 import { existsSync, readdirSync, readFileSync, statSync } from "node:fs";
 import { join } from "node:path";
 import { PAGES, script } from "../../www/pages.js";
+import { DOCUMENTS } from "../../scripts/documents.mjs";
 
 const root = new URL("../../", import.meta.url).pathname;
 const sorted = (/** @type {string[]} */ list) => [...list].sort();
@@ -34,8 +35,9 @@ test("every page on disk is in the registry, and every entry is on disk", () => 
     .filter((file) => file && !file.includes("/", "www/".length));
   assert.deepEqual(tracked, [], "www/*.html tracked by git");
   const html = readdirSync(join(root, "www")).filter((file) => file.endsWith(".html"));
-  const addresses = PAGES.map((page) => page.html);
-  assert.deepEqual(html.filter((file) => !addresses.includes(file)), [], "www/*.html that no page has as its address");
+  // The documents (docs/*.md rendered by scripts/documents.mjs) are the others written there.
+  const addresses = [...PAGES.map((page) => page.html), ...DOCUMENTS.map((doc) => doc.html)];
+  assert.deepEqual(html.filter((file) => !addresses.includes(file)), [], "www/*.html that no page or document has as its address");
   // crates/kli-demo/src/: a folder a page, named as the page.
   assert.deepEqual(sorted(folders("crates/kli-demo/src")), names, "crates/kli-demo/src/<name>/");
   // Its Cargo feature, `<name>-page`, and nothing else of that form.
