@@ -88,6 +88,7 @@ export class KliFigure extends HTMLElement {
   }
 
   connectedCallback() {
+    this.nameWhileLoading();
     this.intersection.observe(this);
     this.rebuild();
   }
@@ -103,7 +104,14 @@ export class KliFigure extends HTMLElement {
     this.run = null;
   }
 
+  /** Until its module has built the run (which names it by its title), the canvas says what it
+   *  will be: never an unnamed image. */
+  nameWhileLoading() {
+    if (!this.run) this.canvas.setAttribute("aria-label", this.getAttribute("label") ?? `A kli figure (${this.kind}), loading`);
+  }
+
   attributeChangedCallback() {
+    this.nameWhileLoading();
     if (this.isConnected) this.rebuild();
   }
 

@@ -79,3 +79,25 @@ test("the site's documents and the frame meet WCAG 2.2 AA (axe) and fit 390 px",
     }
   }
 });
+
+test("a figure is named for a screen reader while its module is still on its way", async () => {
+  let release = () => {};
+  const held = new Promise((resolve) => (release = resolve));
+  const { page, context, problems } = await open("figure/?view=slerp&title=SLERP", {
+    prepare: (context) => context.route(/learn_demo_bg\.wasm$/, async (route) => {
+      await held;
+      await route.continue();
+    }),
+  });
+  try {
+    await page.waitForFunction(() => document.querySelector("kli-figure")?.shadowRoot?.querySelector("canvas"));
+    assert.equal(await page.evaluate(() => document.querySelector("kli-figure").run), null, "the module is held back");
+    assert.equal(await page.evaluate(() => document.querySelector("kli-figure").shadowRoot.querySelector("canvas").getAttribute("aria-label")), "SLERP");
+    release();
+    assert.ok(await painted(page) > 2000);
+    assert.deepEqual(problems, []);
+  } finally {
+    release();
+    await context.close();
+  }
+});
