@@ -5,6 +5,9 @@
 //   figures/    every figure of the tour as SVG, drawn by its module in Node as the tour opens
 //               (the moving ones at t = 1, in mid-flow), 1200 × 900
 //   element/    <kli-figure> as one script and its style sheet, for a teacher's own HTML notes
+//   deck/       the lecture (www/examples/slides.html) with reveal.js and its notes plugin as
+//               classic scripts and the element's one-file script: module scripts do not load
+//               from file://, classic ones do
 //   README.txt  what is where, and how to open it
 // The figures are also written to dist/kit/figures/ to look at without unzipping.
 import { mkdirSync, readFileSync, readdirSync, writeFileSync } from "node:fs";
@@ -58,6 +61,8 @@ pages/swarm.html      the swarm: many rotations on S3 pulling on each other
 pages/average.html    averaging rotations
 pages/sync.html       synchronising rotations on a graph
 pages/math.html       the mathematics, checked
+deck/slides.html      the lecture: seventeen slides, a live figure on each; press S for the speaker
+                      notes, F for full screen; to print it, add ?print-pdf to its address and print
 figures/              every figure of the tour as SVG (vector: it scales to a poster and opens in
                       Inkscape, Illustrator, LibreOffice, PowerPoint or Keynote)
 element/              <kli-figure>: live figures in your own HTML notes, e.g.
@@ -72,6 +77,37 @@ The paper: Zinaid Kapic and Aladin Crnkic, "Interpolating Rotations with Non-abe
 Model on the 3-Sphere", University of Bihac.
 `;
 
+/** The lecture deck as it works from a disk: the site's deck (examples/slides.html) with its module
+ *  scripts swapped for classic ones beside it, and its links to the site's pages to the kit's. */
+function deck() {
+  let html = readFileSync(join(root, "www/examples/slides.html"), "utf8");
+  const swap = (/** @type {string | RegExp} */ from, /** @type {string} */ to) => {
+    const before = html;
+    html = html.replace(from, to);
+    if (html === before) throw new Error(`www/examples/slides.html: ${from} not found: the kit's deck needs it`);
+  };
+  swap('<link rel="stylesheet" href="vendor/reveal/reveal.css">', '<link rel="stylesheet" href="reveal/reveal.css">');
+  swap('<link rel="stylesheet" href="vendor/reveal/theme/white.css">', '<link rel="stylesheet" href="reveal/white.css">');
+  swap('<link rel="stylesheet" href="../kli-figure.css">', '<link rel="stylesheet" href="../element/kli-figure.css">');
+  swap('<script type="module" src="../kli-figure.js"></script>', '<script src="../element/kli-figure.js"></script>');
+  swap(/<script type="module">\n  import Reveal[^]*?<\/script>/, `<script src="reveal/reveal.js"></script>
+<script src="reveal/notes.js"></script>
+<script>
+  // S opens the speaker notes (each slide's <aside class="notes">) in a window of their own.
+  Reveal.initialize({ hash: true, width: 960, height: 700, transition: "none", plugins: [RevealNotes] });
+</script>`);
+  html = html.replace(/href="\.\.\/(learn|math)\.html/g, 'href="../pages/$1.html').replace(/href="\.\.\/teach\.html"/g, 'href="../README.txt"');
+  if (/href="\.\.\/(?!pages\/|element\/|README)/.test(html)) throw new Error("the kit's deck links a page the kit has not");
+  const reveal = join(root, "node_modules/reveal.js/dist");
+  return {
+    "deck/slides.html": strToU8(html),
+    "deck/reveal/reveal.js": readFileSync(join(reveal, "reveal.js")),
+    "deck/reveal/notes.js": readFileSync(join(reveal, "plugin/notes.js")),
+    "deck/reveal/reveal.css": readFileSync(join(reveal, "reveal.css")),
+    "deck/reveal/white.css": readFileSync(join(reveal, "theme/white.css")),
+  };
+}
+
 /** The kit's files, by their path in the zip. */
 async function kit() {
   /** @type {Record<string, Uint8Array>} */
@@ -79,6 +115,7 @@ async function kit() {
   const pages = [...PAGES.map((page) => page.html), "math.html"];
   for (const page of pages) files[`kli-teaching-kit/pages/${page}`] = readFileSync(join(single, page));
   for (const name of ["kli-figure.js", "kli-figure.css"]) files[`kli-teaching-kit/element/${name}`] = readFileSync(join(single, name));
+  for (const [name, bytes] of Object.entries(deck())) files[`kli-teaching-kit/${name}`] = bytes;
   const figures = await tourFigures();
   mkdirSync(join(root, "dist/kit/figures"), { recursive: true });
   for (const [name, svg] of Object.entries(figures)) {

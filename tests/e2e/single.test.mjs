@@ -115,7 +115,7 @@ test("dist/single/kli-figure.js: one classic script, the element with every modu
   }
 });
 
-test("the teacher's kit: one zip with every one-file page, the mathematics, the tour's figures as SVG and the element; its tour works from file://", async () => {
+test("the teacher's kit: one zip with every one-file page, the mathematics, the tour's figures as SVG, the element and the lecture; its tour and its deck work from file://", async () => {
   const { unzipSync, strFromU8 } = await import("fflate");
   const zip = join(root, "www/kli-teaching-kit.zip");
   assert.ok(existsSync(zip), `${zip} is missing: run make single`);
@@ -126,7 +126,8 @@ test("the teacher's kit: one zip with every one-file page, the mathematics, the 
     // The one-file pages themselves (the tests above open each).
     assert.ok(Buffer.from(files[`kli-teaching-kit/pages/${html}`]).equals(await readFile(join(root, "dist/single", html))), `pages/${html} is not make single's`);
   }
-  for (const name of ["pages/math.html", "element/kli-figure.js", "element/kli-figure.css", "README.txt"]) assert.ok(names.includes(name), `the kit has no ${name}`);
+  for (const name of ["pages/math.html", "element/kli-figure.js", "element/kli-figure.css", "README.txt", "deck/slides.html",
+    "deck/reveal/reveal.js", "deck/reveal/notes.js"]) assert.ok(names.includes(name), `the kit has no ${name}`);
   const tour = PAGES.find((page) => page.name === "learn");
   for (const view of Object.keys(tour.canvases)) {
     const svg = strFromU8(files[`kli-teaching-kit/figures/tour-${view}.svg`] ?? new Uint8Array());
@@ -142,16 +143,29 @@ test("the teacher's kit: one zip with every one-file page, the mathematics, the 
   const context = await browser.newContext({ viewport: { width: 390, height: 800 } });
   const page = await context.newPage();
   const problems = [];
-  const folder = pathToFileURL(join(dir, "kli-teaching-kit/pages/")).href;
+  const folder = pathToFileURL(join(dir, "kli-teaching-kit/")).href;
   await context.route("**/*", (route) => (route.request().url().startsWith(folder) ? route.continue() : (problems.push(route.request().url()), route.abort())));
   page.on("pageerror", (e) => problems.push(`pageerror: ${e.message}`));
   try {
-    await page.goto(`${folder}math.html`);
+    await page.goto(`${folder}pages/math.html`);
     // The site's style sheet is inside (its header rule: at most 1200 px wide).
     assert.equal(await page.evaluate(() => getComputedStyle(document.querySelector(".page-header")).maxWidth), "1200px");
     await page.click('a[href="learn.html"] >> nth=0');
     await page.waitForFunction(() => document.querySelector("#load-status")?.hidden, null, { timeout: 10000 });
     for (const { id, count } of await drawn(page)) assert.ok(count > 100, `the kit's learn.html: canvas #${id} is blank`);
+    // The lecture from the disk: reveal.js, its notes and the element as classic scripts; the
+    // first figure's slide shows it drawn.
+    await page.goto(pathToFileURL(join(dir, "kli-teaching-kit/deck/slides.html")).href + "#/slide-turn");
+    await page.waitForFunction(() => window.Reveal?.isReady?.() && window.Reveal.getPlugin("notes"), null, { timeout: 10000 });
+    const figure = await page.waitForFunction(() => {
+      const canvas = document.getElementById("turn")?.shadowRoot?.querySelector("canvas");
+      if (!canvas || canvas.width < 10) return 0;
+      const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
+      let count = 0;
+      for (let i = 0; i < data.length; i += 4) if (data[i + 3] > 0 && (data[i] < 250 || data[i + 1] < 250 || data[i + 2] < 250)) count++;
+      return count > 1000 && count;
+    }, null, { timeout: 10000 }).then((handle) => handle.jsonValue(), () => 0);
+    assert.ok(figure > 1000, "the kit's deck: the first figure is blank");
     assert.deepEqual(problems, []);
   } finally {
     await context.close();
