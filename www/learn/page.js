@@ -3,18 +3,21 @@
 // section's figure (crates/kli-demo/src/learn/), the text that quotes the figures' values as they
 // change, the exercises' links that set a figure to the state they ask about, the clock started
 // from 0 as each moving figure comes into view (never with reduced motion), and the live figures of the
-// other pages (<kli-figure>), loaded only as their section nears the screen.
+// other pages (<kli-figure>), loaded only as their section nears the screen. Its words are in
+// strings/ (en.js, bs.js: `?lang=bs`), put in place before the runtime reads the page.
 import * as learn from "../pkg/learn_demo.js";
 import { LearnDemo } from "../pkg/learn_demo.js";
 import { $ } from "../runtime/dom.js";
 import { page as registered } from "../pages.js";
 import { Player } from "../runtime/player.js";
 import { Page } from "../runtime/runtime.js";
+import { strings, translate } from "./strings/index.js";
 
 /** @typedef {import("./state.js").LearnState} LearnState */
 /** @typedef {import("../runtime/runtime.js").Host<LearnState, LearnDemo>} Host */
 
-const AXES = /** @type {Record<string, string>} */ ({ x: "x", y: "y", z: "z", diagonal: "the diagonal (1, 1, 1)" });
+const { live } = strings;
+translate(strings, registered("learn"));
 const SUPERSCRIPT = /** @type {Record<string, string>} */ ({ "-": "⁻", 0: "⁰", 1: "¹", 2: "²", 3: "³", 4: "⁴", 5: "⁵", 6: "⁶", 7: "⁷", 8: "⁸", 9: "⁹" });
 const power = (/** @type {number} */ digits) => `10${`-${digits}`.replace(/./g, (c) => SUPERSCRIPT[c] ?? c)}`;
 const fixed = (/** @type {number} */ x, /** @type {number} */ digits) => x.toFixed(digits).replace(/^-(?=0\.0*$)/, "").replace("-", "−");
@@ -25,14 +28,14 @@ const quaternion = (/** @type {ArrayLike<number>} */ q) => {
 };
 const vector = (/** @type {ArrayLike<number>} */ v) => `(${Array.from(v, (c) => fixed(Math.abs(c) < 5e-4 ? 0 : c, 3)).join(", ")})`;
 
-/** Each slider's value in words, beside it and for a screen reader (`aria-valuetext`). */
-const WORDS = /** @type {Record<string, (value: number, state: LearnState) => string>} */ ({
-  yaw: (v) => `${v}° yaw`,
-  pitch: (v) => `${v}° pitch`,
-  bank: (v) => `${v}° bank`,
-  angle: (v, state) => `${v}° about ${AXES[state.axis] ?? state.axis}`,
+/** Each slider's value in words (strings' `live.values`), beside it and for a screen reader (`aria-valuetext`). */
+const VALUES = /** @type {Record<string, (value: number, state: LearnState) => string>} */ ({
+  yaw: (v) => live.values.yaw(String(v)),
+  pitch: (v) => live.values.pitch(String(v)),
+  bank: (v) => live.values.bank(String(v)),
+  angle: (v, state) => live.values.angle(String(v), live.axes[/** @type {keyof typeof live.axes} */ (state.axis)] ?? state.axis),
   s: (v) => `s = ${v.toFixed(2)}`,
-  roll: (v) => `${v}° roll about the nose`,
+  roll: (v) => live.values.roll(String(v)),
   coupling: (v) => `K = ${v}`,
   lohe: (v) => `K = ${v}`,
   digits: (v) => `ε = ${power(v)}`,
@@ -50,6 +53,9 @@ const near = new Set();
 const page = new Page({
   entry: registered("learn"),
   module: learn,
+  // The words the module draws, from the strings (English or Bosnian).
+  create: (module, state) => new module.LearnDemo({ ...state, words: strings.canvas }),
+  words: strings.runtime,
   form: "#learn-inputs",
   readout: (run, t) => {
     quoteTime(run, t);
@@ -58,12 +64,13 @@ const page = new Page({
   labels: (run, t) => {
     const now = run.readings(t);
     const { finalTime, steps } = run.summary;
+    const at = t.toFixed(2);
     return {
-      phases: `Twenty Kuramoto phases on a circle at t = ${t.toFixed(2)}: order parameter R = ${now.order.toFixed(3)}.`,
-      lohe: `Eight followers on S³ flowing to the pinned leader at t = ${t.toFixed(2)}: the farthest is ${now.spreadDegrees.toFixed(1)}° from it.`,
-      kli: `KLI on the great circle from p to r at t = ${t.toFixed(2)}: φ = ${now.phiDegrees.toFixed(2)}°, the velocity is the tangent part of r.`,
-      clock: `KLI's progress along the arc against time: s = ${now.s.toFixed(3)} at t = ${t.toFixed(2)}, fast at first, then slow; SLERP's a straight line.`,
-      steps: `Algorithm 1's distance to r at each step on a log scale, a straight fall; ${steps} steps, stopping at T = ${finalTime.toFixed(2)}.`,
+      phases: live.labels.phases({ t: at, order: now.order.toFixed(3) }),
+      lohe: live.labels.lohe({ t: at, spread: now.spreadDegrees.toFixed(1) }),
+      kli: live.labels.kli({ t: at, phi: now.phiDegrees.toFixed(2) }),
+      clock: live.labels.clock({ t: at, s: now.s.toFixed(3) }),
+      steps: live.labels.steps({ steps: String(steps), T: finalTime.toFixed(2) }),
     };
   },
   data: { file: (run) => `kli-tour-algorithm-1-eps-${run.summary.epsilon.toExponential(0)}` },
@@ -72,7 +79,7 @@ const page = new Page({
   waiting: (run, view) => !near.has(view),
   video: {
     views: ["kli", "clock"],
-    title: () => "KLI: the paper's flow on the great circle, and its clock",
+    title: () => live.video,
     file: () => "kli-tour-kli",
   },
   shown: (host, run, state) => {
@@ -90,7 +97,7 @@ const page = new Page({
 /** The sliders' values beside them, and in words for a screen reader. */
 function showValues(/** @type {Host} */ host) {
   const state = host.read();
-  for (const [name, words] of Object.entries(WORDS)) {
+  for (const [name, words] of Object.entries(VALUES)) {
     const field = host.field(name);
     const value = Number(field.value);
     const text = words(value, state);
@@ -106,29 +113,30 @@ function quoteSummary(/** @type {LearnDemo} */ run, /** @type {LearnState} */ st
   $("#turn-out", HTMLOutputElement).textContent = `q = ${quaternion(s.turn)}`;
   $("#cover-out", HTMLOutputElement).textContent = `θ = ${state.angle}°, q = ${quaternion(s.turn)}`;
   $("#slerp-out", HTMLOutputElement).textContent =
-    `At s = ${state.s.toFixed(2)} SLERP is ${s.slerpDegrees.toFixed(2)}° along the arc, NLERP ${s.nlerpDegrees.toFixed(2)}°.`;
-  $("#hopf-out", HTMLOutputElement).textContent = `The nose points to ${vector(s.nose)}; a wing to ${vector(s.wing)}.`;
+    live.slerp({ s: state.s.toFixed(2), slerp: s.slerpDegrees.toFixed(2), nlerp: s.nlerpDegrees.toFixed(2) });
+  $("#hopf-out", HTMLOutputElement).textContent = live.hopf({ nose: vector(s.nose), wing: vector(s.wing) });
   const d = s.drift;
   const e = (/** @type {number} */ x) => x.toExponential(1);
   $("#drift-out", HTMLOutputElement).textContent =
-    `The largest drift at h = ${state.step}: Euler ${e(d.euler)}, RK4 ${e(d.rk4)}, geodesic ${e(d.geodesic)}.`;
+    live.drift({ h: String(state.step), euler: e(d.euler), rk4: e(d.rk4), geodesic: e(d.geodesic) });
 }
 
 /** The values the text quotes that follow the clock. */
 function quoteTime(/** @type {LearnDemo} */ run, /** @type {number} */ t) {
   const now = run.readings(t);
   const s = run.summary;
-  const at = `At t = ${t.toFixed(2)}`;
-  $("#phases-out", HTMLOutputElement).textContent = `${at}, R = ${now.order.toFixed(3)}.`;
+  const at = t.toFixed(2);
+  $("#phases-out", HTMLOutputElement).textContent = live.phases({ t: at, order: now.order.toFixed(3) });
   $("#lohe-out", HTMLOutputElement).textContent =
-    `${at}, R = ${now.swarmOrder.toFixed(3)}; the farthest follower is a ${now.spreadDegrees.toFixed(1)}° turn from r.`;
+    live.lohe({ t: at, order: now.swarmOrder.toFixed(3), spread: now.spreadDegrees.toFixed(1) });
   $("#kli-out", HTMLOutputElement).textContent =
-    `${at}, φ = ${now.phiDegrees.toFixed(2)}°, s = ${now.s.toFixed(3)}: q = ${quaternion(now.q)}.`;
-  $("#steps-out", HTMLOutputElement).textContent =
-    `Step n = ${now.step} at t = ${now.stepTime.toFixed(2)}: ‖r − q‖ = ${now.distance.toExponential(2)}. ` +
-    `With ε = ${power(Math.round(-Math.log10(s.epsilon)))} and δ = ${page.host.state.delta} the loop stops after ${s.steps} steps, ` +
-    `at T = ${s.finalTime.toFixed(2)}; T* = ${s.predictedTime.toFixed(4)}.`;
-  $("#time", HTMLInputElement).setAttribute("aria-valuetext", `t = ${t.toFixed(2)} of ${run.span[1]}`);
+    live.kli({ t: at, phi: now.phiDegrees.toFixed(2), s: now.s.toFixed(3), q: quaternion(now.q) });
+  $("#steps-out", HTMLOutputElement).textContent = live.steps({
+    n: String(now.step), t: now.stepTime.toFixed(2), distance: now.distance.toExponential(2),
+    epsilon: power(Math.round(-Math.log10(s.epsilon))), delta: String(page.host.state.delta), steps: String(s.steps),
+    T: s.finalTime.toFixed(2), predicted: s.predictedTime.toFixed(4),
+  });
+  $("#time", HTMLInputElement).setAttribute("aria-valuetext", live.time(at, String(run.span[1])));
 }
 
 /** Plays the clock from 0 (a reader's press: reduced motion asks only that nothing starts by itself). */
@@ -228,10 +236,10 @@ function loadOtherFigures() {
 
 /** A figure control's value in words. */
 function words(/** @type {string} */ attribute, /** @type {number} */ value) {
-  if (attribute === "outliers") return `${Math.round(value * 100)}% wild`;
-  if (attribute === "wrong") return `${Math.round(value * 100)}% wrong`;
+  if (attribute === "outliers") return live.figures.outliers(String(Math.round(value * 100)));
+  if (attribute === "wrong") return live.figures.wrong(String(Math.round(value * 100)));
   if (attribute === "coupling") return `K = ${value}`;
-  return `${attribute} ${value}`;
+  return live.figures.smoothness(String(value));
 }
 
 /** Each canvas that comes near the screen joins `near` and is drawn. */

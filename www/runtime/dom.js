@@ -13,3 +13,14 @@ export function $(selector, type) {
   if (!(element instanceof type)) throw new Error(`the page has no ${type.name} ${selector}`);
   return element;
 }
+
+/**
+ * `english` in the page's language: its entry in `words` (a page's words, keyed by their English;
+ * none on an English page), each `{name}` filled from `values`.
+ * @param {Readonly<Record<string, string>> | undefined} words
+ * @param {string} english
+ * @param {Record<string, string | number>} [values]
+ */
+export function say(words, english, values = {}) {
+  return (words?.[english] ?? english).replace(/\{(\w+)\}/g, (all, name) => (Object.hasOwn(values, name) ? String(values[name]) : all));
+}

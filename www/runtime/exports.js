@@ -1,6 +1,7 @@
 // @ts-check
 // Saving what a page shows: a figure as PNG (twice the screen's resolution) or SVG (the module's
 // vector drawing), the numbers behind it as CSV or JSON. The drawing and the data are the module's.
+import { say } from "./dom.js";
 
 /**
  * Offers `content` as a file named `name`.
@@ -55,17 +56,18 @@ export async function saveAs(name, format, makers) {
  * @param {HTMLElement} container
  * @param {(what: string, format: string) => Promise<void> | void} save
  * @param {HTMLElement} status
+ * @param {Readonly<Record<string, string>>} [words] the page's words (dom.js `say`)
  */
-export function wireSaving(container, save, status) {
+export function wireSaving(container, save, status, words) {
   container.addEventListener("click", async (event) => {
     const button = /** @type {HTMLElement} */ (event.target).closest("button[data-save]");
     if (!(button instanceof HTMLButtonElement)) return;
     const { save: what = "", format = "" } = button.dataset;
     try {
       await save(what, format);
-      status.textContent = `Saved ${button.getAttribute("aria-label") ?? what}.`;
+      status.textContent = say(words, "Saved {what}.", { what: button.getAttribute("aria-label") ?? what });
     } catch (error) {
-      status.textContent = `Could not save: ${error instanceof Error ? error.message : error}`;
+      status.textContent = say(words, "Could not save: {error}", { error: error instanceof Error ? error.message : String(error) });
     }
   });
 }

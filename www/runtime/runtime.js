@@ -12,7 +12,7 @@
 // #save); `?text=1.5` scales the figures' text, `?print=1.8` the time the figures print at
 // (else the time on show), as SVG.
 import { Camera } from "./camera.js";
-import { $ } from "./dom.js";
+import { $, say } from "./dom.js";
 import { download, saveAs, wireSaving } from "./exports.js";
 import { Figures } from "./figures.js";
 import { wireDragging, wireKeyboard } from "./input.js";
@@ -92,6 +92,8 @@ import { videoPanel } from "./video/panel.js";
  *   dragging on the sphere that moves something
  * @property {{ views: readonly string[], title: (run: R) => string, file: (run: R) => string }} video the figures of the
  *   page's clip by default (the paper's video: object and Hopf sphere), its title line and its file name's stem
+ * @property {Readonly<Record<string, string>>} [words] the runtime's words in the page's language, by their English
+ *   (dom.js `say`; the tour's Bosnian): none, English
  */
 
 /**
@@ -138,13 +140,14 @@ function markFirstPictures() {
  * Loads the page's module; on failure says why in `status` and resolves to false.
  * @param {() => Promise<unknown>} init
  * @param {HTMLElement} status
+ * @param {Readonly<Record<string, string>>} [words] the page's words (dom.js `say`)
  */
-async function loadModule(init, status) {
+async function loadModule(init, status, words) {
   try {
     await init();
     return true;
   } catch (error) {
-    status.textContent = `The WebAssembly module could not be loaded: ${messageOf(error)}`;
+    status.textContent = say(words, "The WebAssembly module could not be loaded: {error}", { error: messageOf(error) });
     status.classList.add("error");
     return false;
   }
@@ -324,7 +327,9 @@ export class Page {
     if (this.ui.time) this.ui.time.value = String(this.t);
     this.ui.readout.textContent = this.lastReadout = this.d.readout(run, this.t);
     const paused = this.d.timeInUrl && !this.playing ? this.t.toFixed(2) : undefined;
-    this.writeUrl(this.schema.toUrl(this.state, { t: paused, embed: this.embed ? "1" : undefined }));
+    // `?lang=` (the tour's language) is kept as the page was opened with it.
+    const lang = this.query.get("lang") ?? undefined;
+    this.writeUrl(this.schema.toUrl(this.state, { t: paused, embed: this.embed ? "1" : undefined, lang }));
     if (this.playing) return;
     for (const [view, label] of Object.entries(this.d.labels?.(run, this.t) ?? {})) {
       this.figures.canvases[view]?.setAttribute("aria-label", label);
@@ -337,7 +342,7 @@ export class Page {
 
   /** The play button and the time's readouts follow the player. */
   playChanged() {
-    this.ui.play.textContent = this.playing ? "Pause" : "Play";
+    this.ui.play.textContent = say(this.d.words, this.playing ? "Pause" : "Play");
     this.showTime();
     // Paused, every view shows the time on show (playing, those off screen were left).
     if (!this.playing) this.requestDraw();
@@ -432,7 +437,7 @@ export class Page {
     });
     const speed = this.ui.speed;
     speed?.addEventListener("input", () => (this.player.speed = Number(speed.value)));
-    wireSaving($("#save", HTMLElement), (what, format) => this.save(what, format), $("#save-status", HTMLElement));
+    wireSaving($("#save", HTMLElement), (what, format) => this.save(what, format), $("#save-status", HTMLElement), this.d.words);
     const hopf = this.figures.canvases.hopf;
     const spanned = () => this.player.spanned;
     /** @type {import("./input.js").Actions} */
@@ -477,13 +482,13 @@ export class Page {
       chosen: this.d.video.views,
       title: () => (this.run ? this.d.video.title(this.run) : ""),
       file: () => (this.run ? this.d.video.file(this.run) : "kli"),
-    }, (name, blob) => download(name, blob.type, blob));
+    }, (name, blob) => download(name, blob.type, blob), this.d.words);
     const sizes = [["1", "normal"], ["1.5", "large (1.5×)"], ["2", "projector (2×)"], ["3", "hall (3×)"]];
     const label = Object.assign(document.createElement("label"), { className: "text-size" });
-    label.append("Text size ");
+    label.append(`${say(this.d.words, "Text size")} `);
     const select = document.createElement("select");
     select.name = "text-size";
-    select.innerHTML = sizes.map(([value, name]) => `<option value="${value}">${name}</option>`).join("");
+    select.innerHTML = sizes.map(([value, name]) => `<option value="${value}">${say(this.d.words, name)}</option>`).join("");
     label.append(select);
     const asked = parseNumber(this.query.get("text") ?? "1");
     this.figures.scaleText(asked);
@@ -506,7 +511,7 @@ export class Page {
    *  beside their fields (their text kept there, to mend) and the defaults stand in for them.
    *  True once the page is interactive; false when the module could not be loaded. */
   async start() {
-    if (!(await loadModule(this.d.module.default, this.ui.load))) {
+    if (!(await loadModule(this.d.module.default, this.ui.load, this.d.words))) {
       // The first pictures show the default state: where the URL asks for another, they go.
       const asked = [...this.s.schema.map((entry) => entry.url), "t"].some((key) => this.query.has(key));
       if (asked) document.querySelectorAll(".first-picture").forEach((picture) => picture.remove());
@@ -521,7 +526,8 @@ export class Page {
     // A number beyond its slider is refused here, as the slider would refuse it.
     const beyond = this.schema.outOfRange(candidate).map(({ key, min, max, value }) => {
       /** @type {Record<string, any>} */ (candidate)[key] = this.s.defaults[key];
-      return Object.assign(new Error(`${key} must be from ${min} to ${max} on this page, as its slider (got ${value})`),
+      const message = say(this.d.words, "{key} must be from {min} to {max} on this page, as its slider (got {value})", { key, min, max, value });
+      return Object.assign(new Error(message),
         { argument: key, kind: "out-of-range" });
     });
     const { run, state, errors } = buildAll(candidate, this.s.defaults, this.s.create, this.s.keyOf);

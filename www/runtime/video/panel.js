@@ -4,6 +4,7 @@
 // progress bar and Cancel. Formats this browser cannot encode are marked so and disabled.
 import { composeFrame } from "./compose.js";
 import { FORMATS, GIF_RATE, SIZES, encode, supported } from "./encode.js";
+import { say } from "../dom.js";
 
 /**
  * What a page gives its video panel.
@@ -97,27 +98,30 @@ export async function record(source, choice) {
  * @param {HTMLElement} container
  * @param {Source} source
  * @param {(name: string, blob: Blob) => void} download
+ * @param {Readonly<Record<string, string>>} [words] the page's words, by their English (dom.js `say`)
  */
-export function videoPanel(container, source, download) {
+export function videoPanel(container, source, download, words) {
+  const w = (/** @type {string} */ english, /** @type {Record<string, string | number>} */ values = {}) => say(words, english, values);
   const section = document.createElement("fieldset");
   section.className = "video";
   const spanned = source.player.spanned;
-  const views = source.views.map((view) => `<label><input type="checkbox" name="video-view" value="${view}"${source.chosen.includes(view) ? " checked" : ""}> ${view}</label>`).join(" ");
-  section.innerHTML = `<legend>Save a video</legend>
-    <p class="hint">Each frame drawn for its own time (not filmed from the screen): smooth on any machine. MP4 and WebM
-      play in PowerPoint, Keynote and Google Slides; GIF goes anywhere (${GIF_RATE} frames a second).</p>
+  const views = source.views.map((view) => `<label><input type="checkbox" name="video-view" value="${view}"${source.chosen.includes(view) ? " checked" : ""}> ${w(view)}</label>`).join(" ");
+  const hint = "Each frame drawn for its own time (not filmed from the screen): smooth on any machine. MP4 and WebM play in " +
+    "PowerPoint, Keynote and Google Slides; GIF goes anywhere ({rate} frames a second).";
+  section.innerHTML = `<legend>${w("Save a video")}</legend>
+    <p class="hint">${w(hint, { rate: GIF_RATE })}</p>
     <div class="video-choices">
-      <label>Format <select name="video-format">${Object.entries(FORMATS).map(([key, f]) => `<option value="${key}">${f.label}</option>`).join("")}</select></label>
-      <label>Size <select name="video-size">${Object.keys(SIZES).map((s) => `<option value="${s}"${s === "1080p" ? " selected" : ""}>${s}</option>`).join("")}</select></label>
-      <label>Frames a second <select name="video-fps"><option value="30">30</option><option value="60" selected>60</option></select></label>
-      ${spanned ? `<label>From t = <input name="video-from" type="number" step="any" min="0" inputmode="decimal"></label>
-      <label>to t = <input name="video-to" type="number" step="any" min="0" inputmode="decimal"></label>` : ""}
-      <label>Length, seconds <input name="video-seconds" type="number" step="any" min="0.1" max="600" value="" inputmode="decimal"></label>
+      <label>${w("Format")} <select name="video-format">${Object.entries(FORMATS).map(([key, f]) => `<option value="${key}">${w(f.label)}</option>`).join("")}</select></label>
+      <label>${w("Size")} <select name="video-size">${Object.keys(SIZES).map((s) => `<option value="${s}"${s === "1080p" ? " selected" : ""}>${s}</option>`).join("")}</select></label>
+      <label>${w("Frames a second")} <select name="video-fps"><option value="30">30</option><option value="60" selected>60</option></select></label>
+      ${spanned ? `<label>${w("From t =")} <input name="video-from" type="number" step="any" min="0" inputmode="decimal"></label>
+      <label>${w("to t =")} <input name="video-to" type="number" step="any" min="0" inputmode="decimal"></label>` : ""}
+      <label>${w("Length, seconds")} <input name="video-seconds" type="number" step="any" min="0.1" max="600" value="" inputmode="decimal"></label>
     </div>
-    <p class="video-views">Figures in the clip: ${views}</p>
-    <p><button type="button" class="video-start">Save video</button>
-      <button type="button" class="video-cancel" hidden>Cancel</button>
-      <progress class="video-progress" max="1" value="0" hidden aria-label="Video progress"></progress></p>
+    <p class="video-views">${w("Figures in the clip:")} ${views}</p>
+    <p><button type="button" class="video-start">${w("Save video")}</button>
+      <button type="button" class="video-cancel" hidden>${w("Cancel")}</button>
+      <progress class="video-progress" max="1" value="0" hidden aria-label="${w("Video progress")}"></progress></p>
     <p class="video-status" role="status" aria-live="polite"></p>`;
   container.append(section);
   const field = (/** @type {string} */ name) => /** @type {HTMLInputElement & HTMLSelectElement} */ (section.querySelector(`[name="${name}"]`));
@@ -140,7 +144,8 @@ export function videoPanel(container, source, download) {
     for (const option of field("video-format").options) {
       const key = /** @type {import("./encode.js").Format} */ (option.value);
       option.disabled = !can[key];
-      option.textContent = FORMATS[key].label + (can[key] ? "" : " (this browser cannot encode it)");
+      const label = w(FORMATS[key].label);
+      option.textContent = can[key] ? label : w("{format} (this browser cannot encode it)", { format: label });
     }
     if (field("video-format").selectedOptions[0]?.disabled) field("video-format").value = "gif";
   };
@@ -160,7 +165,7 @@ export function videoPanel(container, source, download) {
     };
     const problem = refusal(source, choice);
     if (problem) {
-      status.textContent = `Cannot save the video: ${problem}.`;
+      status.textContent = w("Cannot save the video: {problem}.", { problem });
       return;
     }
     running = new AbortController();
@@ -168,7 +173,7 @@ export function videoPanel(container, source, download) {
     cancel.hidden = false;
     bar.hidden = false;
     bar.value = 0;
-    status.textContent = "Encoding the video…";
+    status.textContent = w("Encoding the video…");
     const began = performance.now();
     try {
       const { blob, name, frames } = await record(source, {
@@ -176,10 +181,11 @@ export function videoPanel(container, source, download) {
       });
       download(name, blob);
       const took = ((performance.now() - began) / 1000).toFixed(1);
-      status.textContent = `Saved ${name}: ${frames} frames, ${(blob.size / 1e6).toFixed(1)} MB, encoded in ${took} s.`;
+      status.textContent = w("Saved {name}: {frames} frames, {size} MB, encoded in {took} s.",
+        { name, frames, size: (blob.size / 1e6).toFixed(1), took });
     } catch (error) {
       status.textContent = error instanceof DOMException && error.name === "AbortError"
-        ? "The video was cancelled." : `Could not save the video: ${error instanceof Error ? error.message : error}`;
+        ? w("The video was cancelled.") : w("Could not save the video: {error}", { error: error instanceof Error ? error.message : String(error) });
     } finally {
       running = null;
       start.disabled = false;

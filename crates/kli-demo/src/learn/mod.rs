@@ -6,6 +6,7 @@
 
 mod model;
 mod view;
+mod words;
 
 use std::cell::OnceCell;
 use std::str::FromStr;
@@ -24,6 +25,7 @@ use crate::format::{Json, joined};
 use crate::pen::Pen;
 use crate::provenance::{Provenance, Value};
 use model::{Axis, Model, Options, in_plane, nlerp, paper_p, paper_r, plane, slerp};
+use words::Words;
 
 /// Every section's figure for one setting of the reader's controls, the tour's clock, and the
 /// object's mesh.
@@ -57,6 +59,8 @@ export interface LearnDemoOptions {
   delta?: number;
   /** The integrator shown thick in the drift figure, "euler", "rk4" or "geodesic", and its step, 0.01 to 1. Defaults "euler", 0.5. */
   integrator?: string; step?: number;
+  /** The words the views draw, in the page's language, by key (www/learn/strings/en.js's `canvas`); English when absent. */
+  words?: Record<string, string>;
 }
 /** What the tour's run sums up to: each section's figures' values at rest. */
 export interface LearnSummary {
@@ -156,6 +160,7 @@ fn read_options(value: Option<JsValue>) -> Result<Options, KliError> {
         "delta",
         "integrator",
         "step",
+        "words",
     ];
     let mut o = Options::default();
     let Some(fields) = Fields::new(value, &keys, example)? else { return Ok(o) };
@@ -187,7 +192,33 @@ fn read_options(value: Option<JsValue>) -> Result<Options, KliError> {
     if let Some(name) = fields.name("integrator")? {
         o.integrator = Integrator::from_str(&name).map_err(|e| e.renamed("integrator"))?;
     }
+    if let Some(value) = fields.value("words")? {
+        o.words = read_words(&value)?;
+    }
     Ok(o)
+}
+
+/// The views' words from an object of strings by key (each optional: English stands in); an
+/// Error naming `words` for a value that is no string.
+fn read_words(value: &JsValue) -> Result<Words, KliError> {
+    if !value.is_object() {
+        return Err(KliError::invalid("words", "must be an object of strings by key"));
+    }
+    let mut words = Words::default();
+    for &key in Words::KEYS {
+        let word = js_sys::Reflect::get(value, &JsValue::from_str(key))
+            .map_err(|_| KliError::invalid("words", format!("cannot read \"{key}\"")))?;
+        if word.is_undefined() {
+            continue;
+        }
+        let text = word
+            .as_string()
+            .ok_or_else(|| KliError::invalid("words", format!("\"{key}\" must be a string")))?;
+        if let Some(slot) = words.slot(key) {
+            *slot = text;
+        }
+    }
+    Ok(words)
 }
 
 impl LearnDemo {

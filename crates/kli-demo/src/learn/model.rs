@@ -3,6 +3,7 @@
 //! circle, the Lohe model on S³ with a pinned leader, KLI and Algorithm 1, and the integrators'
 //! drift. Every formula is the paper's or docs/MATH.md's, named where it is used.
 
+use super::words::Words;
 use glam::{DQuat, DVec3};
 use kli::closed_form::{angle_at, reach_time, time_warp};
 use kli::great_arc::GreatArc;
@@ -84,6 +85,8 @@ pub struct Options {
     pub delta: f64,
     pub integrator: Integrator,
     pub step: f64,
+    /// The words the views draw (English unless the page gives its language's).
+    pub words: Words,
 }
 
 impl Default for Options {
@@ -102,6 +105,7 @@ impl Default for Options {
             delta: 0.01,
             integrator: Integrator::Euler,
             step: 0.5,
+            words: Words::default(),
         }
     }
 }

@@ -8,6 +8,7 @@ use kli::{Integrator, hopf};
 use super::model::{
     END, Model, SAMPLE, in_plane, lock_angle, nlerp, order, paper_p, paper_r, plane, slerp,
 };
+use super::words::{Words, fill};
 use crate::aircraft::Face;
 use crate::camera::Viewport;
 use crate::figure::Frame;
@@ -73,17 +74,20 @@ pub fn draw_euler(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
     let camera = object_camera();
     let at = |v: DVec3| viewport.pixel(camera.project(v));
     let axes = super::model::gimbal_axes(o.yaw, o.pitch);
-    for (axis, color, label) in
-        [(axes[0], AXIS_Z, "yaw"), (axes[1], AXIS_Y, "pitch"), (axes[2], AXIS_X, "bank")]
-    {
+    let words = &o.words;
+    for (axis, color, label) in [
+        (axes[0], AXIS_Z, words.yaw.as_str()),
+        (axes[1], AXIS_Y, words.pitch.as_str()),
+        (axes[2], AXIS_X, words.bank.as_str()),
+    ] {
         pen.line(at(-axis * 1.45), at(axis * 1.45), color, 2.0, &[6.0, 4.0]);
         pen.text(label, at(axis * 1.6), color, 12.0, "center");
     }
     let apart = lock_angle(o.pitch);
     let text = if apart < 0.05 {
-        String::from("yaw and bank axes coincide: gimbal lock")
+        words.locked.clone()
     } else {
-        format!("yaw and bank axes {}° apart", fixed(apart, 1))
+        fill(&words.apart, &[("angle", fixed(apart, 1).as_str())])
     };
     caption(pen, rect, &text);
 }
@@ -97,9 +101,14 @@ pub fn draw_turn(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
     let axis = model.options.axis.vector();
     let at = |v: DVec3| viewport.pixel(camera.project(v));
     pen.line(at(-axis * 1.6), at(axis * 1.6), INK, 1.5, &[3.0, 3.0]);
-    pen.text("axis", at(-axis * 1.72), INK, 12.0, "center");
     let o = &model.options;
-    caption(pen, rect, &format!("{}° about {}", trim(o.angle), o.axis.name()));
+    pen.text(&o.words.axis, at(-axis * 1.72), INK, 12.0, "center");
+    let name = if o.axis == super::model::Axis::Diagonal {
+        o.words.diagonal.as_str()
+    } else {
+        o.axis.name()
+    };
+    caption(pen, rect, &fill(&o.words.about, &[("angle", trim(o.angle).as_str()), ("axis", name)]));
     let line = format!("q = {}", quaternion_text(q));
     pen.text(&line, (8.0, frame.height - 10.0), MUTED, 12.0, "left");
 }
@@ -209,13 +218,14 @@ pub fn draw_cover(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
     };
     object(pen, a, mesh, q, true);
     object(pen, b, mesh, -q, true);
-    pen.text("turned by q", (a.0 + a.2 / 2.0, a.1 + a.3 - 6.0), MUTED, 12.0, "center");
-    pen.text("turned by −q", (b.0 + b.2 / 2.0, b.1 + b.3 - 6.0), MUTED, 12.0, "center");
     let o = &model.options;
+    pen.text(&o.words.turned_by, (a.0 + a.2 / 2.0, a.1 + a.3 - 6.0), MUTED, 12.0, "center");
+    pen.text(&o.words.turned_by_minus, (b.0 + b.2 / 2.0, b.1 + b.3 - 6.0), MUTED, 12.0, "center");
+    let (angle, half) = (trim(o.angle), trim(o.angle / 2.0));
     caption(
         pen,
         circle,
-        &format!("θ = {}°: q is {}° round the circle", trim(o.angle), trim(o.angle / 2.0)),
+        &fill(&o.words.circle, &[("angle", angle.as_str()), ("half", half.as_str())]),
     );
 }
 
@@ -248,16 +258,9 @@ pub fn draw_slerp(pen: &Pen, model: &Model, frame: &Frame) {
     pen.disc(plane.at(a, 1.0), 6.5, Some(SLERP), Some((INK, 1.5)));
     plane.label(pen, "p", 0.0, 1.13, INK);
     plane.label(pen, "r", end, 1.13, INK);
-    caption(
-        pen,
-        rect,
-        &format!(
-            "s = {}: SLERP {}° along, NLERP {}° (of 60°)",
-            fixed(s, 2),
-            fixed(a.to_degrees(), 1),
-            fixed(b.to_degrees(), 1)
-        ),
-    );
+    let (s, a, b) = (fixed(s, 2), fixed(a.to_degrees(), 1), fixed(b.to_degrees(), 1));
+    let values = [("s", s.as_str()), ("slerp", a.as_str()), ("nlerp", b.as_str())];
+    caption(pen, rect, &fill(&model.options.words.slerp, &values));
     let entries = [
         Entry { mark: Mark::Disc(Some(SLERP), INK), label: "SLERP" },
         Entry { mark: Mark::Disc(Some("#ffffff"), KLI), label: "NLERP" },
@@ -300,8 +303,9 @@ pub fn draw_hopf(pen: &Pen, model: &Model, frame: &Frame) {
         .collect();
     view.polyline_on(&ring, Side::Back, (AXIS_Y, 1.0, &[4.0, 3.0]));
     view.polyline_on(&ring, Side::Front, (AXIS_Y, 1.5, &[4.0, 3.0]));
+    let words = &model.options.words;
     for (point, fill, ring, label) in
-        [(wing, "#ffffff", AXIS_Y, "wing"), (nose, KLI, INK, "h(q): the nose")]
+        [(wing, "#ffffff", AXIS_Y, words.wing.as_str()), (nose, KLI, INK, words.nose.as_str())]
     {
         pen.alpha(if view.in_front(point) { 1.0 } else { 0.45 });
         let at = view.at(point);
@@ -323,7 +327,8 @@ pub fn vector_text(v: DVec3) -> String {
 pub fn draw_rolled(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
     let rect = (0.0, 0.0, frame.width, frame.height);
     object(pen, between_lines(pen, rect), mesh, model.rolled(), true);
-    caption(pen, rect, &format!("rolled {}° about its nose", trim(model.options.roll)));
+    let angle = trim(model.options.roll);
+    caption(pen, rect, &fill(&model.options.words.rolled, &[("angle", angle.as_str())]));
 }
 
 /// Section 6: the phases on the circle at `t`, coloured by natural frequency, the order parameter
@@ -351,7 +356,7 @@ pub fn draw_phases(pen: &Pen, model: &Model, frame: &Frame) {
     let (l, t, pw, ph) = inset(right, text, 34.0);
     let panel = Panel::new((l, t, pw, ph), (0.0, model.end), (0.0, 1.0));
     let ticks: Vec<(f64, String)> = [0.0, 0.5, 1.0].iter().map(|&y| (y, trim(y))).collect();
-    panel.frame_with(pen, "R(t), the order parameter", &ticks, "t");
+    panel.frame_with(pen, &model.options.words.order, &ticks, "t");
     let times: Vec<f64> = (0..phases.samples.len()).map(|k| k as f64 * SAMPLE).collect();
     panel.series(pen, &times, phases.samples.iter().map(|s| order(s).0), INK, 2.0, &[]);
     let (x, y) = panel.at(frame.t, r);
@@ -382,13 +387,16 @@ pub fn draw_lohe(pen: &Pen, model: &Model, frame: &Frame) {
     pen.alpha(if view.in_front(leader) { 1.0 } else { 0.45 });
     pen.disc(view.at(leader), 8.0, Some(KLI), Some((INK, 2.0)));
     let centre = view.at(DVec3::ZERO);
-    let place =
-        clear_place(pen, "h(r), pinned", (view.at(leader), centre), 20.0, 12.0, &mut labels);
-    pen.text("h(r), pinned", place, INK, 12.0, "center");
+    let pinned = &model.options.words.pinned;
+    let place = clear_place(pen, pinned, (view.at(leader), centre), 20.0, 12.0, &mut labels);
+    pen.text(pinned, place, INK, 12.0, "center");
     pen.alpha(1.0);
-    let text =
-        format!("t = {}   widest: {}° from r", fixed(frame.t, 2), fixed(swarm.spread(frame.t), 1));
-    footnote(pen, frame, &text);
+    let (t, widest) = (fixed(frame.t, 2), fixed(swarm.spread(frame.t), 1));
+    footnote(
+        pen,
+        frame,
+        &fill(&model.options.words.widest, &[("t", t.as_str()), ("angle", widest.as_str())]),
+    );
 }
 
 /// Section 7: the great circle through `p` and `r`, `q(t)` on it, `r` split at `q` into its part
@@ -446,7 +454,7 @@ pub fn draw_clock(pen: &Pen, model: &Model, frame: &Frame) {
     let (l, t, w, h) = inset((0.0, 0.0, frame.width, frame.height), text, 40.0);
     let panel = Panel::new((l, t, w, h), (0.0, model.end), (0.0, 1.0));
     let ticks: Vec<(f64, String)> = [0.0, 0.5, 1.0].iter().map(|&y| (y, trim(y))).collect();
-    panel.frame_with(pen, "how far along the arc: s", &ticks, "t");
+    panel.frame_with(pen, &model.options.words.along, &ticks, "t");
     let times: Vec<f64> = (0..=240).map(|k| k as f64 / 240.0 * model.end).collect();
     let big_t = model.path.final_time();
     panel.series(pen, &times, times.iter().map(|&x| (x / big_t).min(1.0)), SLERP, 1.5, &[5.0, 4.0]);
@@ -474,7 +482,7 @@ pub fn draw_steps(pen: &Pen, model: &Model, frame: &Frame) {
     let every = if digits > 6.0 { 2 } else { 1 };
     let ticks: Vec<(f64, String)> =
         decades(y_min as i32, 0, every).into_iter().map(|e| (e as f64, format!("1e{e}"))).collect();
-    panel.frame_with(pen, "‖r − qₙ‖ at each step", &ticks, "t");
+    panel.frame_with(pen, &model.options.words.steps, &ticks, "t");
     let distance = |q: DQuat| (r - q).length().max(1e-300).log10();
     let times = model.path.times();
     let values: Vec<f64> = model.path.quaternions().iter().map(|&q| distance(q)).collect();
@@ -530,11 +538,12 @@ pub fn draw_drift(pen: &Pen, model: &Model, frame: &Frame) {
     let panel = Panel::new((l, t, w, h), (0.0, END), (-17.0, 0.0));
     let ticks: Vec<(f64, String)> =
         decades(-16, 0, 4).into_iter().map(|e| (e as f64, format!("1e{e}"))).collect();
-    panel.frame_with(pen, "| |q| − 1 |, the drift off S³", &ticks, "t");
+    let words = &model.options.words;
+    panel.frame_with(pen, &words.drift, &ticks, "t");
     let mut entries = Vec::new();
     for drift in &model.drifts {
         let chosen = drift.integrator == model.options.integrator;
-        let (color, label) = integrator_style(drift.integrator);
+        let (color, label) = integrator_style(drift.integrator, words);
         let width = if chosen { 3.5 } else { 1.25 };
         let ys = drift.drift.iter().map(|&d| if d > 0.0 { d.log10().max(-17.0) } else { -17.0 });
         panel.series(pen, &drift.times, ys, color, width, &[]);
@@ -545,7 +554,8 @@ pub fn draw_drift(pen: &Pen, model: &Model, frame: &Frame) {
     if let Some(d) = chosen {
         let largest = d.largest();
         let text = if largest == 0.0 { String::from("0") } else { exponential(largest, 1) };
-        let line = format!("{}: largest drift {text}", integrator_style(d.integrator).1);
+        let name = integrator_style(d.integrator, words).1;
+        let line = fill(&words.largest, &[("integrator", name), ("drift", text.as_str())]);
         // Between the curves: Euler and RK4 have fallen below 1e-11 by then, the geodesic step
         // stays at rounding, below.
         pen.text(&line, (l + 0.3 * w, t + 0.8 * h), INK, 12.0, "left");
@@ -553,10 +563,10 @@ pub fn draw_drift(pen: &Pen, model: &Model, frame: &Frame) {
 }
 
 /// Each integrator's colour and name.
-pub fn integrator_style(integrator: Integrator) -> (&'static str, &'static str) {
+pub fn integrator_style(integrator: Integrator, words: &Words) -> (&'static str, &str) {
     match integrator {
         Integrator::Euler => (KLI, "Euler"),
         Integrator::Rk4 => (SLERP, "RK4"),
-        Integrator::Geodesic => (AXIS_Y, "geodesic"),
+        Integrator::Geodesic => (AXIS_Y, &words.geodesic),
     }
 }

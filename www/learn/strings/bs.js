@@ -1,0 +1,751 @@
+// @ts-check
+// Tekst vodiča na bosanskom (learn.html?lang=bs): isti ključevi kao en.js (tests/js/learn-strings.test.mjs),
+// isti markup, id-ovi i veze, prevedene samo riječi. Ijekavica, latinica; imena (SLERP, KLI, RK4, Lohe,
+// Kuramoto, Hopf), formule i kod ostaju kakvi jesu; naslovi radova objavljenih na engleskom ostaju na
+// engleskom (lang="en"), s prijevodom u zagradi gdje pomaže. Decimalna tačka kao u formulama i kodu.
+
+/** Svaki dio članka, po ključu iz page.html. */
+export const page = {
+  "title": "Rotacije, od okreta do Kuramotovog toka — vodič kroz kli",
+  "description": "Interaktivni vodič za studente: rotacije, kvaternioni, S³, SLERP, Hopfovo preslikavanje, Kuramotov model i KLI interpolacija Kapića i Crnkića, svaka ideja sa živom slikom i zadatkom.",
+  "languages.aria": "Jezik",
+  "header.h1": "Rotacije, od okreta do Kuramotovog toka",
+  "header.p1":
+    `Vodič za svakoga ko poznaje vektore i matrice, a još nije sreo kvaternion. Završava se metodom rada <a
+    href="#paper"><span lang="en">“Interpolating Rotations with Non-abelian Kuramoto Model on the 3-Sphere”</span></a>
+    (Interpolacija rotacija neabelovim Kuramotovim modelom na 3-sferi) autora Zinaida Kapića i Aladina Crnkića, koji
+    ova stranica implementira. Svaka slika je živa: pomjeri njen klizač i tekst pored nje navodi nove vrijednosti.
+    Slike koje se mijenjaju u vremenu dijele jedan sat, traku na dnu ekrana. Svaki odjeljak završava pitanjem:
+    predvidi odgovor, pa ga provjeri dugmetom u njemu.`,
+  "contents.item1": `<a href="#care">Zašto je s rotacijama potreban oprez</a>`,
+  "contents.item2": `<a href="#turn">Osa, ugao, četiri broja</a>`,
+  "contents.item3": `<a href="#cover">S³ i dvostruko natkrivanje</a>`,
+  "contents.item4": `<a href="#slerp">SLERP: veliki krug konstantnom brzinom</a>`,
+  "contents.item5": `<a href="#hopf">Hopfovo preslikavanje i valjanje koje ne može pokazati</a>`,
+  "contents.item6": `<a href="#kuramoto">Oscilatori koji se usklađuju</a>`,
+  "contents.item7": `<a href="#kli">KLI: tok iz rada</a>`,
+  "contents.item8": `<a href="#integrators">Integratori i odstupanje</a>`,
+  "contents.item9": `<a href="#many">Mnogo rotacija</a>`,
+  "contents.item10": `<a href="#glossary">Pojmovnik</a> · <a href="#paper">Literatura</a>`,
+  "care.title1": `<span class="number">1</span> Zašto je s rotacijama potreban oprez`,
+  "care.caption1":
+    `Avion zaokrenut za tri ugla, s tri ose oko kojih se uglovi okreću: skretanje (plavo), propinjanje (zeleno),
+    nagib (crveno, duž nosa).`,
+  "care.p1":
+    `Rotacija okreće svaki vektor oko ishodišta, čuvajući dužine i uglove. Na kursu o matricama uvodi se kao 3 × 3
+    <em>matrica rotacije</em> <var>R</var>: njene kolone su slike triju osa, a <var>R</var>ᵀ<var>R</var> =
+    <var>I</var>, det <var>R</var> = 1. To je devet brojeva povezanih sa šest jednačina, za samo tri stepena slobode.
+    Pomnoži ih nekoliko hiljada u aritmetici s pokretnim zarezom i zaokruživanje polako narušava jednačine; uzmi
+    prosjek dvije takve matrice element po element i rezultat uopšte nije rotacija: na pola puta između <var>I</var>
+    i poluokreta oko <var>z</var> je diag(0, 0, 1), koja spljošti ravan.`,
+  "care.p2":
+    `Onda tri broja? <dfn id="def-euler">Eulerovi uglovi</dfn> okreću oko <var>z</var> za skretanje, zatim oko nove
+    ose <var>y</var> za propinjanje, pa oko nove ose <var>x</var> (nosa) za nagib (piloti ovaj ugao zovu i valjanje;
+    ovaj vodič svuda kaže nagib): <var>R</var> = <var>R<sub>z</sub></var>(skretanje)
+    <var>R<sub>y</sub></var>(propinjanje) <var>R<sub>x</sub></var>(nagib). Pomjeri klizač propinjanja ispod prema 90° i
+    gledaj kako se osa skretanja i osa nagiba približavaju. Na 90° one su jedna prava: skretanje i nagib sada rade
+    isto i jedan stepen slobode je izgubljen. To je <dfn id="def-gimbal">blokada kardana</dfn> (engl. gimbal lock), i
+    nijedan izbor tri ugla je ne izbjegava svuda.`,
+  "care.legend1": "Eulerovi uglovi",
+  "care.p3":
+    `Sada su osa skretanja i osa nagiba razmaknute <output id="lock-out">50.0°</output> (ugao je 90° − |propinjanje|).`,
+  "care.p4":
+    `Šta bismo htjeli umjesto toga: malo brojeva, jedan jednostavan uslov, bez blokade, proizvod za izvođenje jednog
+    okreta za drugim i čist način da se ide <em>između</em> dvije rotacije. Kvaternioni daju sve to, i zato su ih
+    preuzeli simulatori letenja i računarska grafika, kako rad podsjeća u svom uvodu.`,
+  "care.question1": "Predvidi, pa provjeri: pri propinjanju od 90°, šta rade skretanje i nagib?",
+  "care.p5":
+    `Prvo pogodi. Zatim <a class="set" href="?pitch=90#care" data-state='{"pitch":90}'>postavi propinjanje na 90°</a>
+    i pomjeraj klizače skretanja i nagiba jedan za drugim.`,
+  "care.p6":
+    `<strong>Odgovor.</strong> Oba okreću avion oko iste vertikalne prave, a tekst pokazuje razmak od 0°. S nosom
+    usmjerenim pravo dolje (propinjanje od 90° prevodi <var>x</var> u −<var>z</var>), osa nagiba je osa skretanja,
+    pa se ta dva ugla računaju samo zajedno: bitna je razlika skretanja i nagiba. Nijedna mala promjena tri ugla ne
+    okreće nos u stranu.`,
+  "turn.title1": `<span class="number">2</span> Osa, ugao, četiri broja`,
+  "turn.p1":
+    `Euler je pokazao da je svaka rotacija jedan okret za ugao <var>θ</var> oko ose, jediničnog vektora <var>u</var>.
+    <dfn id="def-quaternion">Kvaternion</dfn> je broj <var>q</var> = <var>a</var> + <var>b</var> i + <var>c</var> j
+    + <var>d</var> k s četiri realna dijela, gdje Hamiltonova pravila i² = j² = k² = ijk = −1 određuju kako se
+    množi. Redoslijed je bitan: ij = k, ali ji = −k. Njegova dužina je |<var>q</var>| = √(<var>a</var>² +
+    <var>b</var>² + <var>c</var>² + <var>d</var>²), njegov konjugovani kvaternion je <var>q̄</var> = <var>a</var> −
+    <var>b</var> i − <var>c</var> j − <var>d</var> k, a <dfn id="def-unit-quaternion">jedinični kvaternion</dfn> je
+    kvaternion dužine 1.`,
+  "turn.p2": "Okret za <var>θ</var> oko <var>u</var> je jedinični kvaternion",
+  "turn.p3":
+    `<var>q</var> = cos(<var>θ</var>/2) + sin(<var>θ</var>/2) (<var>u<sub>x</sub></var> i + <var>u<sub>y</sub></var>
+    j + <var>u<sub>z</sub></var> k),`,
+  "turn.p4":
+    `i on okreće vektor <var>v</var>, zapisan kao <var>v<sub>x</sub></var> i + <var>v<sub>y</sub></var> j +
+    <var>v<sub>z</sub></var> k, u <var>q</var> <var>v</var> <var>q̄</var>. Ugao je prepolovljen jer <var>q</var>
+    djeluje dvaput, po jednom sa svake strane. Jedan okret za drugim je proizvod: <var>q</var>₂<var>q</var>₁ prvo
+    okreće za <var>q</var>₁. Četiri broja i jedan uslov, |<var>q</var>| = 1, koji se popravi jednim dijeljenjem.`,
+  "turn.caption1":
+    `Avion zaokrenut za <var>q</var>, osa isprekidano. Njegove ose tijela: <span class="x">x</span> (nos), <span
+    class="y">y</span> (krilo), <span class="z">z</span> (vertikalni stabilizator).`,
+  "turn.legend1": "Okret",
+  "turn.p5":
+    `Četiri broja sada: <output id="turn-out">q = 0.707 + 0.000 i + 0.000 j + 0.707 k</output>.`,
+  "turn.question1":
+    `Predvidi, pa provjeri: četvrtina okreta oko z. Koja su četiri broja i kamo ide nos?`,
+  "turn.p6":
+    `Prvo to izračunaj iz formule. Zatim <a class="set" href="?axis=z&amp;angle=90#turn"
+    data-state='{"axis":"z","angle":90}'>postavi 90° oko z</a>.`,
+  "turn.p7":
+    `<strong>Odgovor.</strong> cos 45° = sin 45° = 0.707, pa je <var>q</var> = 0.707 + 0.707 k. Nos, osa
+    <var>x</var>, ide u <var>y</var>: <var>q</var> i <var>q̄</var> = j.`,
+  "cover.title1": `<span class="number">3</span> S³ i dvostruko natkrivanje`,
+  "cover.p1":
+    `Četiri broja jediničnog kvaterniona su tačka na udaljenosti 1 od ishodišta četverodimenzionalnog prostora:
+    jedinični kvaternioni čine <dfn id="def-s3">3-sferu, S³</dfn>, trodimenzionalnu površ u R⁴, kao što je obična
+    sfera S² dvodimenzionalna površ u R³. Ne možemo je nacrtati cijelu, ali možemo nacrtati jedan presjek: kako
+    <var>θ</var> raste, <var>q</var> = cos(<var>θ</var>/2) + sin(<var>θ</var>/2) <var>u</var> kruži po kružnici kroz
+    1 i <var>u</var>, upola brzinom okreta.`,
+  "cover.p2":
+    `Pritisni 360° ispod. Avion je opet tamo gdje je počeo, a ipak je <var>q</var> = −1 na suprotnoj strani kružnice.
+    Budući da je (−<var>q</var>) <var>v</var> (−<var>q̄</var>) = <var>q</var> <var>v</var> <var>q̄</var>, kvaternioni
+    <var>q</var> i −<var>q</var> su jedna ista rotacija: svaka rotacija je par suprotnih tačaka sfere S³. To je
+    <dfn id="def-double-cover">dvostruko natkrivanje</dfn>, i sve što slijedi mora biti neosjetljivo na predznak.`,
+  "cover.p3":
+    `Ugao <var>φ</var> između dva jedinična kvaterniona, cos <var>φ</var> = <var>p</var>·<var>r</var> =
+    <var>p</var>₁<var>r</var>₁ + <var>p</var>₂<var>r</var>₂ + <var>p</var>₃<var>r</var>₃ +
+    <var>p</var>₄<var>r</var>₄, mjeri njihovu udaljenost: rotacija od <var>p</var> do <var>r</var> okreće za
+    2<var>φ</var>. Najkraći put po sferi je luk velikog kruga, <dfn id="def-geodesic">geodezijska linija</dfn>.
+    Između dvije rotacije postoje dva takva luka, do <var>r</var> i do −<var>r</var>; „najkraći put” bira onaj za
+    koji je <var>p</var>·<var>r</var> ≥ 0.`,
+  "cover.caption1":
+    `Lijevo: kružnica na S³ kroz 1 i osu <var>u</var>, luk od 1 do <var>q</var> i −<var>q</var> nasuprot. Desno:
+    avion zaokrenut za <var>q</var> i za −<var>q</var>.`,
+  "cover.p4":
+    `Pri <output id="cover-out">θ = 90°, q = 0.707 + 0.000 i + 0.000 j + 0.707 k</output> (pomjera ga i klizač ugla
+    iz odjeljka 2).`,
+  "cover.question1": "Predvidi, pa provjeri: koliko se avion mora okrenuti da bi q opet bio 1?",
+  "cover.p5":
+    `Pogodi, pa <a class="set" href="?angle=720#cover" data-state='{"angle":720}'>postavi θ = 720°</a>.`,
+  "cover.p6":
+    `<strong>Odgovor.</strong> Dva puna okreta. Nakon jednog okreta <var>q</var> = −1: ista rotacija, druga tačka.
+    Tek na 720° <var>q</var> jednom obiđe svoju kružnicu.`,
+  "slerp.title1": `<span class="number">4</span> SLERP: veliki krug konstantnom brzinom`,
+  "slerp.p1":
+    `Da bismo animirali okret od rotacije <var>p</var> do rotacije <var>r</var>, treba nam put
+    <var>q</var>(<var>s</var>), <var>s</var> od 0 do 1. Duž (1 − <var>s</var>)<var>p</var> +
+    <var>s</var><var>r</var> presijeca unutrašnjost sfere; kad se njene tačke vrate na sferu (<abbr
+    title="normalizovana linearna interpolacija">NLERP</abbr>, normalizovana linearna interpolacija: tačka duži
+    podijeljena svojom dužinom), padaju na pravi luk, ali neravnomjerno, brže u sredini. <dfn
+    id="def-slerp">SLERP</dfn>, sferna linearna interpolacija (Shoemake, 1985), ide po velikom krugu konstantnom
+    brzinom:`,
+  "slerp.p2":
+    `<var>q</var>(<var>s</var>) = [sin((1 − <var>s</var>)<var>φ</var>₀) <var>p</var> + sin(<var>s</var><var>φ</var>₀)
+    <var>r</var>] / sin <var>φ</var>₀, cos <var>φ</var>₀ = <var>p</var>·<var>r</var>.`,
+  "slerp.p3":
+    `Njegova tačka je <var>s</var><var>φ</var>₀ duž luka, pa se tijelo okreće oko jedne nepomične ose ujednačenom
+    brzinom. Ispod su dvije rotacije iz rada, <var>p</var> = k, poluokret oko <var>z</var> (θ = 180°, jer je cos 90°
+    + sin 90° k = k), i <var>r</var> = ½(1 + i + j + k), trećina okreta (120°) oko dijagonale (1, 1, 1):
+    <var>p</var>·<var>r</var> = ½, pa je <var>φ</var>₀ = 60° na S³, okret tijela za 120°. Ponovo ih srećemo u
+    odjeljku 7.`,
+  "slerp.caption1":
+    `Luk od <var>p</var> do <var>r</var>; oznake na svakih 0.1 od <var>s</var>, <span class="slerp">SLERP</span>-ove
+    spolja, NLERP-ove unutra; tetiva isprekidano.`,
+  "slerp.legend1": "SLERP",
+  "slerp.p4": `<output id="slerp-out">Pri s = 0.50 SLERP je 30.00° duž luka, NLERP 30.00°.</output>`,
+  "slerp.question1": "Predvidi, pa provjeri: pri s = 0.25, je li NLERP ispred SLERP-a ili iza njega?",
+  "slerp.p5": `Pogodi, pa <a class="set" href="?s=0.25#slerp" data-state='{"s":0.25}'>postavi s = 0.25</a>.`,
+  "slerp.p6":
+    `<strong>Odgovor.</strong> Iza: 13.90° naspram 15° kod SLERP-a. Tačka tetive na četvrtini puta je (0.75 + 0.25
+    cos 60°, 0.25 sin 60°) u ravni luka, pod uglom atan(0.2165 / 0.875) = 13.90°. Zbog simetrije je ispred nakon
+    sredine (46.10° pri <var>s</var> = 0.75).`,
+  "hopf.title1": `<span class="number">5</span> Hopfovo preslikavanje i valjanje koje ne može pokazati`,
+  "hopf.p1":
+    `S³ ne stane na papir, pa rad crta svoje krive na običnoj sferi pomoću <dfn id="def-hopf">Hopfovog
+    preslikavanja</dfn> (jednačina 5 u radu):`,
+  "hopf.p2":
+    `<var>h</var>(<var>a</var>, <var>b</var>, <var>c</var>, <var>d</var>) = (<var>a</var>² + <var>b</var>² −
+    <var>c</var>² − <var>d</var>², 2(<var>a</var><var>d</var> + <var>b</var><var>c</var>),
+    2(<var>b</var><var>d</var> − <var>a</var><var>c</var>)) <span class="eq-no">(5)</span>`,
+  "hopf.p3":
+    `To je <var>q</var> i <var>q̄</var>: kamo rotacija šalje osu <var>x</var>, nos aviona. Tačka na S² pokazuje kamo
+    je nos usmjeren, i <var>h</var>(<var>q</var>) = <var>h</var>(−<var>q</var>). Za primjer iz rada je
+    <var>h</var>(<var>p</var>) = (−1, 0, 0) i <var>h</var>(<var>r</var>) = (0, 1, 0).`,
+  "hopf.p4":
+    `Ono što ne može pokazati je valjanje oko nosa. Ovdje je valjanje <var>ρ</var> novi okret, izveden nakon okreta
+    <var>q</var> iz odjeljka 2, oko vlastitog nosa aviona: ista vrsta okreta kao nagib iz odjeljka 1, ali dodan
+    okretu zadanom osom i uglom, a ne jedan od tri Eulerova ugla. Okreni avion oko nosa klizačem ispod: krilo se
+    okreće, tačka ostaje. Svaka rotacija <var>q</var> (cos(<var>ρ</var>/2) + sin(<var>ρ</var>/2) i) ima istu sliku, pa iznad
+    svake tačke sfere S² leži cijela kružnica sfere S³, njeno <dfn id="def-fibre">vlakno</dfn>. Sfera vjerno
+    prikazuje kamo su stvari usmjerene, a slijepa je za to kako su zaokrenute oko tog pravca.`,
+  "hopf.caption1":
+    `Tačka nosa <var>h</var>(<var>q</var>) (narandžasto) i tačka krila (zeleno) na kružnici pravaca okomitih na nos
+    (okomit znači pod pravim uglom; za vektore, skalarni proizvod jednak 0). Povuci mišem ili koristi tipke sa
+    strelicama da okreneš sferu.`,
+  "hopf.caption2": "Okret iz odjeljka 2, zatim okret oko nosa.",
+  "hopf.legend1": "Valjanje",
+  "hopf.p5":
+    `<output id="hopf-out">Nos pokazuje prema (0.000, 1.000, 0.000); krilo prema (−1.000, 0.000, 0.000).</output>`,
+  "hopf.question1": "Predvidi, pa provjeri: valjanje od 180°. Kamo ide tačka?",
+  "hopf.p6":
+    `Pogodi, pa <a class="set" href="?roll=180#hopf" data-state='{"roll":180}'>postavi valjanje na 180°</a>.`,
+  "hopf.p7":
+    `<strong>Odgovor.</strong> Nikamo. Krilo sada pokazuje na suprotnu stranu, ali nos se nije pomaknuo, a tačka je
+    nos. Obje rotacije leže na istom vlaknu.`,
+  "kuramoto.title1": `<span class="number">6</span> Oscilatori koji se usklađuju`,
+  "kuramoto.p1":
+    `Krijesnice bljeskaju zajedno, ćelije predvodnika srčanog ritma kucaju zajedno. <dfn id="def-kuramoto">Kuramotov
+    model</dfn> (Kuramoto, 1975) je najjednostavniji opis: <var>N</var> oscilatora s fazama <var>θ<sub>i</sub></var>
+    na kružnici, svaki sa svojom vlastitom frekvencijom <var>ω<sub>i</sub></var>, svaki privlačen prema ostalima:`,
+  "kuramoto.p2":
+    `<var>θ<sub>i</sub></var>′ = <var>ω<sub>i</sub></var> + (<var>K</var>/<var>N</var>) Σ<sub><var>j</var></sub>
+    sin(<var>θ<sub>j</sub></var> − <var>θ<sub>i</sub></var>).`,
+  "kuramoto.p3":
+    `Koliko se slažu, mjeri <dfn id="def-order">parametar reda</dfn>: dužina <var>R</var> njihove prosječne tačke,
+    (1/<var>N</var>) Σ e<sup>i<var>θ<sub>j</sub></var></sup>; 0 kad su raštrkani, 1 kad su usklađeni. Ispod, 20 faza
+    ima frekvencije ravnomjerno raspoređene od −0.5 do 0.5 (narandžaste se okreću naprijed, ljubičaste unazad). Za
+    mnogo oscilatora s takvom raspodjelom privlačenje pobjeđuje čim <var>K</var> pređe 2/(π<var>g</var>(0)) ≈ 0.64,
+    gdje je <var>g</var>(0) = 1 gustina frekvencija u njihovom središtu. Postavi <var>K</var> i pritisni
+    <strong>Pusti od t = 0</strong>.`,
+  "kuramoto.caption1":
+    `Faze na svojoj kružnici, strelica je njihova prosječna tačka; pored je <var>R</var>(<var>t</var>) do kraja sata
+    (<var>t</var> = 12, kasnije kad je <var>ε</var> iz odjeljka 7 manji), s označenim prikazanim trenutkom.`,
+  "kuramoto.legend1": "Kuramotove faze",
+  "kuramoto.p4": `<output id="phases-out">Pri t = 0.00, R = 0.049.</output>`,
+  "kuramoto.p5":
+    `Sabiranju uglova redoslijed nije bitan, pa se ovaj model zove <em>abelov</em>. Rotacijama jeste bitan: na S³
+    proizvod kvaterniona nije komutativan. M. A. Lohe, koji je Kuramotov model uopštio s faza na matrice (2009),
+    nazvao je takve modele <em>neabelovim</em> Kuramotovim modelima. Na S³ oscilatori su jedinični kvaternioni
+    <var>q<sub>i</sub></var> (jednačina 1 u radu je opšti oblik). Kad svaki privlači svakog, bez vlastite rotacije,
+    svaki slijedi`,
+  "kuramoto.p6":
+    `<var>q<sub>i</sub></var>′ = (<var>K</var>/(2<var>N</var>)) Σ<sub><var>j</var></sub> (<var>q<sub>j</sub></var> −
+    <var>q<sub>i</sub></var> <var>q̄<sub>j</sub></var> <var>q<sub>i</sub></var>),`,
+  "kuramoto.p7":
+    `gdje je <var>q<sub>i</sub></var> <var>q̄<sub>j</sub></var> <var>q<sub>i</sub></var> proizvod kvaterniona, kojem
+    je redoslijed bitan. Za jedinične kvaternione on je jednak
+    2(<var>q<sub>i</sub></var>·<var>q<sub>j</sub></var>)<var>q<sub>i</sub></var> − <var>q<sub>j</sub></var> (odjeljak
+    7 koristi isti identitet), pa je svaki sabirak 2(<var>q<sub>j</sub></var> −
+    (<var>q<sub>i</sub></var>·<var>q<sub>j</sub></var>) <var>q<sub>i</sub></var>): privlačenje prema svakom drugom
+    oscilatoru bez dijela duž <var>q<sub>i</sub></var>. Fiksiraj jednog od njih u rotaciji <var>r</var> i ostali se
+    usklade, a zatim se smire na njemu. S jednim sljedbenikom, <var>N</var> = 2, sljedbenik zadovoljava
+    <var>q</var>′ = (<var>K</var>/2)(<var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>): metoda iz rada, u
+    sljedećem odjeljku. Koliko se slažu, mjeri se kao na kružnici: parametar reda na S³ je dužina <var>R</var> =
+    |(1/<var>N</var>) Σ<sub><var>j</var></sub> <var>q<sub>j</sub></var>| srednje vrijednosti kvaterniona
+    <var>q<sub>j</sub></var> kao tačaka u R⁴ (računajući i vođu), 1 kad su svi u jednoj tački, mali kad su
+    raspršeni po S³.`,
+  "kuramoto.caption2":
+    `Osam sljedbenika (ljubičasto, sa svojim tragovima) i fiksirani vođa <var>r</var> (narandžasto), nacrtani
+    Hopfovim preslikavanjem; sfera se okreće zajedno s onom u odjeljku 5.`,
+  "kuramoto.legend2": "Rotacije na S³",
+  "kuramoto.p8":
+    `<output id="lohe-out">Pri t = 0.00, R = 0.396; najdalji sljedbenik je okret od 174.5° od r.</output>`,
+  "kuramoto.question1": "Predvidi, pa provjeri: bez sprezanja, K = 0, šta radi R?",
+  "kuramoto.p9":
+    `Pogodi, pa <a class="set" href="?K=0#kuramoto" data-state='{"coupling":0}' data-play="phases">postavi K = 0 i
+    pusti</a>.`,
+  "kuramoto.p10":
+    `<strong>Odgovor.</strong> Svaka faza se okreće svojom brzinom, <var>θ<sub>i</sub></var>(<var>t</var>) =
+    <var>θ<sub>i</sub></var>(0) + <var>ω<sub>i</sub></var><var>t</var>, i ništa ih ne okuplja: <var>R</var> luta
+    blizu 0. Na S³ s <var>K</var> = 0 ništa se uopšte ne kreće, jer je <var>q<sub>i</sub></var>′ = 0.`,
+  "kli.title1": `<span class="number">7</span> KLI: tok iz rada`,
+  "kli.p1":
+    `<dfn id="def-kli">KLI</dfn>, Kuramoto–Lohe interpolacija, metoda koju su dali <a href="#paper">Kapić i
+    Crnkić</a>, pušta rotaciju da teče od <var>p</var> do <var>r</var> po modelu (jednačina 3 u radu)`,
+  "kli.p2":
+    `<var>q</var>′(<var>t</var>) = −½ (<var>q</var> <var>r̄</var> <var>q</var> − <var>r</var>), <var>q</var>(0) =
+    <var>p</var>. <span class="eq-no">(3)</span>`,
+  "kli.p3":
+    `Za jedinični <var>q</var> je <var>q</var> <var>r̄</var> <var>q</var> = 2(<var>q</var>·<var>r</var>)<var>q</var>
+    − <var>r</var>, pa je ovo jednostavno <var>q</var>′ = <var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>.
+    Slika pokazuje zašto to radi. (<var>q</var>·<var>r</var>)<var>q</var> je dio vektora <var>r</var> duž
+    <var>q</var>; ostatak je okomit na <var>q</var>, tangenta sfere. Brzina okomita na <var>q</var> čuva
+    |<var>q</var>| = 1, jer je d|<var>q</var>|²/d<var>t</var> = 2 <var>q</var>·<var>q</var>′ = 0. I leži u ravni
+    vektora <var>q</var> i <var>r</var>, pa <var>q</var> nikad ne napušta veliki krug kroz <var>p</var> i
+    <var>r</var>: luk SLERP-a.`,
+  "kli.caption1":
+    `Veliki krug kroz <var>p</var> i <var>r</var> (luk SLERP-a isprekidano), dosadašnji put <span
+    class="kli">KLI</span>-ja i u <var>q</var>(<var>t</var>) njegova brzina <var>q</var>′, tangentni dio vektora
+    <var>r</var>.`,
+  "kli.p4":
+    `<output id="kli-out">Pri t = 0.00, φ = 60.00°, s = 0.000: q = 0.000 + 0.000 i + 0.000 j + 1.000 k.</output>`,
+  "kli.p5":
+    `<strong>Sat.</strong> Neka je <var>φ</var>(<var>t</var>) ugao između <var>q</var>(<var>t</var>) i <var>r</var>.
+    Tada je <var>φ</var>′ = −sin <var>φ</var>, čije je rješenje tan(<var>φ</var>(<var>t</var>)/2) =
+    tan(<var>φ</var>₀/2) e<sup>−<var>t</var></sup>. Dakle, <var>q</var>(<var>t</var>) je tačka SLERP-a za
+    <var>s</var>(<var>t</var>) = 1 − <var>φ</var>(<var>t</var>)/<var>φ</var>₀: tačno isti put kao SLERP, ali po
+    drugom satu. Počinje brzinom sin <var>φ</var>₀ i eksponencijalno usporava kako stiže.`,
+  "kli.caption2":
+    `<var>s</var>(<var>t</var>) za <span class="kli">KLI</span> naspram <span class="slerp">SLERP</span>-a izvedenog
+    za isto vrijeme, <var>t</var>/<var>T</var>.`,
+  "kli.p6":
+    `<dfn id="def-algorithm-1">Algoritam 1</dfn> iz rada računa tok korak po korak: počni od <var>q</var> =
+    <var>p</var>; napravi korak dužine <var>δ</var> u vremenu (ovdje metodom RK4, odjeljak 8); stani čim je
+    ‖<var>r</var> − <var>q</var>‖ &lt; <var>ε</var>. Njegova dva parametra su tolerancija <dfn
+    id="def-epsilon"><var>ε</var></dfn>, koliko blizu je dovoljno blizu, i vremenski korak <dfn
+    id="def-delta"><var>δ</var></dfn>. Rad koristi <var>ε</var> = 10⁻⁵ i <var>δ</var> = 0.01 i navodi <var>T</var> =
+    11.66. Odakle to dolazi: ‖<var>r</var> − <var>q</var>‖ = 2 sin(<var>φ</var>/2), pa tok prvi put dođe unutar
+    <var>ε</var> u trenutku`,
+  "kli.p7":
+    `<var>T</var>* = ln( tan(<var>φ</var>₀/2) / tan(arcsin(<var>ε</var>/2)) ) = 11.6568 za primjer iz rada,`,
+  "kli.p8":
+    `a petlja staje na prvom višekratniku od <var>δ</var> poslije toga, 11.66. Izvedi korake sam: <strong>Korak
+    δ</strong> pomjera sat za jedan korak, a tačka na grafiku je udaljenost u tom koraku.`,
+  "kli.caption3":
+    `‖<var>r</var> − <var>q<sub>n</sub></var>‖ u svakom koraku <var>t<sub>n</sub></var> = <var>nδ</var> na
+    logaritamskoj skali, <var>ε</var> isprekidano, zaustavljanje <var>T</var> i <var>T</var>* tačkasto.`,
+  "kli.legend1": "Algoritam 1",
+  "kli.p9":
+    `<output id="steps-out">Korak n = 0 pri t = 0.00: ‖r − q‖ = 1.00e+0. Uz ε = 1e-5 i δ = 0.01 petlja staje nakon
+    1166 koraka, pri T = 11.66; T* = 11.6568.</output>`,
+  "kli.question1": "Predvidi, pa provjeri: u kojem je trenutku KLI na pola luka?",
+  "kli.p10":
+    `Koristi sat: pola puta znači <var>φ</var> = 30°. Pogodi, pa <a class="set" href="?t=0.77#kli" data-t="0.77">idi
+    na t = 0.77</a>.`,
+  "kli.p11":
+    `<strong>Odgovor.</strong> tan 15° = tan 30° e<sup>−<var>t</var></sup> daje <var>t</var> = ln(tan 30° / tan 15°)
+    = 0.768, petnaestinu puta do <var>T</var>. Druga polovina traje preostalih 14 dijelova: brz početak, spor
+    dolazak.`,
+  "kli.question2": "Predvidi, pa provjeri: jedna cifra više, ε = 10⁻⁶. Koliko duže radi Algoritam 1?",
+  "kli.p12":
+    `Pogodi, pa <a class="set" href="?digits=6#kli" data-state='{"digits":6}'>postavi ε = 10⁻⁶</a>.`,
+  "kli.p13":
+    `<strong>Odgovor.</strong> Za mali <var>ε</var> je tan(arcsin(<var>ε</var>/2)) ≈ <var>ε</var>/2, pa svaka cifra
+    dodaje ln 10 ≈ 2.303 vremenu <var>T</var>*: 13.9594, a petlja staje pri <var>T</var> = 13.96. Sat i osa grafika
+    sada idu do 15, pa se vide i zaustavljanje <var>T</var> i <var>T</var>*. Udaljenost opada kao
+    e<sup>−<var>t</var></sup>, prava linija na logaritamskom grafiku.`,
+  "kli.question3": "Napomena za čitaoce rada: štampana jednačina 4 i Tabela 1",
+  "kli.p14":
+    `Rad zapisuje jednačinu 3 po komponentama kao <var>q<sub>i</sub></var>′ = <var>r<sub>i</sub></var> −
+    <var>q<sub>i</sub></var> − <var>q<sub>i</sub></var> cos <var>θ</var> (jednačina 4). Suvišni
+    −<var>q<sub>i</sub></var> je štamparska greška: s njim tok napušta sferu i smiruje se u tački dužine (√5 −
+    1)/2 ≈ 0.618, nikad ne stižući do <var>r</var>. Ispravan oblik je <var>q<sub>i</sub></var>′ =
+    <var>r<sub>i</sub></var> − <var>q<sub>i</sub></var> cos <var>θ</var>, uz cos <var>θ</var> =
+    <var>q</var>·<var>r</var>, i Tabela 1 iz rada se s njim slaže. U Tabeli 1 red za <var>t</var> = 1.8 ponavlja
+    red za 1.2; ispravne vrijednosti su 0.4364 + 0.4364 i + 0.4364 j + 0.6548 k. Oboje je provjereno na <a
+    href="math.html#the-papers-example-section-3">stranici s matematikom</a> i testovima projekta.`,
+  "integrators.title1": `<span class="number">8</span> Integratori i odstupanje`,
+  "integrators.p1":
+    `Računar prati tok u koracima dužine <var>h</var> u vremenu: isto što i <var>δ</var> Algoritma 1 u odjeljku 7,
+    ovdje nazvano <var>h</var> jer ova slika ima svoj klizač. <strong>Eulerov</strong> korak, <var>q</var> +
+    <var>h</var> <var>q</var>′, ide duž tangente, a korak po tangenti uvijek napušta sferu: |<var>q</var> +
+    <var>h</var><var>v</var>|² = 1 + <var>h</var>²|<var>v</var>|² kad je <var>v</var> okomit na <var>q</var>. <dfn
+    id="def-rk4">RK4</dfn>, klasična Runge–Kutta metoda četvrtog reda, računa izvod četiri puta u jednom koraku i
+    uzima njihov ponderisani prosjek; njena greška opada kao <var>h</var>⁴, a tako i njeno odstupanje od sfere.
+    <strong>Geodezijski</strong> korak uzima prirast metode RK4 kao okret duž velikog kruga, pa je |<var>q</var>| =
+    1 po konstrukciji. Blizu <var>r</var> ovaj tok vraća zalutali |<var>q</var>| prema 1, pa ovdje odstupanje ne
+    raste unedogled; kod drugih tokova može.`,
+  "integrators.caption1":
+    `| |<var>q</var>| − 1 | na primjeru iz rada za svaki integrator s korakom <var>h</var>, na logaritamskoj skali
+    (ono što je ispod 10⁻¹⁷ crta se na 10⁻¹⁷); izabrani je podebljan.`,
+  "integrators.legend1": "Integratori",
+  "integrators.p2":
+    `<output id="drift-out">Najveće odstupanje pri h = 0.5: Euler 9.0e-2, RK4 1.5e-3, geodezijski 2.2e-16.</output>`,
+  "integrators.question1":
+    `Predvidi, pa provjeri: prepolovi korak s 0.5 na 0.25. Koliko puta se smanje odstupanja Eulerove metode i RK4?`,
+  "integrators.p3":
+    `Pogodi, pa <a class="set" href="?h=0.25#integrators" data-state='{"step":0.25}'>postavi h = 0.25</a>.`,
+  "integrators.p4":
+    `<strong>Odgovor.</strong> Eulerovo oko 2.8 puta (s 0.090 na 0.032), RK4 oko 23 puta (s 1.5·10⁻³ na 6.5·10⁻⁵).
+    Eulerovo odstupanje nije gomila malih grešaka. Pri <var>h</var> = 0.5 najveće odstupanje je već u prvom koraku:
+    iz <var>p</var> brzinom <var>v</var>, |<var>v</var>| = sin <var>φ</var>₀ = 0.866, korak završava na dužini √(1
+    + <var>h</var>²|<var>v</var>|²), odstupanje √(1 + 0.1875) − 1 = 0.090; nakon toga tok vraća |<var>q</var>|
+    nazad (0.057, zatim 0.017). Pri <var>h</var> = 0.25 prvi korak daje √(1 + 0.047) − 1 = 0.023, a drugi gura još
+    malo dalje, do 0.032, prije nego što privlačenje prevlada. Odstupanje prvog koraka opada kao <var>h</var>² (4
+    puta), ravnoteža guranja i privlačenja iz koraka u korak kao <var>h</var> (2 puta); ovdje je između, 2.8. Kod
+    RK4 ide kao <var>h</var>⁴ (2⁴ = 16, nešto više pri ovako velikom koraku). Geodezijski korak ostaje na nivou
+    zaokruživanja, oko 10⁻¹⁶.`,
+  "many.title1": `<span class="number">9</span> Mnogo rotacija`,
+  "many.p1":
+    `Rad interpolira između dvije rotacije, a slučaj mnogo rotacija ostavlja kao otvoreno pitanje. Druge stranice
+    ovog sajta se njime bave; svaka slika ispod je živa slika s njene stranice, učitana kad do nje stigneš.`,
+  "many.heading1": "Ključni kadrovi: gladak okret kroz mnogo položaja",
+  "many.p2":
+    `Animator postavi zglobove lika u nekoliko trenutaka, ključnim kadrovima, a računar popuni ostalo. SLERP od
+    ključa do ključa okreće ujednačeno na svakom dijelu, ali trzne na svakom ključu, gdje se osa i brzina naglo
+    promijene. KLI lanac na stranici <a href="keyframes.html">Mnogo rotacija</a> prolazi kroz iste ključeve, a brzina
+    okretanja se mijenja glatko. Pomjeri <em>glatkoću</em> od 0 (SLERP po dijelovima) do 1. Slika crta kamo pokazuje
+    nos (Hopfovo preslikavanje iz odjeljka 5) duž tri krive kroz iste ključeve: KLI lanac (narandžasto, puna linija),
+    <dfn id="def-squad">Squad</dfn> (Shoemakeov splajn kvaterniona, uobičajena glatka kriva u softveru za animaciju,
+    sastavljena od SLERP-ova između dodatnih kontrolnih tačaka; ljubičasto, isprekidano) i SLERP po dijelovima
+    (tamno, tačkasto). Bijele tačke k0, k1, … su ključevi.`,
+  "many.heading2": "Roj: sinhronizacija ili njena suprotnost",
+  "many.p3":
+    `Dronovi koji se usaglašavaju o smjeru leta, sateliti o orijentaciji, jato koje skreće kao jedno: mnogo rotacija
+    spregnutih Loheovim modelom iz odjeljka 6, bez vođe. Na stranici <a href="swarm.html">Roj</a>, <var>K</var> &gt;
+    0 ih usklađuje (<dfn id="def-sync">sinhronizacija</dfn>, parametar reda teži ka 1), a <var>K</var> &lt; 0 ih
+    razmiče.`,
+  "many.heading3": "Usrednjavanje: jedna rotacija iz mnogo zašumljenih",
+  "many.p4":
+    `Kamera robota mnogo puta mjeri svoju orijentaciju, svaki put malo pogrešno, a nekoliko puta jako pogrešno: to su
+    <dfn id="def-outlier">izuzeci</dfn> (autlajeri). Jedan sljedbenik koji privlače sva mjerenja odjednom smiri se u
+    <dfn id="def-chordal">tetivnoj sredini</dfn>, rotaciji <var>q</var> koja maksimizira
+    Σ(<var>q</var>·<var>r<sub>j</sub></var>)² (neosjetljivo na predznak svakog mjerenja). <em>Tetivna</em> znači da
+    se udaljenost mjeri pravo kroz unutrašnjost, duž tetive |<var>p</var> − <var>q</var>|, a ne po sferi: za
+    jedinične kvaternione |<var>p</var> − <var>q</var>|² = 2 − 2 <var>p</var>·<var>q</var>, pa kratkoj tetivi
+    odgovara velik skalarni proizvod. <dfn id="def-karcher">Karcherova sredina</dfn> umjesto toga minimizira zbir
+    kvadrata uglova okreta do mjerenja. Izuzeci vuku obje; medijan, na stranici <a
+    href="average.html">Usrednjavanje</a>, mnogo manje. Pomjeri udio izuzetaka. Na slici je svaka tačka mjesto kamo
+    mjerenje usmjerava nos, njegova Hopfova slika <var>h</var>(<var>r<sub>j</sub></var>); izuzeci imaju svoju boju i
+    dobiju prsten kad ih medijan izdvoji. ★ je istina, ● sljedbenik na putu od 1. Četiri sredine su bijeli krugovi
+    s prstenom u svojoj boji: tetivna sredina narandžasto, kvaternionska sredina zeleno (četiri broja usrednjena, svi
+    na istoj strani S³, pa podijeljena dužinom), Karcherova (geodezijska) sredina ljubičasto, medijan plavo.
+    (Legenda slike kaže „boje kao na stupcima”: stupci su na stranici <a href="average.html">Usrednjavanje</a>;
+    ovdje su boje ove.)`,
+  "many.heading4": "Sinhronizacija rotacija na grafu",
+  "many.p5":
+    `Robot koji mapira zgradu (SLAM, simultana lokalizacija i mapiranje: istovremeno gradi mapu i pronalazi sebe u
+    njoj) ili fotografije spojene u 3D model daju rotacije izmjerene između parova: kamera <var>i</var> u odnosu na
+    kameru <var>j</var>. Određivanje svih rotacija iz njih je sinhronizacija na grafu: svaka kamera je čvor, svako
+    mjerenje grana. Rješenje je ono s najmanjom tetivnom cijenom <var>f</var> = Σ ‖<var>R<sub>i</sub></var>
+    <var>R<sub>ij</sub></var> − <var>R<sub>j</sub></var>‖², zbirom po granama kvadrata koliko svako mjerenje
+    promašuje (ista udaljenost pravo kroz unutrašnjost, ovdje između matrica).`,
+  "many.p6":
+    `Potraga za najmanjim <var>f</var> ide nizbrdo, a nizbrdo se može završiti u udubini koja nije najniža. Na
+    stranici <a href="sync.html">Sinhronizacija rotacija</a> rješenje dolazi s <dfn
+    id="def-certificate">certifikatom</dfn>, provjerom napravljenom naknadno: od rješenja i mjerenja sastavi se
+    jedna velika simetrična matrica; ako njena najmanja svojstvena vrijednost nije negativna, može se dokazati da
+    nijedan izbor rotacija nema manji <var>f</var>, pa je rješenje najbolje moguće, a ne samo najbolje u okolini.
+    (Ako provjera ne uspije, ništa nije dokazano ni u jednom smjeru.) Pogrešne grane, izuzeci grafa, pronalaze se i
+    izdvajaju.`,
+  "many.p7":
+    `Na slici je <var>f</var> ispisan na vrhu dok ga tok smanjuje. Svaka grana je obojena prema tome koliko se njeno
+    mjerenje razlikuje od trenutnog rješenja: plavo ispod 2°, tirkizno 2–5°, zeleno 5–15°, narandžasto 15–45°,
+    crveno 45° ili više; pogrešna grana je isprekidana. Svaki čvor nosi iglu: svoju grešku (okret od svoje prave
+    rotacije do rotacije iz rješenja, nakon jednog zajedničkog okreta koji cijelo rješenje najbolje poravna s
+    istinom) primijenjenu na osu <var>x</var> tijela, gledano odozgo. Igla pokazuje desno kad se čvor slaže s
+    istinom.`,
+  "many.question1":
+    `Predvidi, pa provjeri: na slici usrednjavanja, kad je pola mjerenja izuzetaka, koje sredine ostaju blizu istine?`,
+  "many.p8":
+    `Pogodi, pa <button type="button" class="set-figure" data-figure="fig-average" data-attribute="outliers"
+    data-value="0.5">neka pola mjerenja budu izuzeci</button>.`,
+  "many.p9":
+    `<strong>Odgovor.</strong> Tetivna i Karcherova sredina se odmiču, jer svako mjerenje ulazi s kvadratom svoje
+    udaljenosti; medijan računa svako mjerenje samo njegovom udaljenošću i ostaje bliže, kako pokazuje tabela na
+    stranici <a href="average.html">Usrednjavanje</a>.`,
+  "glossary.title1": "Pojmovnik",
+  "glossary.term1": "Algoritam 1",
+  "glossary.definition1":
+    `Petlja iz rada: pomjeraj tok za <var>δ</var> od <var>p</var> dok ne dođeš unutar <var>ε</var> od <var>r</var>.
+    <a href="#def-algorithm-1">Odjeljak 7</a>`,
+  "glossary.term2": "certifikat",
+  "glossary.definition2":
+    `Provjera da je izračunato rješenje najbolje od svih, a ne samo lokalno. <a href="#def-certificate">Odjeljak 9</a>`,
+  "glossary.term3": "tetivna sredina",
+  "glossary.definition3":
+    `Rotacija koja maksimizira Σ(<var>q</var>·<var>r<sub>j</sub></var>)² po mjerenjima. <a
+    href="#def-chordal">Odjeljak 9</a>`,
+  "glossary.term4": "dvostruko natkrivanje",
+  "glossary.definition4":
+    `<var>q</var> i −<var>q</var> su ista rotacija: S³ natkriva rotacije dvaput. <a
+    href="#def-double-cover">Odjeljak 3</a>`,
+  "glossary.term5": "δ (delta)",
+  "glossary.definition5":
+    `Vremenski korak Algoritma 1; u radu je 0.01 (odjeljak 8 korak naziva <var>h</var>). <a
+    href="#def-delta">Odjeljak 7</a>`,
+  "glossary.term6": "ε (epsilon)",
+  "glossary.definition6":
+    `Tolerancija Algoritma 1: stani čim je ‖<var>r</var> − <var>q</var>‖ &lt; <var>ε</var>; u radu je 10⁻⁵. <a
+    href="#def-epsilon">Odjeljak 7</a>`,
+  "glossary.term7": "vlakno",
+  "glossary.definition7":
+    `Kružnica na S³ koju Hopfovo preslikavanje šalje u jednu tačku sfere S²: rotacije koje se razlikuju za valjanje
+    oko nosa. <a href="#def-fibre">Odjeljak 5</a>`,
+  "glossary.term8": "geodezijska linija",
+  "glossary.definition8":
+    `Najkraći put po zakrivljenoj površi; na sferi, luk velikog kruga. <a href="#def-geodesic">Odjeljak 3</a>`,
+  "glossary.term9": "Hopfovo preslikavanje",
+  "glossary.definition9":
+    `<var>h</var>: S³ → S², <var>h</var>(<var>q</var>) = <var>q</var> i <var>q̄</var>, kamo je usmjeren nos
+    (jednačina 5 u radu). <a href="#def-hopf">Odjeljak 5</a>`,
+  "glossary.term10": "Karcherova sredina",
+  "glossary.definition10":
+    `Rotacija koja minimizira zbir kvadrata uglova okreta do mjerenja (geodezijska sredina). <a
+    href="#def-karcher">Odjeljak 9</a>`,
+  "glossary.term11": "KLI",
+  "glossary.definition11":
+    `Kuramoto–Lohe interpolacija: tok iz rada <var>q</var>′ = <var>r</var> −
+    (<var>q</var>·<var>r</var>)<var>q</var> od <var>p</var> do <var>r</var>. <a href="#def-kli">Odjeljak 7</a>`,
+  "glossary.term12": "Kuramotov model",
+  "glossary.definition12":
+    `Oscilatori s vlastitim frekvencijama, od kojih svakog privlače faze ostalih. <a href="#def-kuramoto">Odjeljak
+    6</a>`,
+  "glossary.term13": "parametar reda",
+  "glossary.definition13":
+    `<var>R</var>, dužina prosječne tačke oscilatora (na S³, srednje vrijednosti kvaterniona
+    <var>q<sub>j</sub></var>): 0 raštrkani, 1 usklađeni. <a href="#def-order">Odjeljak 6</a>`,
+  "glossary.term14": "izuzetak (autlajer)",
+  "glossary.definition14": `Mjerenje daleko od istine, a ne samo zašumljeno. <a href="#def-outlier">Odjeljak 9</a>`,
+  "glossary.term15": "kvaternion",
+  "glossary.definition15":
+    `Broj <var>a</var> + <var>b</var> i + <var>c</var> j + <var>d</var> k uz i² = j² = k² = ijk = −1. <a
+    href="#def-quaternion">Odjeljak 2</a>`,
+  "glossary.term16": "RK4",
+  "glossary.definition16":
+    `Klasična Runge–Kutta metoda četvrtog reda: četiri izvoda po koraku, greška reda <var>h</var>⁴. <a
+    href="#def-rk4">Odjeljak 8</a>`,
+  "glossary.term17": "S³",
+  "glossary.definition17":
+    `3-sfera: tačke prostora R⁴ na udaljenosti 1 od ishodišta, jedinični kvaternioni. <a href="#def-s3">Odjeljak
+    3</a>`,
+  "glossary.term18": "SLERP",
+  "glossary.definition18":
+    `Sferna linearna interpolacija: luk velikog kruga od <var>p</var> do <var>r</var> konstantnom brzinom. <a
+    href="#def-slerp">Odjeljak 4</a>`,
+  "glossary.term19": "Squad",
+  "glossary.definition19":
+    `Shoemakeov splajn kvaterniona: glatka kriva kroz mnogo ključeva, sastavljena od SLERP-ova. <a
+    href="#def-squad">Odjeljak 9</a>`,
+  "glossary.term20": "sinhronizacija",
+  "glossary.definition20":
+    `Usaglašavanje mnogo rotacija: međusobno usklađene (roj) ili u skladu s mjerenjima između parova (graf). <a
+    href="#def-sync">Odjeljak 9</a>`,
+  "glossary.term21": "jedinični kvaternion",
+  "glossary.definition21":
+    `Kvaternion dužine 1; svaki je rotacija, a svaka rotacija su dva takva. <a
+    href="#def-unit-quaternion">Odjeljak 2</a>`,
+  "paper.title1": "Literatura",
+  "paper.item1":
+    `Zinaid Kapić i Aladin Crnkić, <span lang="en">“Interpolating Rotations with Non-abelian Kuramoto Model on the
+    3-Sphere”</span> (Interpolacija rotacija neabelovim Kuramotovim modelom na 3-sferi), preprint, Tehnički
+    fakultet, Univerzitet u Bihaću. Jednačine (3) i (5), Algoritam 1, Tabela 1 i <var>T</var> = 11.66 navedeni su
+    iz njega; prateći video: <a
+    href="https://www.youtube.com/watch?v=IkE_olufAuI">youtube.com/watch?v=IkE_olufAuI</a>.`,
+  "paper.item2":
+    `Y. Kuramoto, <span lang="en">“Self-entrainment of a population of coupled non-linear oscillators”, Lecture Notes
+    in Physics</span> 39, Springer, 1975.`,
+  "paper.item3":
+    `M. A. Lohe, <span lang="en">“Non-Abelian Kuramoto models and synchronization”, Journal of Physics A</span> 42,
+    395101, 2009.`,
+  "paper.item4": `K. Shoemake, <span lang="en">“Animating rotation with quaternion curves”</span>, SIGGRAPH 1985.`,
+  "save.intro":
+    `Svaka slika vodiča onakva kakva je sada, kao slika (PNG, dvostruka rezolucija ekrana) ili za štampu (SVG,
+    vektorski); put Algoritma 1 na primjeru iz rada kao podaci.`,
+  "footer.p1":
+    `Rust → WebAssembly; svaki broj na ovoj stranici izračunava se u tvom pregledniku kodom npm paketa
+    <code>kli</code>. Tipke: Space pusti/pauziraj, ← → pomjeri sat, Home ponovo; strelice okreću sferu iz
+    odjeljka 5 kad je ona u fokusu. Dalje: isprobaj dvije rotacije iz rada na stranici <a href="index.html">KLI: dvije
+    rotacije</a>.`,
+  "care.label1": "Skretanje",
+  "care.label2": "Propinjanje",
+  "care.label3": "Nagib",
+  "turn.label1": "Osa",
+  "turn.label2": "Ugao θ",
+  "slerp.label1": "s",
+  "hopf.label1": "Valjanje ρ",
+  "kuramoto.label1": "Sprezanje K",
+  "kuramoto.label2": "Sprezanje K",
+  "kli.label1": "Cifre od ε",
+  "kli.label2": "Korak δ",
+  "integrators.label1": "Integrator",
+  "integrators.label2": "Korak h",
+  "many.label1": "Glatkoća",
+  "many.label2": "Sprezanje K",
+  "many.label3": "Udio izuzetaka",
+  "many.label4": "Udio pogrešnih grana",
+  "clock.label1": "Vrijeme",
+  "care.value1": "skretanje 30°",
+  "care.value2": "propinjanje 40°",
+  "care.value3": "nagib 0°",
+  "turn.option1": "dijagonala, (1, 1, 1)/√3",
+  "turn.value1": "90° oko z",
+  "hopf.value1": "valjanje oko nosa 0°",
+  "kuramoto.button1": "Pusti od t = 0",
+  "kuramoto.button2": "Pusti od t = 0",
+  "kli.button1": "Nazad δ",
+  "kli.button2": "Korak δ",
+  "kli.button3": "Pusti od t = 0",
+  "integrators.option1": "geodezijski",
+  "many.fallback1":
+    `Živa slika sa stranice <a href="keyframes.html">Mnogo rotacija</a> pojavit će se ovdje kad stigneš do nje.`,
+  "many.fallback2": `Živa slika sa stranice <a href="swarm.html">Roj</a> pojavit će se ovdje kad stigneš do nje.`,
+  "many.fallback3": `Živa slika sa stranice <a href="average.html">Usrednjavanje</a> pojavit će se ovdje kad stigneš do nje.`,
+  "many.fallback4":
+    `Živa slika sa stranice <a href="sync.html">Sinhronizacija rotacija</a> pojavit će se ovdje kad stigneš do nje.`,
+  "clock.button1": "Pusti",
+  "clock.button2": "Ponovo",
+  "clock.link1": "Veza na ovaj prikaz",
+  "contents.aria1": "Sadržaj",
+  "care.aria1": "Avion zaokrenut skretanjem, propinjanjem i nagibom, s osama skretanja, propinjanja i nagiba nacrtanim isprekidanim linijama.",
+  "turn.aria1": "Avion zaokrenut oko izabrane ose za izabrani ugao, osa nacrtana kroz njega, njegova četiri broja ispod.",
+  "cover.aria1": "Kružnica na S³ kroz 1 i osu, na kojoj su q i minus q suprotne tačke, i avion zaokrenut za q i za minus q, koji izgleda isto.",
+  "cover.aria2": "Postavi ugao θ",
+  "slerp.aria1": "Luk na S³ od p do r s tačkom SLERP-a i tačkom NLERP-a pri s, i oznakama na svakih 0.1 od s za obje: ravnomjernim za SLERP, neravnomjernim za NLERP.",
+  "hopf.role1": "sfera koja se okreće",
+  "hopf.aria1": "Sfera S² s tačkom nosa h(q) i tačkom krila na kružnici pravaca okomitih na nos. Tipke sa strelicama okreću sferu; okreće se i povlačenjem.",
+  "hopf.aria2": "Avion iz odjeljka 2, zaokrenut oko nosa za izabrani ugao.",
+  "kuramoto.aria1": "Dvadeset faza kao tačke na kružnici, parametar reda kao strelica iz središta, a pored njih parametar reda R u zavisnosti od vremena.",
+  "kuramoto.aria2": "Osam sljedbenika na S³, nacrtanih Hopfovim slikama na sferi s tragovima, kako teku prema fiksiranom vođi r.",
+  "kli.aria1": "Veliki krug kroz p i r s q u prikazanom trenutku, r rastavljen na dio duž q i tangentni dio, koji je q prim.",
+  "kli.aria2": "Koliko je KLI odmakao duž luka u zavisnosti od vremena, brz rast koji se izravnava, pored prave linije SLERP-a koja stiže do kraja u T.",
+  "kli.aria3": "Udaljenost od r u svakom koraku Algoritma 1 na logaritamskoj skali, opada pravolinijski dok ne padne ispod epsilon u T.",
+  "integrators.aria1": "Odstupanje dužine q od 1 u zavisnosti od vremena na logaritamskoj skali za Eulerov, RK4 i geodezijski korak, izabrani podebljan.",
+  "many.figure1": "Hopfove krive kroz četiri ključna kadra",
+  "many.valuetext1": "glatkoća 1",
+  "many.figure2": "200 rotacija roja na Hopfovoj sferi",
+  "many.figure3": "Mjerenja i njihove sredine na Hopfovoj sferi",
+  "many.valuetext2": "20% izuzetaka",
+  "many.figure4": "Graf rotacija, grane obojene prema tome koliko se svako mjerenje razlikuje od rješenja",
+  "many.valuetext3": "10% pogrešnih",
+  "clock.aria1": "Sat vodiča",
+};
+
+/** Tekst koji page.js piše dok se slike mijenjaju. */
+export const live = {
+  /** Osa okreta u rečenici. */
+  axes: { x: "x", y: "y", z: "z", diagonal: "dijagonale (1, 1, 1)" },
+  /** Vrijednost svakog klizača riječima, pored njega i za čitač ekrana (`aria-valuetext`). */
+  values: {
+    yaw: (/** @type {string} */ v) => `skretanje ${v}°`,
+    pitch: (/** @type {string} */ v) => `propinjanje ${v}°`,
+    bank: (/** @type {string} */ v) => `nagib ${v}°`,
+    angle: (/** @type {string} */ v, /** @type {string} */ axis) => `${v}° oko ${axis}`,
+    roll: (/** @type {string} */ v) => `valjanje oko nosa ${v}°`,
+  },
+  /** Klizači slika s drugih stranica riječima (`aria-valuetext`). */
+  figures: {
+    smoothness: (/** @type {string} */ v) => `glatkoća ${v}`,
+    outliers: (/** @type {string} */ v) => `${v}% izuzetaka`,
+    wrong: (/** @type {string} */ v) => `${v}% pogrešnih`,
+  },
+  slerp: (/** @type {Record<string, string>} */ v) => `Pri s = ${v.s} SLERP je ${v.slerp}° duž luka, NLERP ${v.nlerp}°.`,
+  hopf: (/** @type {Record<string, string>} */ v) => `Nos pokazuje prema ${v.nose}; krilo prema ${v.wing}.`,
+  drift: (/** @type {Record<string, string>} */ v) =>
+    `Najveće odstupanje pri h = ${v.h}: Euler ${v.euler}, RK4 ${v.rk4}, geodezijski ${v.geodesic}.`,
+  phases: (/** @type {Record<string, string>} */ v) => `Pri t = ${v.t}, R = ${v.order}.`,
+  lohe: (/** @type {Record<string, string>} */ v) =>
+    `Pri t = ${v.t}, R = ${v.order}; najdalji sljedbenik je okret od ${v.spread}° od r.`,
+  kli: (/** @type {Record<string, string>} */ v) => `Pri t = ${v.t}, φ = ${v.phi}°, s = ${v.s}: q = ${v.q}.`,
+  steps: (/** @type {Record<string, string>} */ v) =>
+    `Korak n = ${v.n} pri t = ${v.t}: ‖r − q‖ = ${v.distance}. Uz ε = ${v.epsilon} i δ = ${v.delta} petlja staje ` +
+    `nakon ${v.steps} koraka, pri T = ${v.T}; T* = ${v.predicted}.`,
+  /** Vrijednost klizača vremena za čitač ekrana. */
+  time: (/** @type {string} */ t, /** @type {string} */ end) => `t = ${t} od ${end}`,
+  /** Tekstualne alternative platna kad vrijeme stane. */
+  labels: {
+    phases: (/** @type {Record<string, string>} */ v) =>
+      `Dvadeset Kuramotovih faza na kružnici pri t = ${v.t}: parametar reda R = ${v.order}.`,
+    lohe: (/** @type {Record<string, string>} */ v) =>
+      `Osam sljedbenika na S³ teče prema fiksiranom vođi pri t = ${v.t}: najdalji je ${v.spread}° od njega.`,
+    kli: (/** @type {Record<string, string>} */ v) =>
+      `KLI na velikom krugu od p do r pri t = ${v.t}: φ = ${v.phi}°, brzina je tangentni dio vektora r.`,
+    clock: (/** @type {Record<string, string>} */ v) =>
+      `Napredak KLI-ja duž luka u zavisnosti od vremena: s = ${v.s} pri t = ${v.t}, isprva brzo, zatim sporo; SLERP je prava linija.`,
+    steps: (/** @type {Record<string, string>} */ v) =>
+      `Udaljenost Algoritma 1 do r u svakom koraku na logaritamskoj skali, pravolinijski pad; ${v.steps} koraka, zaustavljanje pri T = ${v.T}.`,
+  },
+  /** Naslovni red sačuvanog videa. */
+  video: "KLI: tok iz rada na velikom krugu i njegov sat",
+};
+
+/** Riječi koje modul crta na slikama (crates/kli-demo/src/learn/view.rs): `{ime}` tamo popunjava vrijednost. */
+export const canvas = {
+  yaw: "skretanje",
+  pitch: "propinjanje",
+  bank: "nagib",
+  locked: "ose skretanja i nagiba se poklapaju: blokada kardana",
+  apart: "ose skretanja i nagiba razmaknute {angle}°",
+  axis: "osa",
+  about: "{angle}° oko {axis}",
+  diagonal: "dijagonale",
+  turnedBy: "zaokrenut za q",
+  turnedByMinus: "zaokrenut za −q",
+  circle: "θ = {angle}°: q je {half}° duž kružnice",
+  slerp: "s = {s}: SLERP {slerp}°, NLERP {nlerp}° (od 60°)",
+  wing: "krilo",
+  nose: "h(q): nos",
+  rolled: "zaokrenut {angle}° oko nosa",
+  order: "R(t), parametar reda",
+  pinned: "h(r), fiksiran",
+  widest: "t = {t}   najdalji: {angle}° od r",
+  along: "koliko duž luka: s",
+  steps: "‖r − qₙ‖ u svakom koraku",
+  drift: "| |q| − 1 |, odstupanje od S³",
+  largest: "{integrator}: najveće odstupanje {drift}",
+  geodesic: "geodezijski",
+};
+
+/** Riječi zajedničkog izvršnog dijela na ovoj stranici, po njihovom engleskom; `{ime}` je vrijednost. */
+export const runtime = {
+  "Play": "Pusti",
+  "Pause": "Pauza",
+  "Text size": "Veličina teksta",
+  "normal": "normalna",
+  "large (1.5×)": "velika (1.5×)",
+  "projector (2×)": "projektor (2×)",
+  "hall (3×)": "sala (3×)",
+  "Loading the WebAssembly module…": "Učitava se WebAssembly modul…",
+  "The WebAssembly module could not be loaded: {error}": "WebAssembly modul se nije mogao učitati: {error}",
+  "{key} must be from {min} to {max} on this page, as its slider (got {value})":
+    "{key} mora biti od {min} do {max} na ovoj stranici, kao na klizaču (dato je {value})",
+  "Pages": "Stranice",
+  "KLI: two rotations": "KLI: dvije rotacije",
+  "Many rotations": "Mnogo rotacija",
+  "The swarm": "Roj",
+  "Averaging": "Usrednjavanje",
+  "Synchronising rotations": "Sinhronizacija rotacija",
+  "Learn: a guided tour": "Uči: vodič",
+  "The mathematics": "Matematika",
+  "For teachers": "Za nastavnike",
+  "With three.js": "Uz three.js",
+  "Save": "Sačuvaj",
+  "{noun} as {format}": "{noun} kao {format}",
+  "Saved {what}.": "Sačuvano: {what}.",
+  "Could not save: {error}": "Nije se moglo sačuvati: {error}",
+  "Euler angles": "Eulerovi uglovi",
+  "the Euler angles figure": "slika Eulerovih uglova",
+  "Turn": "Okret",
+  "the turn": "okret",
+  "Double cover": "Dvostruko natkrivanje",
+  "the double cover": "dvostruko natkrivanje",
+  "SLERP": "SLERP",
+  "the SLERP figure": "slika SLERP-a",
+  "Hopf sphere": "Hopfova sfera",
+  "the Hopf sphere": "Hopfova sfera",
+  "Rolled object": "Tijelo okrenuto oko nosa",
+  "the rolled object": "tijelo okrenuto oko nosa",
+  "Phases": "Faze",
+  "the Kuramoto phases": "Kuramotove faze",
+  "Swarm on S³": "Roj na S³",
+  "the swarm on S³": "roj na S³",
+  "KLI": "KLI",
+  "the KLI figure": "slika KLI-ja",
+  "Clock": "Sat",
+  "the clock": "sat",
+  "Algorithm 1": "Algoritam 1",
+  "Algorithm 1's steps": "koraci Algoritma 1",
+  "Drift": "Odstupanje",
+  "the drift": "odstupanje",
+  "Algorithm 1's path": "Put Algoritma 1",
+  "Save a video": "Sačuvaj video",
+  ["Each frame drawn for its own time (not filmed from the screen): smooth on any machine. MP4 and WebM play in " +
+    "PowerPoint, Keynote and Google Slides; GIF goes anywhere ({rate} frames a second)."]:
+    "Svaki kadar nacrtan za svoj trenutak (ne snima se ekran): glatko na svakom računaru. MP4 i WebM se reprodukuju " +
+    "u programima PowerPoint, Keynote i Google Slides; GIF radi svuda ({rate} kadrova u sekundi).",
+  "Format": "Format",
+  "Size": "Veličina",
+  "Frames a second": "Kadrova u sekundi",
+  "From t =": "Od t =",
+  "to t =": "do t =",
+  "Length, seconds": "Trajanje, sekunde",
+  "Figures in the clip:": "Slike u snimku:",
+  "Save video": "Sačuvaj video",
+  "Cancel": "Otkaži",
+  "Video progress": "Napredak videa",
+  "animated GIF": "animirani GIF",
+  "{format} (this browser cannot encode it)": "{format} (ovaj preglednik ga ne može kodirati)",
+  "Cannot save the video: {problem}.": "Video se ne može sačuvati: {problem}.",
+  "Encoding the video…": "Kodira se video…",
+  "Saved {name}: {frames} frames, {size} MB, encoded in {took} s.":
+    "Sačuvano {name}: {frames} kadrova, {size} MB, kodirano za {took} s.",
+  "The video was cancelled.": "Video je otkazan.",
+  "Could not save the video: {error}": "Video se nije mogao sačuvati: {error}",
+  "euler": "Eulerovi uglovi",
+  "turn": "okret",
+  "cover": "natkrivanje",
+  "slerp": "SLERP",
+  "hopf": "Hopfova sfera",
+  "rolled": "valjanje",
+  "phases": "faze",
+  "lohe": "roj na S³",
+  "kli": "KLI",
+  "clock": "sat",
+  "steps": "koraci",
+  "drift": "odstupanje",
+};
