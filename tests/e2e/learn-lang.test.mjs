@@ -109,6 +109,18 @@ test("learn.html?lang=bs is Bosnian from title to footer, and stays so as a slid
   await context.close();
 });
 
+test("?lang=bs: the values of the URL the tour refuses are refused in Bosnian, beside their fields", async () => {
+  const { page, context, problems } = await open("learn.html?lang=bs&axis=w&int=foo&digits=2.5&yaw=999&h=abc", { reducedMotion: "reduce" });
+  const errors = Object.fromEntries(await page.$$eval(".field-error", (all) => all.map((o) => [o.id, o.textContent ?? ""]).filter(([, t]) => t)));
+  assert.deepEqual(Object.keys(errors).sort(), ["axis-error", "digits-error", "integrator-error", "step-error", "yaw-error"]);
+  assert.equal(errors["axis-error"], 'osa mora biti x, y, z ili diagonal (dato je "w")');
+  assert.equal(errors["step-error"], "Korak h: mora biti broj od 0.01 do 1 (dato je NaN)");
+  assert.equal(errors["yaw-error"], "Skretanje: mora biti broj od -180 do 180 (dato je 999)");
+  assert.deepEqual(englishIn(Object.entries(errors)), []);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
 test("learn.html is English as it was, with no script too; ?lang=bs with no script is English and shown", async () => {
   const { page, context, problems } = await open("learn.html", { reducedMotion: "reduce" });
   assert.equal(await page.getAttribute("html", "lang"), "en");

@@ -11,7 +11,8 @@ import { $ } from "../runtime/dom.js";
 import { page as registered } from "../pages.js";
 import { Player } from "../runtime/player.js";
 import { Page } from "../runtime/runtime.js";
-import { strings, translate } from "./strings/index.js";
+import { lang, strings, translate } from "./strings/index.js";
+import { LEARN } from "./state.js";
 
 /** @typedef {import("./state.js").LearnState} LearnState */
 /** @typedef {import("../runtime/runtime.js").Host<LearnState, LearnDemo>} Host */
@@ -56,6 +57,7 @@ const page = new Page({
   // The words the module draws, from the strings (English or Bosnian).
   create: (module, state) => new module.LearnDemo({ ...state, words: strings.canvas }),
   words: strings.runtime,
+  message: (error) => (lang === "en" ? undefined : refused(error)),
   form: "#learn-inputs",
   readout: (run, t) => {
     quoteTime(run, t);
@@ -93,6 +95,20 @@ const page = new Page({
   },
   wire: (host) => wireTour(host),
 });
+
+/** An Error of the module about a value of the URL, in the page's language (by the key it names; the
+ *  value it got is the one in its message's "(got …)", or the runtime's own, already in the page's words);
+ *  undefined for any other. */
+function refused(/** @type {unknown} */ error) {
+  const key = LEARN.keyOf(error);
+  const got = /\((?:got|dato je) (.*)\)$/.exec(error instanceof Error ? error.message : "")?.[1] ?? "?";
+  if (key === "axis" || key === "integrator" || key === "digits") return live.refused[key](got);
+  const range = LEARN.schema.find((entry) => entry.key === key && "range" in entry);
+  if (!range || !("range" in range)) return undefined;
+  const [min, max] = range.range.map(String);
+  const label = document.querySelector(`[name="${key}"]`)?.closest("label")?.querySelector("span")?.textContent ?? key;
+  return `${label}: ${live.refused.number(min, max, got)}`;
+}
 
 /** The sliders' values beside them, and in words for a screen reader. */
 function showValues(/** @type {Host} */ host) {

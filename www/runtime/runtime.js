@@ -94,6 +94,8 @@ import { videoPanel } from "./video/panel.js";
  *   page's clip by default (the paper's video: object and Hopf sphere), its title line and its file name's stem
  * @property {Readonly<Record<string, string>>} [words] the runtime's words in the page's language, by their English
  *   (dom.js `say`; the tour's Bosnian): none, English
+ * @property {(error: unknown) => string | undefined} [message] an Error of the module in the page's language (the
+ *   tour's Bosnian): none, or undefined, its own message
  */
 
 /**
@@ -277,10 +279,11 @@ export class Page {
 
   /** Shows an Error of the module beside the fields it is about (routed by `error.argument`). */
   showError(/** @type {unknown} */ error) {
+    const message = this.d.message?.(error) ?? messageOf(error);
     const routed = this.d.route?.(this.host, error);
-    if (routed) return showFieldError(this.form, routed.output, routed.fields, messageOf(error));
+    if (routed) return showFieldError(this.form, routed.output, routed.fields, message);
     const key = this.s.keyOf(error) ?? this.s.schema[0].key;
-    showFieldError(this.form, key, this.schema.fields(key), messageOf(error));
+    showFieldError(this.form, key, this.schema.fields(key), message);
   }
 
   /** Shows a run: its figures, the page's own parts, the preset it is, the URL. */

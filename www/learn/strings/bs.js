@@ -632,6 +632,14 @@ export const live = {
   },
   /** Naslovni red sačuvanog videa. */
   video: "KLI: tok iz rada na velikom krugu i njegov sat",
+  /** Vrijednost iz adrese koju modul nije prihvatio, po ključu kontrole: `got` je vrijednost kako ju je adresa dala. */
+  refused: {
+    axis: (/** @type {string} */ got) => `osa mora biti x, y, z ili diagonal (dato je ${got})`,
+    integrator: (/** @type {string} */ got) => `integrator mora biti euler, rk4 ili geodesic (dato je ${got})`,
+    digits: (/** @type {string} */ got) => `cifre od ε moraju biti cijeli broj od 1 do 10 (dato je ${got})`,
+    number: (/** @type {string} */ min, /** @type {string} */ max, /** @type {string} */ got) =>
+      `mora biti broj od ${min} do ${max} (dato je ${got})`,
+  },
 };
 
 /** Riječi koje modul crta na slikama (crates/kli-demo/src/learn/view.rs): `{ime}` tamo popunjava vrijednost. */

@@ -627,6 +627,15 @@ export const live = {
   },
   /** A saved video's title line. */
   video: "KLI: the paper's flow on the great circle, and its clock",
+  /** A value of the URL the module refused, by the control's key (the English page shows the module's own message;
+   *  another language these): `got` is the value as the URL gave it. */
+  refused: {
+    axis: (/** @type {string} */ got) => `the axis must be x, y, z or diagonal (got ${got})`,
+    integrator: (/** @type {string} */ got) => `the integrator must be euler, rk4 or geodesic (got ${got})`,
+    digits: (/** @type {string} */ got) => `the digits of ε must be a whole number from 1 to 10 (got ${got})`,
+    number: (/** @type {string} */ min, /** @type {string} */ max, /** @type {string} */ got) =>
+      `must be a number from ${min} to ${max} (got ${got})`,
+  },
 };
 
 /** The words the module draws on the figures (crates/kli-demo/src/learn/view.rs): `{name}` is filled in there. */
