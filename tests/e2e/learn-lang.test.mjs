@@ -77,6 +77,10 @@ test("learn.html?lang=bs is Bosnian from title to footer, and stays so as a slid
   assert.equal(await page.getAttribute("[name=angle]", "aria-valuetext"), "90° oko z");
   assert.equal((await page.textContent("#save-title")).trim(), "Sačuvaj");
   assert.equal(await page.getAttribute('#save button[data-save="euler"][data-format="png"]', "aria-label"), "slika Eulerovih uglova kao PNG");
+  // The glossary in Bosnian alphabetical order, each term with its definition.
+  const terms = await page.$$eval("#glossary dt", (all) => all.map((dt) => dt.textContent ?? ""));
+  assert.deepEqual(terms, [...terms].sort((a, b) => a.localeCompare(b, "bs")));
+  assert.equal(await page.$eval("#g-fibre + dd a", (a) => a.getAttribute("href")), "#def-fibre");
   // The exercises' links keep the language.
   assert.equal(await page.getAttribute('#care a.set', "href"), "?pitch=90&lang=bs#care");
   // A slider moved: its value, the text that quotes it and the URL, all still Bosnian.

@@ -100,7 +100,7 @@ export const page = {
     jedinični kvaternioni čine <dfn id="def-s3">3-sferu, S³</dfn>, trodimenzionalnu površ u R⁴, kao što je obična
     sfera S² dvodimenzionalna površ u R³. Ne možemo je nacrtati cijelu, ali možemo nacrtati jedan presjek: kako
     <var>θ</var> raste, <var>q</var> = cos(<var>θ</var>/2) + sin(<var>θ</var>/2) <var>u</var> kruži po kružnici kroz
-    1 i <var>u</var>, upola brzinom okreta.`,
+    1 i <var>u</var>, dvostruko sporije od okreta.`,
   "cover.p2":
     `Pritisni 360° ispod. Avion je opet tamo gdje je počeo, a ipak je <var>q</var> = −1 na suprotnoj strani kružnice.
     Budući da je (−<var>q</var>) <var>v</var> (−<var>q̄</var>) = <var>q</var> <var>v</var> <var>q̄</var>, kvaternioni
@@ -253,7 +253,7 @@ export const page = {
   "kli.p3":
     `Za jedinični <var>q</var> je <var>q</var> <var>r̄</var> <var>q</var> = 2(<var>q</var>·<var>r</var>)<var>q</var>
     − <var>r</var>, pa je ovo jednostavno <var>q</var>′ = <var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>.
-    Slika pokazuje zašto to radi. (<var>q</var>·<var>r</var>)<var>q</var> je dio vektora <var>r</var> duž
+    Slika pokazuje zašto to funkcioniše. (<var>q</var>·<var>r</var>)<var>q</var> je dio vektora <var>r</var> duž
     <var>q</var>; ostatak je okomit na <var>q</var>, tangenta sfere. Brzina okomita na <var>q</var> čuva
     |<var>q</var>| = 1, jer je d|<var>q</var>|²/d<var>t</var> = 2 <var>q</var>·<var>q</var>′ = 0. I leži u ravni
     vektora <var>q</var> i <var>r</var>, pa <var>q</var> nikad ne napušta veliki krug kroz <var>p</var> i
@@ -379,7 +379,7 @@ export const page = {
     se udaljenost mjeri pravo kroz unutrašnjost, duž tetive |<var>p</var> − <var>q</var>|, a ne po sferi: za
     jedinične kvaternione |<var>p</var> − <var>q</var>|² = 2 − 2 <var>p</var>·<var>q</var>, pa kratkoj tetivi
     odgovara velik skalarni proizvod. <dfn id="def-karcher">Karcherova sredina</dfn> umjesto toga minimizira zbir
-    kvadrata uglova okreta do mjerenja. Izuzeci vuku obje; medijan, na stranici <a
+    kvadrata uglova okreta do mjerenja. Izuzeci povlače obje sredine; medijan, na stranici <a
     href="average.html">Usrednjavanje</a>, mnogo manje. Pomjeri udio izuzetaka. Na slici je svaka tačka mjesto kamo
     mjerenje usmjerava nos, njegova Hopfova slika <var>h</var>(<var>r<sub>j</sub></var>); izuzeci imaju svoju boju i
     dobiju prsten kad ih medijan izdvoji. ★ je istina, ● sljedbenik na putu od 1. Četiri sredine su bijeli krugovi

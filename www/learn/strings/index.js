@@ -92,6 +92,13 @@ export function translate(text, entry) {
         format.setAttribute("aria-label", (text.runtime["{noun} as {format}"] ?? "").replace("{noun}", say(noun)).replace("{format}", kind));
       }
     }
+    // The glossary in the language's alphabetical order (each term with its definition).
+    const glossary = document.querySelector("#glossary dl");
+    if (glossary) {
+      const terms = [...glossary.querySelectorAll("dt")].map((dt) => ({ dt, dd: dt.nextElementSibling }));
+      terms.sort((a, b) => (a.dt.textContent ?? "").localeCompare(b.dt.textContent ?? "", lang));
+      for (const { dt, dd } of terms) glossary.append(dt, ...(dd ? [dd] : []));
+    }
     // The first pictures were drawn with the English words (at build time, scripts/first-pictures.mjs):
     // they go, as the runtime's do when the URL asks for another state, and each figure shows once
     // the module has drawn it in this language.
