@@ -385,8 +385,8 @@ export const page = {
     dobiju prsten kad ih medijan izdvoji. ★ je istina, ● sljedbenik na putu od 1. Četiri sredine su bijeli krugovi
     s prstenom u svojoj boji: tetivna sredina narandžasto, kvaternionska sredina zeleno (četiri broja usrednjena, svi
     na istoj strani S³, pa podijeljena dužinom), Karcherova (geodezijska) sredina ljubičasto, medijan plavo.
-    (Legenda slike kaže „boje kao na stupcima”: stupci su na stranici <a href="average.html">Usrednjavanje</a>;
-    ovdje su boje ove.)`,
+    (Legenda slike imenuje svaku; stranica <a href="average.html">Usrednjavanje</a> ih prikazuje uz stupce istih
+    boja.)`,
   "many.heading4": "Sinhronizacija rotacija na grafu",
   "many.p5":
     `Robot koji mapira zgradu (SLAM, simultana lokalizacija i mapiranje: istovremeno gradi mapu i pronalazi sebe u

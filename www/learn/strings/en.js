@@ -383,9 +383,8 @@ export const page = {
     <var>h</var>(<var>r<sub>j</sub></var>); the wild ones have a colour of their own and are ringed once the median
     has set them aside. ★ is the truth, ● the follower on its way from 1. The four means are white discs ringed in
     their colour: the chordal mean orange, the quaternion mean green (the four numbers averaged, all on one side of
-    S³, then divided by the length), the Karcher (geodesic) mean purple, the median blue. (The figure's key says
-    “colours as in the bars”: the bars are on the <a href="average.html">Averaging</a> page; here these are the
-    colours.)`,
+    S³, then divided by the length), the Karcher (geodesic) mean purple, the median blue. (The figure's key names
+    each; the <a href="average.html">Averaging</a> page sets them beside bars of the same colours.)`,
   "many.heading4": "Synchronising rotations on a graph",
   "many.p5":
     `A robot mapping a building (SLAM, simultaneous localisation and mapping: it builds the map and finds itself in
