@@ -31,6 +31,7 @@ mod g2o_tests;
 mod graph;
 mod lanczos;
 mod newton;
+mod poses;
 mod robust;
 mod spectral;
 #[cfg(test)]
