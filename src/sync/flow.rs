@@ -31,9 +31,15 @@ pub struct SyncFlow {
 impl SyncFlow {
     /// The flow from `start` (one quaternion a node, normalised here).
     pub fn new(graph: Graph, start: &[DQuat]) -> Result<SyncFlow, KliError> {
+        SyncFlow::starting(graph, start, "start")
+    }
+
+    /// As [`SyncFlow::new`], its refusals naming the caller's own argument for the start
+    /// (`initial`, the file's poses, say): `initial[3]`, not `start[3]`.
+    pub fn starting(graph: Graph, start: &[DQuat], argument: &str) -> Result<SyncFlow, KliError> {
         if start.len() != graph.count() {
             return Err(KliError::new(
-                "start",
+                argument,
                 crate::error::ErrorKind::WrongLength {
                     expected: 4 * graph.count(),
                     got: start.len().saturating_mul(4),
@@ -44,7 +50,7 @@ impl SyncFlow {
         let q = start
             .iter()
             .enumerate()
-            .map(|(i, &q)| crate::quaternion::unit(&format!("start[{i}]"), q))
+            .map(|(i, &q)| crate::quaternion::unit(&format!("{argument}[{i}]"), q))
             .collect::<Result<Vec<_>, _>>()?;
         let pull = vec![DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0); q.len()];
         Ok(SyncFlow { graph, q, time: 0.0, pull })

@@ -560,7 +560,14 @@ fn the_flow_refuses_bad_steps_and_starts() {
     assert_eq!(flow.time(), 0.0);
     assert!(SyncFlow::new(triangle(), &[DQuat::IDENTITY; 2]).is_err());
     let zero = DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0);
-    assert!(SyncFlow::new(triangle(), &[DQuat::IDENTITY, zero, DQuat::IDENTITY]).is_err());
+    let bad = SyncFlow::new(triangle(), &[DQuat::IDENTITY, zero, DQuat::IDENTITY]).unwrap_err();
+    assert_eq!(bad.argument(), "start[1]");
+    // Started from the caller's own argument, a refusal names it.
+    let bad = SyncFlow::starting(triangle(), &[DQuat::IDENTITY, zero, DQuat::IDENTITY], "initial")
+        .unwrap_err();
+    assert_eq!(bad.argument(), "initial[1]");
+    let short = SyncFlow::starting(triangle(), &[DQuat::IDENTITY; 2], "initial").unwrap_err();
+    assert_eq!(short.argument(), "initial");
     // A step far too long still leaves every node on S³.
     flow.step(1e6, 3).unwrap();
     assert!(flow.rotations().iter().all(|q| (q.length() - 1.0).abs() < 1e-12));

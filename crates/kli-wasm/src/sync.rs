@@ -436,11 +436,9 @@ impl JsSyncFlow {
             None => initial.map(|q| ("initial", q)),
         };
         let flow = match start {
-            Some((name, start)) => SyncFlow::new(graph, &start).map_err(|e| {
-                // The core names `start`; the caller may have passed it as `initial`.
-                let renamed = e.argument().replacen("start", name, 1);
-                order.error(e.renamed(renamed))
-            })?,
+            Some((name, start)) => {
+                SyncFlow::starting(graph, &start, name).map_err(|e| order.error(e))?
+            }
             None => SyncFlow::random(graph, seed),
         };
         Ok(JsSyncFlow { flow, order })
