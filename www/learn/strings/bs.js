@@ -500,6 +500,30 @@ export const page = {
   "glossary.definition21":
     `Kvaternion dužine 1; svaki je rotacija, a svaka rotacija su dva takva. <a
     href="#def-unit-quaternion">Odjeljak 2</a>`,
+  "glossary.term22": "konjugovani kvaternion",
+  "glossary.definition22":
+    `Za <var>q</var> = <var>a</var> + <var>b</var> i + <var>c</var> j + <var>d</var> k: <var>q̄</var> = <var>a</var> −
+    <var>b</var> i − <var>c</var> j − <var>d</var> k; za jedinični kvaternion, suprotni okret. <a href="#turn">Odjeljak 2</a>`,
+  "glossary.term23": "skalarni proizvod",
+  "glossary.definition23":
+    `Za dva kvaterniona, <var>p</var>·<var>r</var>: njihova četiri dijela pomnožena u parovima i sabrana; za jedinične,
+    kosinus ugla <var>φ</var> među njima. <a href="#cover">Odjeljak 3</a>`,
+  "glossary.term24": "veliki krug",
+  "glossary.definition24":
+    `Presjek sfere i ravni kroz njen centar: najveće kružnice sfere i njeni najkraći putevi. <a
+    href="#def-geodesic">Odjeljak 3</a>`,
+  "glossary.term25": "ključni kadar",
+  "glossary.definition25":
+    `Orijentacija zadana u nekom trenutku (animatorova, tačka na putu robota) kroz koju glatki okret mora proći. <a
+    href="#many">Odjeljak 9</a>`,
+  "glossary.term26": "Loheov model",
+  "glossary.definition26":
+    `Kuramotov model proširen sa faza na kružnici na rotacije na S³ (neabelovski Kuramotov model): svaki jedinični
+    kvaternion vučen po sferi prema ostalima. <a href="#kuramoto">Odjeljak 6</a>`,
+  "glossary.term27": "fiksirani vođa",
+  "glossary.definition27":
+    `Oscilator Loheovog modela koji miruje, a ostali (sljedbenici) teku prema njemu; sa jednim sljedbenikom, to je KLI. <a
+    href="#kuramoto">Odjeljak 6</a>`,
   "paper.title1": "Literatura",
   "paper.item1":
     `Zinaid Kapić i Aladin Crnkić, <span lang="en">“Interpolating Rotations with Non-abelian Kuramoto Model on the

@@ -497,6 +497,30 @@ export const page = {
   "glossary.definition21":
     `A quaternion of length 1; each is a rotation, and each rotation is two of them. <a
     href="#def-unit-quaternion">Section 2</a>`,
+  "glossary.term22": "conjugate",
+  "glossary.definition22":
+    `Of <var>q</var> = <var>a</var> + <var>b</var> i + <var>c</var> j + <var>d</var> k: <var>q̄</var> = <var>a</var> −
+    <var>b</var> i − <var>c</var> j − <var>d</var> k; for a unit quaternion, the opposite turn. <a href="#turn">Section 2</a>`,
+  "glossary.term23": "dot product",
+  "glossary.definition23":
+    `Of two quaternions, <var>p</var>·<var>r</var>: their four parts multiplied in pairs and added; for unit ones, the
+    cosine of the angle <var>φ</var> between them. <a href="#cover">Section 3</a>`,
+  "glossary.term24": "great circle",
+  "glossary.definition24":
+    `Where a sphere meets a plane through its centre: the sphere's largest circles, and its shortest paths. <a
+    href="#def-geodesic">Section 3</a>`,
+  "glossary.term25": "keyframe",
+  "glossary.definition25":
+    `An orientation given at a moment (an animator's, a robot's waypoint) that a smooth turn must pass through. <a
+    href="#many">Section 9</a>`,
+  "glossary.term26": "Lohe model",
+  "glossary.definition26":
+    `Kuramoto's model grown from phases on a circle to rotations on S³ (the non-abelian Kuramoto model): each unit
+    quaternion pulled along the sphere towards the others. <a href="#kuramoto">Section 6</a>`,
+  "glossary.term27": "pinned leader",
+  "glossary.definition27":
+    `An oscillator of the Lohe model held still, which the others (the followers) flow to; with one follower, KLI. <a
+    href="#kuramoto">Section 6</a>`,
   "paper.title1": "References",
   "paper.item1":
     `Zinaid Kapić and Aladin Crnkić, “Interpolating Rotations with Non-abelian Kuramoto Model on the 3-Sphere”,
