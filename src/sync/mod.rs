@@ -41,6 +41,7 @@ pub use certificate::Certificate;
 pub use flow::{MAX_STEPS, SyncFlow};
 pub use g2o::{OtherLines, PoseGraph, read_g2o};
 pub use graph::Graph;
+pub use poses::{MAX_RANK, PoseCertificate, PoseOptions, SynchronizedPoses, synchronize_poses};
 
 use glam::DQuat;
 

@@ -1,4 +1,7 @@
-//! Tests of the eliminated pose-graph problem against an independent dense least-squares solve.
+//! Tests of pose-graph synchronisation against independent computations: exact data, a dense
+//! least-squares solve of the translations, finite differences, an eigenvalue worked by hand,
+//! MATH.md's reference optimum for CSAIL, and `bench/posegraph_reference.py`'s (NumPy/SciPy
+//! Levenberg–Marquardt) for the 3D grids.
 
 use std::f64::consts::PI;
 
@@ -7,9 +10,20 @@ use faer::{Mat, Side};
 use glam::{DMat3, DQuat, DVec3};
 
 use super::reduced::{Edge, Reduced};
-use super::stiefel::from_rotations;
+use super::stiefel::{Stack, from_rotations, project, retract};
+use super::*;
 use crate::swarm::Random;
-use crate::sync::PoseGraph;
+use crate::sync::{OtherLines, read_g2o};
+
+/// The angle between two rotations, blind to sign.
+fn angle(a: DQuat, b: DQuat) -> f64 {
+    let e = a.conjugate() * b;
+    2.0 * DVec3::new(e.x, e.y, e.z).length().atan2(e.w.abs())
+}
+
+fn message(error: KliError) -> String {
+    error.message(&|s| s.to_string(), &|x| x.to_string())
+}
 
 /// A pose graph of `n` poses in dimension `d` with the given measurements.
 fn pose_graph(
@@ -33,6 +47,82 @@ fn pose_graph(
         initial: None,
         positions: None,
         skipped: Vec::new(),
+    }
+}
+
+/// Random poses (rotations uniform, about z in 2D; positions normal, spread 5) on a ring with
+/// chords of probability `p`, each edge measured exactly, `κ` in [1, 10), `τ` in [0.1, 5).
+fn exact(d: usize, n: usize, p: f64, seed: u64) -> (PoseGraph, Vec<DQuat>, Vec<DVec3>) {
+    let mut random = Random::new(seed);
+    let rotations: Vec<DQuat> = (0..n)
+        .map(|_| {
+            if d == 2 {
+                DQuat::from_rotation_z(2.0 * PI * random.uniform())
+            } else {
+                random.unit_quaternion()
+            }
+        })
+        .collect();
+    let positions: Vec<DVec3> = (0..n)
+        .map(|_| {
+            let v = random.gaussian3() * 5.0;
+            if d == 2 { DVec3::new(v.x, v.y, 0.0) } else { v }
+        })
+        .collect();
+    let mut edges = Vec::new();
+    for i in 0..n {
+        for j in i + 1..n {
+            if j == i + 1 || (i == 0 && j == n - 1) || random.uniform() < p {
+                // Either direction: the measurement is T_i⁻¹ T_j for the edge as written.
+                edges.push(if random.uniform() < 0.5 { [i, j] } else { [j, i] });
+            }
+        }
+    }
+    let relative = edges.iter().map(|&[i, j]| rotations[i].conjugate() * rotations[j]).collect();
+    let translations = edges
+        .iter()
+        .map(|&[i, j]| rotations[i].conjugate() * (positions[j] - positions[i]))
+        .collect();
+    let kappa = edges.iter().map(|_| 1.0 + 9.0 * random.uniform()).collect();
+    let tau = edges.iter().map(|_| 0.1 + 4.9 * random.uniform()).collect();
+    (pose_graph(d, n, edges, relative, translations, kappa, tau), rotations, positions)
+}
+
+/// The truth in the anchor's frame: `R_aᵀ R_i`, `R_aᵀ (t_i − t_a)`.
+fn anchored(rotations: &[DQuat], positions: &[DVec3], a: usize) -> (Vec<DQuat>, Vec<DVec3>) {
+    let g = rotations[a].conjugate();
+    (
+        rotations.iter().map(|&q| g * q).collect(),
+        positions.iter().map(|&t| g * (t - positions[a])).collect(),
+    )
+}
+
+#[test]
+fn exact_measurements_give_the_poses_back_certified() {
+    for (d, n, p, seed) in [(2, 30, 0.1, 1), (3, 30, 0.1, 2), (2, 12, 0.5, 3), (3, 60, 0.05, 4)] {
+        let (graph, rotations, positions) = exact(d, n, p, seed);
+        for anchor in [0, n / 2] {
+            let result =
+                synchronize_poses(&graph, &PoseOptions { anchor, ..Default::default() }).unwrap();
+            let (truth_q, truth_t) = anchored(&rotations, &positions, anchor);
+            assert!(result.cost < 1e-16, "{d}D {n}: {}", result.cost);
+            for i in 0..n {
+                let gap = angle(result.rotations[i], truth_q[i]);
+                assert!(gap < 1e-9, "{d}D {n}: rotation {i} off by {gap}");
+                let gap = (result.translations[i] - truth_t[i]).length();
+                assert!(gap < 1e-9, "{d}D {n}: translation {i} off by {gap}");
+                assert!(result.rotations[i].w >= 0.0);
+            }
+            assert_eq!(result.rotations[anchor], DQuat::IDENTITY);
+            assert_eq!(result.translations[anchor], DVec3::ZERO);
+            if d == 2 {
+                assert!(result.translations.iter().all(|t| t.z == 0.0));
+                assert!(result.rotations.iter().all(|q| q.x == 0.0 && q.y == 0.0));
+            }
+            let c = result.certificate;
+            assert!(c.certified && c.rank == d, "{d}D {n}: {c:?}");
+            assert!(c.lambda_min.abs() <= c.tolerance, "{d}D {n}: {c:?}");
+        }
     }
 }
 
@@ -148,5 +238,264 @@ fn eliminating_the_translations_is_the_direct_least_squares_minimum() {
                 assert!(gap <= 1e-12, "{d}D: t_{k}[{c}] off by {gap}");
             }
         }
+    }
+}
+
+/// A random point of `St(d, r)ⁿ`: each block's rows orthonormalised.
+fn random_point(d: usize, n: usize, r: usize, random: &mut Random) -> Stack {
+    let mut x = Stack::zeros(d, n, r);
+    x.data.iter_mut().for_each(|v| *v = random.gaussian());
+    retract(&x, &Stack::zeros(d, n, r))
+}
+
+/// `⟨grad F, V⟩` and `⟨V, Hess F[V]⟩` against central differences of `F(R_X(h V))`: the polar
+/// retraction is second order, so the second difference is the Hessian's quadratic form.
+#[test]
+fn the_gradient_and_hessian_match_finite_differences() {
+    for (d, r, seed) in [(2, 2, 21), (2, 3, 22), (3, 3, 23), (3, 5, 24)] {
+        let graph = random_graph(d, 6, 11, seed);
+        let problem = reduced(&graph);
+        let mut random = Random::new(seed);
+        let x = random_point(d, 6, r, &mut random);
+        let mut v = Stack::zeros(d, 6, r);
+        v.data.iter_mut().for_each(|a| *a = random.gaussian());
+        let v = project(&x, &v);
+        let model = trust::Model::at(&problem, x.clone());
+        let f = |h: f64| problem.cost(&retract(&x, &v.scaled(h))).0;
+        let h = 1e-4;
+        let first = (f(h) - f(-h)) / (2.0 * h);
+        let second = (f(h) - 2.0 * f(0.0) + f(-h)) / (h * h);
+        let g = model.gradient.dot(&v);
+        let hv = v.dot(&model.hessian(&problem, &v));
+        assert!((first - g).abs() <= 1e-6 * g.abs().max(1.0), "{d}, {r}: {first} vs {g}");
+        assert!((second - hv).abs() <= 1e-4 * hv.abs().max(1.0), "{d}, {r}: {second} vs {hv}");
+    }
+}
+
+/// A ring of eight planar poses measured as identical (`R̃ = I`, `t̃ = 0`) started at the twisted
+/// state `R_k = rot(2πk/8)`: a local minimum on SO(2)⁸, so the certificate fails there with
+/// `S = L − (2 − 2 cos 45°) I` (`Λ_i = (2 − 2cos φ) I`, and `L`'s smallest eigenvalue is 0 on the
+/// constant vectors): `λ_min = −(2 − √2)`. The staircase climbs, escapes, and ends at the global
+/// minimum, 0, certified.
+#[test]
+fn the_staircase_escapes_a_twisted_ring() {
+    let n = 8;
+    let edges: Vec<[usize; 2]> = (0..n).map(|i| [i, (i + 1) % n]).collect();
+    let graph = pose_graph(
+        2,
+        n,
+        edges,
+        vec![DQuat::IDENTITY; n],
+        vec![DVec3::ZERO; n],
+        vec![1.0; n],
+        vec![1.0; n],
+    );
+    let problem = reduced(&graph);
+    let twisted: Vec<DQuat> =
+        (0..n).map(|k| DQuat::from_rotation_z(2.0 * PI * k as f64 / n as f64)).collect();
+    let verdict = staircase::certify(&problem, &from_rotations(2, &twisted), 1e-9);
+    assert!(!verdict.certified);
+    let expected = -(2.0 - 2.0_f64.sqrt());
+    assert!((verdict.lambda_min - expected).abs() < 1e-9, "{}", verdict.lambda_min);
+    // At rank 3 the escape leads (by the ring's symmetry) to a second saddle: one row of every
+    // block common, the other twisted in the plane orthogonal to it, half the cost and the same
+    // λ_min; rank 4 untwists it.
+    let solved = solve(&problem, 10, &twisted).unwrap();
+    assert!(solved.certified && solved.rank > 2, "{} {}", solved.certified, solved.rank);
+    let (cost, _) = problem.cost(&from_rotations(2, &solved.rotations));
+    assert!(cost < 1e-20, "{cost}");
+    // With no room to climb, the twisted ring is where it stays, uncertified.
+    let stuck = solve(&problem, 2, &twisted).unwrap();
+    assert!(!stuck.certified && stuck.rank == 2);
+    let (cost, _) = problem.cost(&from_rotations(2, &stuck.rotations));
+    assert!((cost - 8.0 * 2.0 * (2.0 - 2.0_f64.sqrt())).abs() < 1e-9, "{cost}");
+}
+
+fn fixture(name: &str) -> PoseGraph {
+    let text = match name {
+        "CSAIL" => include_str!("../../../tests/fixtures/posegraphs/CSAIL.g2o"),
+        "smallGrid3D" => include_str!("../../../tests/fixtures/posegraphs/smallGrid3D.g2o"),
+        _ => include_str!("../../../tests/fixtures/posegraphs/tinyGrid3D.g2o"),
+    };
+    read_g2o(text, OtherLines::Refuse).unwrap()
+}
+
+/// CSAIL (2D, 1,045 poses): MATH.md's optimum, 31.70372 (NumPy LM; SE-Sync's Table 1: 31.70).
+#[test]
+fn csail_reaches_maths_certified_optimum() {
+    let graph = fixture("CSAIL");
+    assert_eq!((graph.dimension, graph.count, graph.edges.len()), (2, 1045, 1172));
+    let result = synchronize_poses(&graph, &PoseOptions::default()).unwrap();
+    assert!((result.cost - 31.70372).abs() <= 1e-6 * 31.70372, "{}", result.cost);
+    assert!(result.certificate.certified, "{:?}", result.certificate);
+}
+
+/// The 3D grids against bench/posegraph_reference.py (NumPy/SciPy Levenberg–Marquardt from the
+/// chordal rotations and least-squares translations, to a relative decrease of 1e-15):
+/// tinyGrid3D 18.5193664213, smallGrid3D 1025.39805563.
+#[test]
+fn the_3d_grids_reach_the_reference_optima_certified() {
+    for (name, poses, edges, reference) in
+        [("tinyGrid3D", 9, 11, 18.5193664213), ("smallGrid3D", 125, 297, 1025.39805563)]
+    {
+        let graph = fixture(name);
+        assert_eq!((graph.dimension, graph.count, graph.edges.len()), (3, poses, edges));
+        let result = synchronize_poses(&graph, &PoseOptions::default()).unwrap();
+        assert!((result.cost - reference).abs() <= 1e-9 * reference, "{name}: {}", result.cost);
+        assert!(result.certificate.certified, "{name}: {:?}", result.certificate);
+    }
+}
+
+/// `exact`'s graph with every measurement perturbed: the relative rotation by a normal rotation
+/// vector of `sigma` radians, the translation by normal noise of `sigma`.
+fn noisy(d: usize, n: usize, p: f64, seed: u64, sigma: f64) -> PoseGraph {
+    let (mut graph, _, _) = exact(d, n, p, seed);
+    let mut random = Random::new(seed + 1000);
+    for (q, t) in graph.relative.iter_mut().zip(&mut graph.translations) {
+        let mut v = random.gaussian3() * sigma;
+        let mut u = random.gaussian3() * sigma;
+        if d == 2 {
+            (v.x, v.y, u.z) = (0.0, 0.0, 0.0);
+        }
+        *q = (*q * crate::quaternion::exp(v * 0.5)).normalize();
+        *t += u;
+    }
+    graph
+}
+
+/// Every weight times 1e6: the same poses, the cost and the certificate's numbers times 1e6.
+#[test]
+fn the_answer_is_in_the_callers_units() {
+    let graph = noisy(3, 12, 0.3, 31, 0.1);
+    let mut scaled = graph.clone();
+    scaled.rotation_weights.iter_mut().for_each(|w| *w *= 1e6);
+    scaled.translation_weights.iter_mut().for_each(|w| *w *= 1e6);
+    let (a, b) = (
+        synchronize_poses(&graph, &PoseOptions::default()).unwrap(),
+        synchronize_poses(&scaled, &PoseOptions::default()).unwrap(),
+    );
+    assert!((b.cost - 1e6 * a.cost).abs() <= 1e-9 * b.cost, "{} vs {}", a.cost, b.cost);
+    assert!(a.certificate.certified && b.certificate.certified);
+    assert!(
+        (b.certificate.tolerance - 1e6 * a.certificate.tolerance).abs()
+            <= 1e-9 * b.certificate.tolerance
+    );
+    let lambda = (a.certificate.lambda_min, b.certificate.lambda_min);
+    assert!((lambda.1 - 1e6 * lambda.0).abs() <= 1e6 * a.certificate.tolerance, "{lambda:?}");
+    for i in 0..12 {
+        assert!(angle(a.rotations[i], b.rotations[i]) < 1e-8);
+        assert!((a.translations[i] - b.translations[i]).length() < 1e-8);
+    }
+}
+
+#[test]
+fn bad_graphs_and_options_are_refused_naming_them() {
+    let (graph, _, _) = exact(3, 6, 0.3, 41);
+    let refused = |graph: &PoseGraph, options: PoseOptions| {
+        message(synchronize_poses(graph, &options).unwrap_err())
+    };
+    let plain = PoseOptions::default;
+    let m = refused(&graph, PoseOptions { anchor: 6, ..plain() });
+    assert!(m.starts_with("anchor must be a pose, from 0 to 5 (got 6)"), "{m}");
+    let m = refused(&graph, PoseOptions { max_rank: 2, ..plain() });
+    assert!(m.starts_with("max_rank must be from the dimension, 3, to 64 (got 2)"), "{m}");
+    let m = refused(&graph, PoseOptions { max_rank: 65, ..plain() });
+    assert!(m.starts_with("max_rank must be from the dimension, 3, to 64 (got 65)"), "{m}");
+    let mut bad = graph.clone();
+    bad.dimension = 4;
+    assert!(refused(&bad, plain()).starts_with("dimension must be 2 or 3 (got 4)"));
+    for w in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        let mut bad = graph.clone();
+        bad.rotation_weights[2] = w;
+        let m = refused(&bad, plain());
+        assert!(m.starts_with("rotation_weights[2] must be a finite number > 0"), "{w}: {m}");
+        let mut bad = graph.clone();
+        bad.translation_weights[1] = w;
+        let m = refused(&bad, plain());
+        assert!(m.starts_with("translation_weights[1] must be a finite number > 0"), "{w}: {m}");
+    }
+    let mut bad = graph.clone();
+    bad.translations[3].y = f64::NAN;
+    let m = refused(&bad, plain());
+    assert!(
+        m.starts_with("translations[3] must be 3 finite numbers: its y component is NaN"),
+        "{m}"
+    );
+    let mut bad = graph.clone();
+    bad.relative[0] = DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0);
+    assert!(refused(&bad, plain()).starts_with("relative[0] must be a quaternion"));
+    let mut bad = graph.clone();
+    bad.translation_weights.pop();
+    let m = refused(&bad, plain());
+    assert!(m.starts_with("translation_weights must hold one value per edge"), "{m}");
+    // Two components: poses {0, 1, 2} and {3, 4}, as `synchronize` names them.
+    let split = pose_graph(
+        2,
+        5,
+        vec![[0, 1], [1, 2], [3, 4]],
+        vec![DQuat::IDENTITY; 3],
+        vec![DVec3::X; 3],
+        vec![1.0; 3],
+        vec![1.0; 3],
+    );
+    let m = refused(&split, plain());
+    assert!(
+        m.starts_with("edges do not connect the graph: nodes 3, 4 are cut off from node 0"),
+        "{m}"
+    );
+    let lonely = pose_graph(2, 3, vec![], vec![], vec![], vec![], vec![]);
+    let m = refused(&lonely, plain());
+    assert!(
+        m.starts_with("edges do not connect the graph: nodes 1, 2 are cut off from node 0"),
+        "{m}"
+    );
+    let mut off = split.clone();
+    off.edges[2] = [3, 3];
+    assert!(refused(&off, plain()).starts_with("edges[2] joins node 3 to itself"));
+    // 2D: rotations about z only, translations in the plane.
+    let (planar, _, _) = exact(2, 5, 0.3, 42);
+    let mut bad = planar.clone();
+    bad.relative[1] = DQuat::from_rotation_x(0.1);
+    assert!(refused(&bad, plain()).starts_with("relative[1] must be a rotation about z"));
+    let mut bad = planar.clone();
+    bad.translations[1].z = 1.0;
+    assert!(refused(&bad, plain()).starts_with("translations[1] must lie in the plane"));
+    let none = pose_graph(2, 0, vec![], vec![], vec![], vec![], vec![]);
+    assert!(refused(&none, plain()).starts_with("count must be at least 1"));
+    // One pose: trivially the anchor, certified.
+    let one = pose_graph(3, 1, vec![], vec![], vec![], vec![], vec![]);
+    let result = synchronize_poses(&one, &plain()).unwrap();
+    assert_eq!((result.rotations, result.translations), (vec![DQuat::IDENTITY], vec![DVec3::ZERO]));
+    assert!(result.cost == 0.0 && result.certificate.certified);
+}
+
+/// The benchmark graphs, timed: `KLI_POSEGRAPHS=<folder of SE-Sync's data/> cargo test --release
+/// --lib measure_the_benchmark_graphs -- --ignored --nocapture` prints each file's poses, cost,
+/// certificate and time (MATH.md's optima: CSAIL 31.70372, intel 52.34823, manhattan 6,431.391,
+/// garage 1.262524, sphere2500 1,687.006).
+#[cfg(not(target_arch = "wasm32"))]
+#[test]
+#[ignore]
+fn measure_the_benchmark_graphs() {
+    let Ok(folder) = std::env::var("KLI_POSEGRAPHS") else { return };
+    let names = std::env::var("KLI_POSEGRAPH_FILES")
+        .unwrap_or_else(|_| "CSAIL intel parking-garage sphere2500".into());
+    for name in names.split_whitespace() {
+        let text = std::fs::read_to_string(format!("{folder}/{name}.g2o")).unwrap();
+        let start = std::time::Instant::now();
+        let graph = read_g2o(&text, OtherLines::Skip).unwrap();
+        let read = start.elapsed();
+        let result = synchronize_poses(&graph, &PoseOptions::default()).unwrap();
+        let total = start.elapsed();
+        println!(
+            "{name}: d = {}, {} poses, {} edges: f = {:.10}, {} trust-region steps, {:?}, read \
+             {read:.2?}, total {total:.2?}",
+            graph.dimension,
+            graph.count,
+            graph.edges.len(),
+            result.cost,
+            result.iterations,
+            result.certificate,
+        );
     }
 }
