@@ -499,3 +499,37 @@ fn measure_the_benchmark_graphs() {
         );
     }
 }
+
+/// Weights and translations at the ends of f64's range: an answer with finite poses, or the
+/// refusal that names the graph's scale; never a panic or a hang.
+#[test]
+fn extreme_scales_end_in_an_answer_or_a_refusal() {
+    let base = noisy(3, 8, 0.3, 51, 0.05);
+    let m = base.edges.len();
+    let mut cases = Vec::new();
+    for (k, w) in [(0, 1e-300), (1, 1e300), (2, f64::MIN_POSITIVE), (3, 1e-20)] {
+        let mut g = base.clone();
+        g.translation_weights[k] = w;
+        cases.push(g.clone());
+        g.rotation_weights[k] = w;
+        cases.push(g);
+    }
+    for scale in [1e200, 1e-200, 1e150] {
+        let mut g = base.clone();
+        g.translations.iter_mut().for_each(|t| *t *= scale);
+        cases.push(g);
+    }
+    let mut g = base.clone();
+    g.translations[m - 1] = DVec3::splat(1e300);
+    cases.push(g);
+    for (c, graph) in cases.iter().enumerate() {
+        match synchronize_poses(graph, &PoseOptions::default()) {
+            Ok(result) => {
+                assert!(result.cost.is_finite() && result.cost >= 0.0, "case {c}: {}", result.cost);
+                assert!(result.translations.iter().all(|t| t.is_finite()), "case {c}");
+                assert!(result.rotations.iter().all(|q| q.is_finite()), "case {c}");
+            }
+            Err(e) => assert_eq!(e.argument(), "graph", "case {c}: {e}"),
+        }
+    }
+}
