@@ -449,6 +449,16 @@ fn bad_graphs_and_options_are_refused_naming_them() {
         m.starts_with("edges do not connect the graph: nodes 1, 2 are cut off from node 0"),
         "{m}"
     );
+    // Ids beyond the count, and a count no edge list could connect (refused without allocating
+    // anything of its size).
+    let mut beyond = split.clone();
+    beyond.edges[1] = [1, 7];
+    let m = refused(&beyond, plain());
+    assert!(m.starts_with("edges[1] names node 7, but count is 5"), "{m}");
+    let mut huge = split.clone();
+    huge.count = usize::MAX;
+    let m = refused(&huge, plain());
+    assert!(m.starts_with("edges do not connect the graph: nodes 3, 4, 5, 6"), "{m}");
     let mut off = split.clone();
     off.edges[2] = [3, 3];
     assert!(refused(&off, plain()).starts_with("edges[2] joins node 3 to itself"));
