@@ -31,9 +31,13 @@ export function setup() {
 
 /** A fresh page that records problems: console errors, page errors, failed or foreign requests.
  *  `init` runs in the page before any of its scripts; `prepare(context)` before it loads. */
-export async function open(query = "", options = {}) {
+export async function open(query = "", { still = false, ...options } = {}) {
   const { page, context, problems } = await blank(options);
   await page.goto(`${origin}/${query}`);
+  // A page moves once its reader is there (runtime.js, waitForReader): the pointer moving over
+  // it, as a reader's would, before the module is ready; `still` leaves the page as Lighthouse
+  // sees it, with no input.
+  if (!still) await engage(page);
   // Pages with a load status are ready when it hides; others (the examples) once loaded.
   await page.waitForFunction(() => document.querySelector("#load-status")?.hidden ?? document.readyState === "complete");
   // The canvases are sized (a ResizeObserver's callback) and drawn in the frames after that:
@@ -41,6 +45,9 @@ export async function open(query = "", options = {}) {
   await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
   return { page, context, problems };
 }
+
+/** The reader arrives: the pointer moves over the page (a page's motion waits for it). */
+export const engage = (page) => page.mouse.move(3, 3);
 
 /** As `open`, but the page is left blank: the caller loads what it wants, from `origin()`. */
 export async function blank({ init, prepare, ...options } = {}) {
@@ -109,7 +116,7 @@ export function compare(page, a, b, { slack = 0 } = {}) {
   }, [a.toString("base64"), b.toString("base64"), slack]);
 }
 
-/** Pixel statistics of a canvas: how many are not white, and how many are near a colour. */
+/** Pixel statistics of a canvas: how many are painted and not white, and how many are near a colour. */
 export function canvasStats(page, selector, colours = {}) {
   return page.evaluate(([selector, colours]) => {
     const canvas = document.querySelector(selector);
@@ -117,8 +124,9 @@ export function canvasStats(page, selector, colours = {}) {
     const result = { drawn: 0, width: canvas.width, height: canvas.height, clientWidth: canvas.clientWidth, hash: 0 };
     for (const name of Object.keys(colours)) result[name] = 0;
     for (let i = 0; i < data.length; i += 4) {
-      const [r, g, b] = [data[i], data[i + 1], data[i + 2]];
-      if (r < 250 || g < 250 || b < 250) result.drawn++;
+      const [r, g, b, a] = [data[i], data[i + 1], data[i + 2], data[i + 3]];
+      // Painted and not white: a canvas starts transparent, (0, 0, 0, 0), which is not a drawing.
+      if (a > 0 && (r < 250 || g < 250 || b < 250)) result.drawn++;
       result.hash = (result.hash * 31 + r + 7 * g + 13 * b) % 1000000007;
       for (const [name, [cr, cg, cb]] of Object.entries(colours)) {
         if (Math.abs(r - cr) < 40 && Math.abs(g - cg) < 40 && Math.abs(b - cb) < 40) result[name]++;

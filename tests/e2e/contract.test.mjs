@@ -350,3 +350,37 @@ test("no empty figure: a page's sweep fills itself once the page is interactive,
     }
   }
 });
+
+test("a page moves once its reader is there: still at load (its first frame, no time in its address), moving at the first input; a first press of Play or Space plays", async () => {
+  const { engage } = await import("./browser.mjs");
+  /** The page's time and its Play button's word, a moment apart. */
+  const now = (page) => page.evaluate(() => ({ t: Number(document.querySelector("#readout").textContent.match(/t = ([\d.]+)/)?.[1]),
+    play: document.querySelector("#play").textContent, address: location.search }));
+  for (const { html } of PAGES.filter((page) => page.name !== "learn")) {
+    const { page, context, problems } = await open(html, { still: true });
+    try {
+      await page.waitForTimeout(800);
+      const still = await now(page);
+      assert.equal(still.t, 0, `${html}: the time moved with no input`);
+      assert.equal(still.play, "Play", html);
+      assert.doesNotMatch(still.address, /[?&]t=/, `${html}: waiting to play, its address has no time`);
+      await engage(page);
+      await page.waitForFunction(() => Number(document.querySelector("#readout").textContent.match(/t = ([\d.]+)/)?.[1]) > 0, null, { timeout: 5000 });
+      assert.equal((await now(page)).play, "Pause", `${html}: playing once the pointer moved`);
+      assert.deepEqual(problems, [], html);
+    } finally {
+      await context.close();
+    }
+  }
+  // The first input is the reader taking the controls: it plays, and the wait does not undo it.
+  for (const press of [(page) => page.click("#play"), (page) => page.keyboard.press("Space")]) {
+    const { page, context } = await open("sync.html", { still: true });
+    try {
+      await press(page);
+      await page.waitForTimeout(600);
+      assert.equal((await now(page)).play, "Pause", "a first press of Play (or Space) plays");
+    } finally {
+      await context.close();
+    }
+  }
+});

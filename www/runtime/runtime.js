@@ -185,6 +185,7 @@ export class Page {
     this.figures.watch(() => this.requestDraw());
     this.figures.waiting = (name) => this.run !== null && (this.d.waiting?.(this.run, name) ?? false);
     this.player = new Player({ draw: () => this.draw(), changed: () => this.playChanged() });
+    this.waitForReader();
     /** @type {R | null} */
     this.run = null;
     /** @type {State} */
@@ -329,7 +330,8 @@ export class Page {
     if (!run) return;
     if (this.ui.time) this.ui.time.value = String(this.t);
     this.ui.readout.textContent = this.lastReadout = this.d.readout(run, this.t);
-    const paused = this.d.timeInUrl && !this.playing ? this.t.toFixed(2) : undefined;
+    // Waiting for the reader to start it, the page is as good as playing: no time in its address.
+    const paused = this.d.timeInUrl && !this.playing && !this.pending ? this.t.toFixed(2) : undefined;
     // `?lang=` (the tour's language) is kept as the page was opened with it.
     const lang = this.query.get("lang") ?? undefined;
     this.writeUrl(this.schema.toUrl(this.state, { t: paused, embed: this.embed ? "1" : undefined, lang }));
@@ -345,6 +347,8 @@ export class Page {
 
   /** The play button and the time's readouts follow the player. */
   playChanged() {
+    // Played or paused by the reader (or the page at their word): no motion is waiting any more.
+    this.pending = false;
     this.ui.play.textContent = say(this.d.words, this.playing ? "Pause" : "Play");
     this.showTime();
     // Paused, every view shows the time on show (playing, those off screen were left).
@@ -360,6 +364,8 @@ export class Page {
   }
 
   seek(/** @type {number} */ t) {
+    // The reader took the time: the motion waiting for them does not start over their choice.
+    this.pending = false;
     const done = this.player.seek(t);
     this.showTime();
     // A run that computes its way there (the swarm) arrives tasks later.
@@ -510,6 +516,37 @@ export class Page {
     wirePrinting(() => this.figures, () => (Number.isFinite(printAt) ? printAt : this.t), svgs);
   }
 
+  /**
+   * The page moves once its reader is there: at their first input (the pointer moving over the
+   * page, a touch, a key, a wheel, a scroll), not at load, which would be a stream of frames before
+   * anyone has done anything: on a slow phone each frame of the synchronisation page took 60–160 ms
+   * of the main thread (drawing, then compositing the canvases without a GPU), and Lighthouse's
+   * total blocking time was 7 s. Until then the page shows its first frame, playing-to-be (its
+   * address has no time). The listeners are set before the module loads, so an input while it
+   * loads counts.
+   */
+  waitForReader() {
+    /** A play waiting for the reader's first input. */
+    this.pending = false;
+    this.readerHere = false;
+    const inputs = ["pointermove", "pointerdown", "keydown", "wheel", "touchstart", "scroll"];
+    const here = () => {
+      for (const input of inputs) removeEventListener(input, here, true);
+      this.readerHere = true;
+      // After the input's own handlers and the click that follows a touch: a reader who pressed
+      // Play or a key takes the controls (playChanged, seek), and the wait ends without motion.
+      setTimeout(() => this.pending && this.play(), 250);
+    };
+    for (const input of inputs) addEventListener(input, here, { capture: true, passive: true });
+  }
+
+  /** Plays now if the reader is here, or at their first input (`waitForReader`). */
+  playWithReader() {
+    if (this.readerHere) return this.play();
+    this.pending = true;
+    this.showTime();
+  }
+
   /** Loads the module, then shows the URL's state: the values the module refuses are shown
    *  beside their fields (their text kept there, to mend) and the defaults stand in for them.
    *  True once the page is interactive; false when the module could not be loaded. */
@@ -543,7 +580,7 @@ export class Page {
     this.schema.keepTexts(texts, errors.map((error) => this.s.keyOf(error)));
     errors.forEach((error) => this.showError(error));
     // In the same task as the first show: the first URL written is the playing page's, with no time.
-    if (!paused) this.play();
+    if (!paused) this.playWithReader();
     else if (t !== null) this.seek(parseNumber(t));
     this.ui.load.textContent = "";
     this.ui.load.hidden = true;
