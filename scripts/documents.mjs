@@ -20,7 +20,7 @@ import { Marked } from "marked";
 export const DOCUMENTS = [
   {
     source: "docs/MATH.md", html: "math.html", contents: true, single: true,
-    description: "The mathematics behind kli, checked: KLI's model and closed form, the Hopf map, the chain through keyframes, the swarm, averaging and synchronisation on a graph, with reference values.",
+    description: "The mathematics behind kli, checked: KLI's model and closed form, the Hopf map, the chain through keyframes, the swarm, averaging, synchronisation on a graph and pose graphs (SE-Sync), with reference values.",
     lead: '<p>New to quaternions? The <a href="learn.html">guided tour</a> explains every idea here from the start, each with a live figure.</p>',
   },
   {
