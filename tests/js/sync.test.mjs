@@ -9,7 +9,7 @@ import { readFileSync } from "node:fs";
 const pkg = new URL("../../pkg/", import.meta.url);
 const sync = await import(new URL("sync.js", pkg));
 sync.initSync({ module: readFileSync(new URL("sync_bg.wasm", pkg)) });
-const { synchronizeRotations, readG2o, SyncFlow } = sync;
+const { synchronizeRotations, readG2o, SyncFlow, synchronizePoses, writeG2o } = sync;
 const fixture = JSON.parse(readFileSync(new URL("../fixtures/sync.json", import.meta.url)));
 const xyzw = ([w, x, y, z]) => [x, y, z, w];
 
@@ -148,7 +148,7 @@ test("the sync results are typed by method under tsc --strict: the README's code
   const dir = mkdtempSync(join(tmpdir(), "kli-sync-types-"));
   const from = new URL("sync.js", pkg).pathname;
   writeFileSync(join(dir, "use.ts"), `
-    import { readG2o, synchronizeRotations, SyncFlow, isKliError, type PoseGraph, type SyncMethod } from ${JSON.stringify(from)};
+    import { readG2o, synchronizeRotations, SyncFlow, synchronizePoses, writeG2o, isKliError, type PoseGraph, type PoseGraphInput, type SynchronizedPoses, type SyncMethod } from ${JSON.stringify(from)};
     declare const text: string;
     declare const method: SyncMethod;
     // The README's code, as written.
@@ -167,7 +167,22 @@ test("the sync results are typed by method under tsc --strict: the README's code
     synchronizeRotations(graph, { method }).certificate.certified;
     // @ts-expect-error: the chordal optimum flags no outliers
     synchronizeRotations(graph).outliers.length;
-    void [rotations, certified, flagged, chordal, flow, skipped];
+    // Pose graphs: a PoseGraph is their input as it is, a result their poses as it is.
+    const poses = synchronizePoses(graph, { anchor: 0, maxRank: 10, order: "xyzw" });
+    const poseCertified: boolean = poses.certificate.certified;
+    const rank: number = poses.certificate.rank;
+    const positions: Float64Array = poses.translations;
+    const saved: string = writeG2o(graph, poses, { order: "xyzw" });
+    const plain: PoseGraphInput = { dimension: 2, edges: [[0, 1]], relative: [[1, 0, 0, 0]], translations: [[1, 0, 0]] };
+    const written: string = writeG2o(plain, { rotations: [[1, 0, 0, 0], [1, 0, 0, 0]], translations: [0, 0, 0, 1, 0, 0] });
+    const typed: SynchronizedPoses = poses;
+    // @ts-expect-error: the dimension is 2 or 3
+    synchronizePoses({ ...plain, dimension: 4 });
+    // @ts-expect-error: pose options have no method
+    synchronizePoses(graph, { method: "robust" });
+    // @ts-expect-error: the certificate has no gap
+    poses.certificate.gap;
+    void [rotations, certified, flagged, chordal, flow, skipped, poseCertified, rank, positions, saved, written, typed];
   `);
   writeFileSync(join(dir, "tsconfig.json"), JSON.stringify({
     compilerOptions: { strict: true, noEmit: true, module: "nodenext", moduleResolution: "nodenext", target: "es2022", lib: ["es2022"], types: [], skipLibCheck: false },
@@ -179,4 +194,108 @@ test("the sync results are typed by method under tsc --strict: the README's code
   } catch (e) {
     assert.fail(`tsc: ${e.stdout}${e.stderr}`);
   }
+});
+
+// Pose graphs (synchronizePoses, writeG2o) through the package: CSAIL to MATH.md's optimum, a 3D
+// grid to bench/posegraph_reference.py's (src/sync/poses/tests.rs), certified; the README's
+// square; a graph written and read back as it was; hostile input naming itself.
+const posegraphs = new URL("../fixtures/posegraphs/", import.meta.url);
+const fixtureText = (name) => readFileSync(new URL(name, posegraphs), "utf8");
+
+test("synchronizePoses reaches CSAIL's and smallGrid3D's certified optima, z = 0 in 2D", () => {
+  const csail = synchronizePoses(readG2o(fixtureText("CSAIL.g2o")));
+  assert.ok(Math.abs(csail.cost - 31.70372) <= 1e-6 * 31.70372, `${csail.cost}`);
+  assert.equal(csail.certificate.certified, true);
+  assert.equal(csail.certificate.rank, 2);
+  assert.equal(csail.rotations.length, 4 * 1045);
+  assert.equal(csail.translations.length, 3 * 1045);
+  for (let i = 0; i < 1045; i++) assert.equal(csail.translations[3 * i + 2], 0);
+  const reference = 1025.39805563;
+  const graph = readG2o(fixtureText("smallGrid3D.g2o"), { order: "xyzw" });
+  const grid = synchronizePoses(graph, { order: "xyzw", anchor: 3 });
+  assert.ok(Math.abs(grid.cost - reference) <= 1e-9 * reference, `${grid.cost}`);
+  assert.equal(grid.certificate.certified, true);
+  assert.deepEqual(Array.from(grid.rotations.subarray(12, 16)), [0, 0, 0, 1]);
+  assert.deepEqual(Array.from(grid.translations.subarray(9, 12)), [0, 0, 0]);
+  assert.equal(typeof grid.iterations, "number");
+  assert.ok(grid.certificate.lambdaMin >= -grid.certificate.tolerance);
+});
+
+test("the README's square: four quarter turns a unit step apart, f = 0, certified", () => {
+  const H = Math.SQRT1_2;
+  const info = "1 0 0 0 0 0 1 0 0 0 0 1 0 0 0 400 0 0 400 0 400";
+  const lines = [0, 1, 2, 3].map((i) => `VERTEX_SE3:QUAT ${i} 0 0 0 0 0 ${Math.sin((i * Math.PI) / 4)} ${Math.cos((i * Math.PI) / 4)}`);
+  for (let i = 0; i < 4; i++) lines.push(`EDGE_SE3:QUAT ${i} ${(i + 1) % 4} 1 0 0 0 0 ${H} ${H} ${info}`);
+  const { rotations, translations, cost, certificate } = synchronizePoses(readG2o(lines.join("\n")));
+  assert.ok(cost < 1e-20 && certificate.certified, `${cost}`);
+  const corners = [0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0];
+  assert.ok(corners.every((x, k) => Math.abs(translations[k] - x) < 1e-12), `${translations}`);
+  assert.ok(Math.abs(rotations[4] - H) < 1e-12 && Math.abs(rotations[7] - H) < 1e-12, `${rotations}`);
+});
+
+test("writeG2o's file reads back as the graph it came from, the poses its vertices", () => {
+  for (const [name, order] of [["CSAIL.g2o", "wxyz"], ["tinyGrid3D.g2o", "xyzw"]]) {
+    const graph = readG2o(fixtureText(name), { order });
+    const result = synchronizePoses(graph, { order });
+    const text = writeG2o(graph, result, { order });
+    const kind = graph.dimension === 2 ? "VERTEX_SE2 " : "VERTEX_SE3:QUAT ";
+    assert.equal(text.split("\n").filter((l) => l.startsWith(kind)).length, graph.count);
+    const again = readG2o(text, { order, strict: true });
+    assert.equal(again.dimension, graph.dimension);
+    assert.deepEqual(Array.from(again.ids), Array.from(graph.ids));
+    assert.deepEqual(Array.from(again.edges), Array.from(graph.edges));
+    assert.deepEqual(Array.from(again.translations), Array.from(graph.translations));
+    const close = (key, a, b, tolerance) => a.forEach((x, k) => assert.ok(Math.abs(x - b[k]) <= tolerance * (1 + Math.abs(b[k])), `${name} ${key}[${k}]: ${x} vs ${b[k]}`));
+    close("weights", again.weights, graph.weights, 1e-14);
+    close("translationWeights", again.translationWeights, graph.translationWeights, 1e-14);
+    close("relative", again.relative, graph.relative, 1e-14);
+    close("initial", again.initial, result.rotations, 1e-14);
+    assert.deepEqual(Array.from(again.positions), Array.from(result.translations));
+    const resolved = synchronizePoses(again, { order });
+    assert.ok(Math.abs(resolved.cost - result.cost) <= 1e-9 * result.cost, `${name}: ${resolved.cost} vs ${result.cost}`);
+  }
+});
+
+test("hostile input to synchronizePoses and writeG2o is refused naming the argument", () => {
+  const H = Math.SQRT1_2;
+  const base = { dimension: 3, edges: [[0, 1], [1, 2]], relative: [[1, 0, 0, 0], [H, 0, 0, H]], translations: [[1, 0, 0], [0, 1, 0]] };
+  assert.ok(synchronizePoses(base).certificate.certified);
+  const refuses = (call, argument, kind = undefined) => assert.throws(call, (e) => {
+    assert.ok(e instanceof Error, `${e}`);
+    assert.equal(e.argument, argument, e.message);
+    if (kind) assert.equal(e.kind, kind, e.message);
+    assert.ok(e.message.startsWith(argument), e.message);
+    return true;
+  });
+  refuses(() => synchronizePoses(7), "input");
+  refuses(() => synchronizePoses([base]), "input");
+  refuses(() => synchronizePoses({ ...base, extra: 1 }), "input");
+  refuses(() => synchronizePoses({ ...base, dimension: "3" }), "dimension");
+  refuses(() => synchronizePoses({ ...base, dimension: undefined }), "dimension");
+  refuses(() => synchronizePoses({ ...base, translations: undefined }), "translations");
+  refuses(() => synchronizePoses({ ...base, translations: [[1, 0, 0], [0, NaN, 0]] }), "translations[1]");
+  refuses(() => synchronizePoses({ ...base, relative: [[1, 0, 0, 0], [NaN, 0, 0, 1]] }), "relative[1]", "not-finite");
+  refuses(() => synchronizePoses({ ...base, relative: [[1, 0, 0, 0], [0, 0, 0, 0]] }), "relative[1]", "zero-length");
+  refuses(() => synchronizePoses({ ...base, weights: [1, -1] }), "weights[1]", "out-of-range");
+  refuses(() => synchronizePoses({ ...base, translationWeights: [Infinity, 1] }), "translationWeights[0]", "out-of-range");
+  refuses(() => synchronizePoses({ ...base, edges: [[0, 1], [1, -2]] }), "edges[1]");
+  refuses(() => synchronizePoses({ ...base, edges: [[0, 1], [2, 2]] }), "edges[1]");
+  refuses(() => synchronizePoses({ ...base, count: 5 }), "edges");
+  refuses(() => synchronizePoses({ ...base, edges: [[0, 1], [2, 3]] }), "edges");
+  refuses(() => synchronizePoses(base, { anchor: 3 }), "anchor");
+  refuses(() => synchronizePoses(base, { anchor: 0.5 }), "anchor");
+  refuses(() => synchronizePoses(base, { maxRank: 1 }), "maxRank");
+  refuses(() => synchronizePoses(base, { order: "zyxw" }), "order", "unknown-name");
+  refuses(() => synchronizePoses(base, { method: "robust" }), "options");
+  refuses(() => synchronizePoses({ ...base, dimension: 2, relative: [[1, 0, 0, 0], [H, H, 0, 0]] }), "relative[1]");
+  const getter = { ...base, get relative() { throw new Error("no"); } };
+  refuses(() => synchronizePoses(getter), "relative");
+  const poses = synchronizePoses(base);
+  refuses(() => writeG2o(base, null), "poses");
+  refuses(() => writeG2o(base, { ...poses, rotations: poses.rotations.subarray(4) }), "rotations");
+  refuses(() => writeG2o(base, { ...poses, translations: [0, 0, 0, 1, 0, 0, 1, 1, NaN] }), "translations[2]");
+  refuses(() => writeG2o({ ...base, ids: [3, 2, 1] }, poses), "ids[1]");
+  refuses(() => writeG2o(base, poses, { strict: true }), "options");
+  // The module keeps working after every refusal.
+  assert.equal(writeG2o({ ...base, ids: [7, 8, 9] }, poses).split("\n")[0].split(" ")[1], "7");
 });

@@ -18,7 +18,8 @@
 //! (the `KliPath` class), `batch` (many pairs a call), `buffer` (`Float64Buffer`); with `swarm`
 //! (the `kli/swarm` entry) `swarm` (`LoheSwarm`); with `spline` (`kli/spline`) `spline`; with
 //! `average` (`kli/average`) `average` (`averageRotations`, `blendRotations`); with `sync`
-//! (`kli/sync`) `sync` (`synchronizeRotations`, `readG2o`, `SyncFlow`). Crates that add to the module (the demo page's
+//! (`kli/sync`) `sync` (`synchronizeRotations`, `readG2o`, `SyncFlow`) and `poses` (`synchronizePoses`,
+//! `writeG2o`). Crates that add to the module (the demo page's
 //! `kli-demo`) use [`error`], [`read`] and [`options`] too.
 
 #[cfg(feature = "average")]
@@ -33,6 +34,8 @@ pub mod error;
 pub mod options;
 #[cfg(feature = "api")]
 pub mod path;
+#[cfg(feature = "sync")]
+pub mod poses;
 pub mod read;
 #[cfg(feature = "spline")]
 pub mod spline;

@@ -14,9 +14,9 @@ use crate::typed::numbers;
 use crate::value::{describe, get, is_array, is_view};
 
 /// The most edges a graph may have (2²⁴: 16.7 million, 512 MB of relative rotations).
-const MAX_EDGES: usize = 1 << 24;
+pub(crate) const MAX_EDGES: usize = 1 << 24;
 /// Node ids and counts are below 2³², the range of the `Uint32Array` `readG2o` returns.
-const MAX_ID: f64 = 4_294_967_295.0;
+pub(crate) const MAX_ID: f64 = 4_294_967_295.0;
 
 #[wasm_bindgen(typescript_custom_section)]
 const TYPES: &'static str = r#"
@@ -218,7 +218,7 @@ fn edge_ids(k: usize, pair: &[f64]) -> Result<[usize; 2], KliError> {
 }
 
 /// `edges`: nested `[[i, j], …]`, or 2m numbers flat.
-fn read_edges(value: &JsValue) -> Result<Vec<[usize; 2]>, KliError> {
+pub(crate) fn read_edges(value: &JsValue) -> Result<Vec<[usize; 2]>, KliError> {
     let array = is_array(value).unwrap_or(false);
     let flat = is_view(value) || (array && get("edges", value, &0.into())?.as_f64().is_some());
     if flat {
@@ -291,7 +291,7 @@ fn read_graph(
     Ok((graph, initial))
 }
 
-fn set(object: &js_sys::Object, key: &str, value: JsValue) {
+pub(crate) fn set(object: &js_sys::Object, key: &str, value: JsValue) {
     let _ = js_sys::Reflect::set(object, &key.into(), &value);
 }
 
