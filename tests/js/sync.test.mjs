@@ -299,3 +299,56 @@ test("hostile input to synchronizePoses and writeG2o is refused naming the argum
   // The module keeps working after every refusal.
   assert.equal(writeG2o({ ...base, ids: [7, 8, 9] }, poses).split("\n")[0].split(" ")[1], "7");
 });
+
+test("synchronizePoses and writeG2o: 1,500 seeded hostile calls, each a result or an Error naming its argument, no trap", () => {
+  let x = 41;
+  const next = () => { x ^= x << 13; x ^= x >>> 17; x ^= x << 5; x >>>= 0; return x / 4294967296; };
+  const H = Math.SQRT1_2;
+  const base = { dimension: 3, edges: [[0, 1], [1, 2], [2, 0]], relative: [[1, 0, 0, 0], [H, 0, 0, H], [H, 0, 0, -H]], translations: [[1, 0, 0], [0, 1, 0], [-1, -1, 0]] };
+  const { cost } = synchronizePoses(base);
+  const poses = synchronizePoses(base);
+  const revoked = (() => { const { proxy, revoke } = Proxy.revocable([], {}); revoke(); return proxy; })();
+  const throwing = () => new Proxy({}, { get() { throw new Error("get trap"); }, has() { throw new Error("has trap"); }, ownKeys() { throw new Error("ownKeys trap"); } });
+  const getterArray = () => { const a = [1, 0, 0, 0]; Object.defineProperty(a, 2, { get() { throw new Error("element getter"); } }); return a; };
+  const values = [
+    () => NaN, () => Infinity, () => -1, () => 1e308, () => 5e-324, () => -0, () => 2 ** 53, () => 2 ** 32, () => 0.5, () => 3, () => 2,
+    () => 10n, () => Symbol("s"), () => "3", () => "", () => null, () => undefined, () => true, () => ({}), () => [],
+    () => ({ length: Infinity }), () => ({ length: 1e9 }), () => ({ length: -1 }), () => ({ length: 3, 0: 1, 1: 0, 2: 0 }),
+    () => throwing(), () => revoked, () => getterArray(), () => new DataView(new ArrayBuffer(32)), () => new BigInt64Array(4),
+    () => new Int32Array([0, 1, 1, 2]), () => new Float32Array([1, 0, 0, 0]), () => new Float64Array(0), () => new Float64Array(9),
+    () => [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]], () => [[0, 1], [1, 1e9]], () => [[1, 0, NaN], [0, 1, 0], [0, 0, 0]],
+    () => [0, 0, 0, 0], () => [1, 2, 3], () => [1e300, 1e-300, 1], () => [-1, 1, 1], () => ({ x: 0, y: 0, z: 0, w: 1 }),
+    () => new Proxy([0, 1], { get(t, k) { synchronizePoses(base); return Reflect.get(t, k); } }), () => function f() {}, () => [0, , 2],
+  ];
+  const hostile = () => values[Math.floor(next() * values.length)]();
+  const keys = ["dimension", "edges", "relative", "translations", "weights", "translationWeights", "count", "ids", "initial"];
+  let errors = 0;
+  for (let i = 0; i < 1500; i++) {
+    const value = hostile();
+    const key = keys[Math.floor(next() * keys.length)];
+    const calls = [
+      () => synchronizePoses(value), () => synchronizePoses(base, value), () => synchronizePoses({ ...base, [key]: value }),
+      () => synchronizePoses(base, { anchor: value }), () => synchronizePoses(base, { maxRank: value }), () => synchronizePoses(base, { order: value }),
+      () => writeG2o({ ...base, [key]: value }, poses), () => writeG2o(base, value), () => writeG2o(base, { ...poses, rotations: value }),
+      () => writeG2o(base, { ...poses, translations: value }), () => writeG2o(base, poses, value),
+    ];
+    let result;
+    try {
+      result = calls[Math.floor(next() * calls.length)]();
+    } catch (e) {
+      assert.ok(e instanceof Error && !(e instanceof WebAssembly.RuntimeError), `call ${i}: ${e}`);
+      if (typeof e.argument !== "string") continue; // a hostile getter's own Error, passed on
+      assert.equal(typeof e.kind, "string", e.message);
+      assert.ok(e.message.startsWith(e.argument), e.message);
+      errors++;
+      continue;
+    }
+    if (typeof result === "string") assert.match(result, /^VERTEX_SE3:QUAT \d+ /);
+    else {
+      assert.ok(Number.isFinite(result.cost) && result.cost >= 0, `${result.cost}`);
+      assert.ok(result.rotations.every(Number.isFinite) && result.translations.every(Number.isFinite));
+    }
+  }
+  assert.ok(errors > 500, `only ${errors} refusals`);
+  assert.equal(synchronizePoses(base).cost, cost, "the module is still right");
+});
