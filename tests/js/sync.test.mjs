@@ -295,6 +295,7 @@ test("hostile input to synchronizePoses and writeG2o is refused naming the argum
   refuses(() => writeG2o(base, { ...poses, rotations: poses.rotations.subarray(4) }), "rotations");
   refuses(() => writeG2o(base, { ...poses, translations: [0, 0, 0, 1, 0, 0, 1, 1, NaN] }), "translations[2]");
   refuses(() => writeG2o({ ...base, ids: [3, 2, 1] }, poses), "ids[1]");
+  refuses(() => writeG2o({ ...base, count: 2 ** 32 - 1 }, poses), "rotations");
   refuses(() => writeG2o(base, poses, { strict: true }), "options");
   // The module keeps working after every refusal.
   assert.equal(writeG2o({ ...base, ids: [7, 8, 9] }, poses).split("\n")[0].split(" ")[1], "7");

@@ -140,7 +140,7 @@ fn vectors(name: &str, value: &JsValue, max: usize) -> Result<Vec<DVec3>, KliErr
     let array = is_array(value).unwrap_or(false);
     let flat = is_view(value) || (array && get(name, value, &0.into())?.as_f64().is_some());
     if flat {
-        let flat = numbers(name, value, 3 * max)?;
+        let flat = numbers(name, value, max.saturating_mul(3))?;
         if flat.len() % 3 != 0 {
             let problem = format!("must hold 3 numbers [x, y, z] each (got {})", flat.len());
             return Err(KliError::invalid(name, problem));
@@ -388,7 +388,9 @@ pub fn write_g2o(
     };
     let required =
         |key: &str| fields.value(key)?.ok_or_else(|| KliError::invalid(key, "is required"));
-    let rotations = quaternion_list("rotations", "pose", &required("rotations")?, order, 4 * n)?;
+    // `4n` saturates: a count of 2³² − 1 is 4n beyond wasm32's usize.
+    let rotations =
+        quaternion_list("rotations", "pose", &required("rotations")?, order, n.saturating_mul(4))?;
     one_per("rotations", rotations.len(), n, "pose")?;
     let rotations = rotations
         .into_iter()
@@ -418,7 +420,9 @@ pub fn write_g2o(
             ids.into_iter().map(|id| id as u64).collect()
         }
     };
-    let mut out = String::with_capacity(64 * n + 160 * graph.edges.len());
+    let mut out = String::with_capacity(
+        n.saturating_mul(64).saturating_add(graph.edges.len().saturating_mul(160)),
+    );
     for (k, (&q, &t)) in rotations.iter().zip(&positions).enumerate() {
         if d == 2 {
             let _ = write!(out, "VERTEX_SE2 {}", ids[k]);

@@ -339,6 +339,14 @@ fn written_lines_keep_ids_and_bad_poses_are_named() {
         ("translations", nested(&[&[1.0, 0.0, 0.0]])),
         ("ids", Float64Array::from(&[5.0, 3.0][..]).into()),
     ]);
+    // A count of 2³² − 1: 4n is beyond wasm32's usize.
+    let huge_count = object(&[
+        ("dimension", 3.into()),
+        ("edges", nested(&[&[0.0, 1.0]])),
+        ("relative", nested(&[&[1.0, 0.0, 0.0, 0.0]])),
+        ("translations", nested(&[&[1.0, 0.0, 0.0]])),
+        ("count", 4_294_967_295u32.into()),
+    ]);
     let cases: Vec<(JsValue, JsValue, Options, &str)> = vec![
         (JsValue::from(3), poses.clone(), vec![], "graph"),
         (graph.clone(), JsValue::UNDEFINED, vec![], "poses"),
@@ -349,6 +357,7 @@ fn written_lines_keep_ids_and_bad_poses_are_named() {
         (graph.clone(), lifted.clone(), vec![], "translations[1]"),
         (plain.clone(), lifted, vec![], "translations[1]"),
         (descending, poses3.clone(), vec![], "ids[1]"),
+        (huge_count, poses3.clone(), vec![], "rotations"),
         (plain, poses3, vec![("order", 1.into())], "order"),
         (graph, poses, vec![("strict", true.into())], "options"),
     ];
