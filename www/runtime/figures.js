@@ -43,6 +43,8 @@ export class Figures {
     this.layers = new Map();
     /** @type {Set<Name>} views whose still part must be drawn again */
     this.stale = new Set();
+    /** @type {Map<Name, number>} the time each moving view's canvas shows, while it is not stale */
+    this.shown = new Map();
     /** @type {Set<Name>} still views to be drawn in the next task */
     this.later = new Set();
     /** @type {Canvases<Name> | null} */
@@ -187,6 +189,10 @@ export class Figures {
       // for its run (stale: a new run, size or camera; every canvas shows its figure).
       if (playing && this.near && !this.near.has(name) && !this.stale.has(name)) continue;
       if (this.pictures.has(name) && this.waiting(name)) continue;
+      // A view that shows this time already, and nothing else changed (`invalidate`), is left as
+      // it is: a sweep filling itself asked for a frame at each of its 33 results, and every view
+      // of the synchronisation page was drawn again each time (a long task at each, on a phone).
+      if (!this.stale.has(name) && this.shown.get(name) === t) continue;
       const ctx = context(this.canvases[name]);
       const kind = this.kind(name);
       if (kind === "still") {
@@ -195,6 +201,7 @@ export class Figures {
       }
       if (kind === "layered") this.layered(name, ctx, frame);
       else this.paint(name, ctx, frame);
+      this.shown.set(name, t);
       this.stale.delete(name);
       this.uncover(name);
     }
