@@ -534,7 +534,7 @@ export class Page {
       for (const input of inputs) removeEventListener(input, here, true);
       this.readerHere = true;
       // After the input's own handlers and the click that follows a touch: a reader who pressed
-      // Play or a key takes the controls (playChanged, seek), and the wait ends without motion.
+      // Play or a key has taken the controls (playChanged, seek): the page does not start it again.
       setTimeout(() => this.pending && this.play(), 250);
     };
     for (const input of inputs) addEventListener(input, here, { capture: true, passive: true });
