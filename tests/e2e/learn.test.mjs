@@ -159,11 +159,36 @@ test("an exercise opens, sets its figure, and its answer is the one the figure t
   const after = await text(page, "#hopf-out");
   assert.equal(after.slice(0, after.indexOf(";")), before.slice(0, before.indexOf(";")));
   assert.notEqual(after, before);
-  // Printed, every exercise shows its answer, and no control is on paper.
+  // Printed as a handout: each question numbered in its section with its answer hidden there, the
+  // answers together at the end in the same order, and no control on paper.
   await page.emulateMedia({ media: "print" });
   await page.evaluate(() => dispatchEvent(new Event("beforeprint")));
-  const answers = await page.$$eval("details.exercise", (all) => all.map((d) => d.open && d.querySelector("p:last-child").getBoundingClientRect().height > 0));
-  assert.ok(answers.length >= 9 && answers.every(Boolean), JSON.stringify(answers));
+  const printed = await page.evaluate(() => {
+    const exercises = [...document.querySelectorAll("details.exercise")];
+    const answers = [...document.querySelectorAll("#print-answers li")];
+    const main = document.querySelector("main");
+    return {
+      count: exercises.length,
+      hiddenInPlace: exercises.every((d) => !d.open && d.querySelector("p")?.checkVisibility() === false),
+      numbered: exercises.map((d) => getComputedStyle(d.querySelector("summary"), "::before").content),
+      answers: answers.map((li) => ({ question: li.querySelector(".question")?.textContent, shown: li.checkVisibility(), text: li.textContent.length })),
+      questions: exercises.map((d) => d.querySelector("summary")?.textContent),
+      atEnd: main?.lastElementChild?.id,
+      controls: [...document.querySelectorAll(".transport, .contents, button, input")].filter((e) => e.checkVisibility()).length,
+      duplicateIds: [...document.querySelectorAll("#print-answers [id]")].length,
+    };
+  });
+  assert.ok(printed.count >= 9, JSON.stringify(printed));
+  assert.ok(printed.hiddenInPlace, "an answer prints in its section");
+  assert.deepEqual(printed.numbered, printed.questions.map((_, i) => `"${i + 1}. "`));
+  assert.equal(printed.atEnd, "print-answers");
+  assert.deepEqual(printed.answers.map((a) => a.question), printed.questions);
+  assert.ok(printed.answers.every((a) => a.shown && a.text > (a.question?.length ?? 0) + 20), JSON.stringify(printed.answers));
+  assert.equal(printed.controls, 0, "no control on paper");
+  assert.equal(printed.duplicateIds, 0);
+  // After printing, the page is as it was.
+  await page.evaluate(() => dispatchEvent(new Event("afterprint")));
+  assert.equal(await page.locator("#print-answers").count(), 0);
   assert.deepEqual(problems, []);
   await context.close();
 });

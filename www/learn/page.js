@@ -180,14 +180,36 @@ function wireTour(/** @type {Host} */ host) {
   const step = (/** @type {number} */ by) => host.seek(Math.round((host.t + by * host.state.delta) * 1e6) / 1e6);
   $("#step-on", HTMLButtonElement).addEventListener("click", () => step(1));
   $("#step-back", HTMLButtonElement).addEventListener("click", () => step(-1));
-  // Printed, each exercise shows its answer (a closed <details> would print its question alone).
+  // Printed as a handout: each exercise's question stays in its section (a closed <details> prints
+  // its summary alone) and the answers come together at the end, numbered, so that a student can
+  // predict before turning the page.
   /** @type {HTMLDetailsElement[]} */
-  let opened = [];
+  let closed = [];
   addEventListener("beforeprint", () => {
-    opened = [...document.querySelectorAll("details:not([open])")].map((d) => /** @type {HTMLDetailsElement} */ (d));
-    opened.forEach((d) => (d.open = true));
+    document.querySelector("#print-answers")?.remove();
+    closed = [...document.querySelectorAll("details.exercise[open]")].map((d) => /** @type {HTMLDetailsElement} */ (d));
+    closed.forEach((d) => (d.open = false));
+    const section = Object.assign(document.createElement("section"), { id: "print-answers", className: "print-answers" });
+    const heading = Object.assign(document.createElement("h2"), { textContent: live.answers });
+    const list = document.createElement("ol");
+    for (const [index, exercise] of document.querySelectorAll("details.exercise").entries()) {
+      const summary = exercise.querySelector("summary");
+      if (summary) summary.dataset.number = `${index + 1}.`;
+      const item = document.createElement("li");
+      const question = Object.assign(document.createElement("p"), { className: "question", textContent: summary?.textContent ?? "" });
+      item.append(question, ...[...exercise.children].filter((child) => child !== summary).map((child) => child.cloneNode(true)));
+      // The copies are for paper: no second set of ids, no controls.
+      for (const node of item.querySelectorAll("[id]")) node.removeAttribute("id");
+      for (const node of item.querySelectorAll("a.set, button")) node.remove();
+      list.append(item);
+    }
+    section.append(heading, list);
+    document.querySelector("main")?.append(section);
   });
-  addEventListener("afterprint", () => opened.forEach((d) => (d.open = false)));
+  addEventListener("afterprint", () => {
+    document.querySelector("#print-answers")?.remove();
+    closed.forEach((d) => (d.open = true));
+  });
   startOnArrival(host);
   loadOtherFigures();
 }

@@ -612,6 +612,8 @@ export const page = {
 
 /** Tekst koji page.js piše dok se slike mijenjaju. */
 export const live = {
+  /** The heading of the exercises' answers, printed at the end of the handout. */
+  answers: "Odgovori na pitanja",
   /** Osa okreta u rečenici. */
   axes: { x: "x", y: "y", z: "z", diagonal: "dijagonale (1, 1, 1)" },
   /** Vrijednost svakog klizača riječima, pored njega i za čitač ekrana (`aria-valuetext`). */

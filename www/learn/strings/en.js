@@ -606,6 +606,8 @@ export const page = {
 
 /** Three decimals etc. are page.js's; these put the numbers into words. */
 export const live = {
+  /** The heading of the exercises' answers, printed at the end of the handout. */
+  answers: "Answers to the exercises",
   /** The turn's axis in a sentence. */
   axes: { x: "x", y: "y", z: "z", diagonal: "the diagonal (1, 1, 1)" },
   /** Each slider's value in words, beside it and for a screen reader (`aria-valuetext`). */
