@@ -67,7 +67,7 @@ export const page = {
     `Euler je pokazao da je svaka rotacija jedan okret za ugao <var>θ</var> oko ose, jediničnog vektora <var>u</var>.
     <dfn id="def-quaternion">Kvaternion</dfn> je broj <var>q</var> = <var>a</var> + <var>b</var> i + <var>c</var> j
     + <var>d</var> k s četiri realna dijela, gdje Hamiltonova pravila i² = j² = k² = ijk = −1 određuju kako se
-    množi. Redoslijed je bitan: ij = k, ali ji = −k. Njegova dužina je |<var>q</var>| = √(<var>a</var>² +
+    množi. Redoslijed je bitan: ij = k, jk = i, ki = j, ali ji = −k, kj = −i, ik = −j. Njegova dužina je |<var>q</var>| = √(<var>a</var>² +
     <var>b</var>² + <var>c</var>² + <var>d</var>²), njegov konjugovani kvaternion je <var>q̄</var> = <var>a</var> −
     <var>b</var> i − <var>c</var> j − <var>d</var> k, a <dfn id="def-unit-quaternion">jedinični kvaternion</dfn> je
     kvaternion dužine 1.`,
@@ -105,12 +105,14 @@ export const page = {
     `Pritisni 360° ispod. Avion je opet tamo gdje je počeo, a ipak je <var>q</var> = −1 na suprotnoj strani kružnice.
     Budući da je (−<var>q</var>) <var>v</var> (−<var>q̄</var>) = <var>q</var> <var>v</var> <var>q̄</var>, kvaternioni
     <var>q</var> i −<var>q</var> su jedna ista rotacija: svaka rotacija je par suprotnih tačaka sfere S³. To je
-    <dfn id="def-double-cover">dvostruko natkrivanje</dfn>, i sve što slijedi mora biti neosjetljivo na predznak.`,
+    <dfn id="def-double-cover">dvostruko natkrivanje</dfn>, i metoda na rotacijama mora ili zanemariti predznak ili
+    reći koji uzima. KLI ga uzima kakav je dat: kad je <var>p</var>·<var>r</var> &lt; 0, teče dužim putem, pa prvo
+    promijeni predznak od <var>r</var> tako da bude <var>p</var>·<var>r</var> ≥ 0.`,
   "cover.p3":
     `Ugao <var>φ</var> između dva jedinična kvaterniona, cos <var>φ</var> = <var>p</var>·<var>r</var> =
     <var>p</var>₁<var>r</var>₁ + <var>p</var>₂<var>r</var>₂ + <var>p</var>₃<var>r</var>₃ +
     <var>p</var>₄<var>r</var>₄, mjeri njihovu udaljenost: rotacija od <var>p</var> do <var>r</var> okreće za
-    2<var>φ</var>. Najkraći put po sferi je luk velikog kruga, <dfn id="def-geodesic">geodezijska linija</dfn>.
+    2<var>φ</var>. Najkraći put po sferi je luk velikog kruga (presjeka sfere i ravni kroz njen centar), <dfn id="def-geodesic">geodezijska linija</dfn>.
     Između dvije rotacije postoje dva takva luka, do <var>r</var> i do −<var>r</var>; „najkraći put” bira onaj za
     koji je <var>p</var>·<var>r</var> ≥ 0.`,
   "cover.caption1":
@@ -228,7 +230,8 @@ export const page = {
     sljedećem odjeljku. Koliko se slažu, mjeri se kao na kružnici: parametar reda na S³ je dužina <var>R</var> =
     |(1/<var>N</var>) Σ<sub><var>j</var></sub> <var>q<sub>j</sub></var>| srednje vrijednosti kvaterniona
     <var>q<sub>j</sub></var> kao tačaka u R⁴ (računajući i vođu), 1 kad su svi u jednoj tački, mali kad su
-    raspršeni po S³.`,
+    raspršeni po S³. Nije neosjetljiv na predznak: <var>q</var> i −<var>q</var> u prosjeku daju 0, pa <var>R</var>
+    može biti mali iako se rotacije slažu.`,
   "kuramoto.caption2":
     `Osam sljedbenika (ljubičasto, sa svojim tragovima) i fiksirani vođa <var>r</var> (narandžasto), nacrtani
     Hopfovim preslikavanjem; sfera se okreće zajedno s onom u odjeljku 5.`,
@@ -358,8 +361,11 @@ export const page = {
   "many.p2":
     `Animator postavi zglobove lika u nekoliko trenutaka, ključnim kadrovima, a računar popuni ostalo. SLERP od
     ključa do ključa okreće ujednačeno na svakom dijelu, ali trzne na svakom ključu, gdje se osa i brzina naglo
-    promijene. KLI lanac na stranici <a href="keyframes.html">Mnogo rotacija</a> prolazi kroz iste ključeve, a brzina
-    okretanja se mijenja glatko. Pomjeri <em>glatkoću</em> od 0 (SLERP po dijelovima) do 1. Slika crta kamo pokazuje
+    promijene: skok ugaone brzine, vidljiv trzaj na ekranu i udar momenta za motor ili kardan. KLI lanac na stranici
+    <a href="keyframes.html">Mnogo rotacija</a> gusto uzorkuje cijelu krivu na S³ i fiksira uzorke u ključevima
+    (fiksirani vođe, odjeljak 6); svaki drugi uzorak slijedi Kuramoto–Loheov tok, privlače ga susjedi, a odbijaju
+    drugi susjedi, i smiri se na krivoj kroz ključeve čija se brzina okretanja mijenja glatko. (Između samo dva
+    ključa to je SLERP-ov luk, kao i KLI.) Pomjeri <em>glatkoću</em> od 0 (SLERP po dijelovima) do 1. Slika crta kamo pokazuje
     nos (Hopfovo preslikavanje iz odjeljka 5) duž tri krive kroz iste ključeve: KLI lanac (narandžasto, puna linija),
     <dfn id="def-squad">Squad</dfn> (Shoemakeov splajn kvaterniona, uobičajena glatka kriva u softveru za animaciju,
     sastavljena od SLERP-ova između dodatnih kontrolnih tačaka; ljubičasto, isprekidano) i SLERP po dijelovima
@@ -367,18 +373,21 @@ export const page = {
   "many.heading2": "Roj: sinhronizacija ili njena suprotnost",
   "many.p3":
     `Dronovi koji se usaglašavaju o smjeru leta, sateliti o orijentaciji, jato koje skreće kao jedno: mnogo rotacija
-    spregnutih Loheovim modelom iz odjeljka 6, bez vođe. Na stranici <a href="swarm.html">Roj</a>, <var>K</var> &gt;
+    spregnutih neabelovskim Kuramotovim (Loheovim) modelom iz odjeljka 6, bez vođe. Na stranici <a href="swarm.html">Roj</a>, <var>K</var> &gt;
     0 ih usklađuje (<dfn id="def-sync">sinhronizacija</dfn>, parametar reda teži ka 1), a <var>K</var> &lt; 0 ih
     razmiče.`,
   "many.heading3": "Usrednjavanje: jedna rotacija iz mnogo zašumljenih",
   "many.p4":
     `Kamera robota mnogo puta mjeri svoju orijentaciju, svaki put malo pogrešno, a nekoliko puta jako pogrešno: to su
-    <dfn id="def-outlier">izuzeci</dfn> (autlajeri). Jedan sljedbenik koji privlače sva mjerenja odjednom smiri se u
+    <dfn id="def-outlier">izuzeci</dfn> (autlajeri). Jedan sljedbenik koji privlače sva mjerenja odjednom, svako privlačenje pomnoženo sa
+    <var>q</var>·<var>r<sub>j</sub></var> da predznaci ne bi bili bitni, smiri se u
     <dfn id="def-chordal">tetivnoj sredini</dfn>, rotaciji <var>q</var> koja maksimizira
     Σ(<var>q</var>·<var>r<sub>j</sub></var>)² (neosjetljivo na predznak svakog mjerenja). <em>Tetivna</em> znači da
-    se udaljenost mjeri pravo kroz unutrašnjost, duž tetive |<var>p</var> − <var>q</var>|, a ne po sferi: za
-    jedinične kvaternione |<var>p</var> − <var>q</var>|² = 2 − 2 <var>p</var>·<var>q</var>, pa kratkoj tetivi
-    odgovara velik skalarni proizvod. <dfn id="def-karcher">Karcherova sredina</dfn> umjesto toga minimizira zbir
+    se udaljenost mjeri pravo, između matrica rotacije, a ne po sferi: ‖<var>R<sub>q</sub></var> −
+    <var>R<sub>j</sub></var>‖² = 8(1 − (<var>q</var>·<var>r<sub>j</sub></var>)²), isto za <var>r<sub>j</sub></var>
+    i −<var>r<sub>j</sub></var>, pa kratkoj tetivi odgovara velik skalarni proizvod. (Tetiva između samih
+    kvaterniona, 2 − 2 <var>q</var>·<var>r<sub>j</sub></var>, daje kvaternionsku sredinu, koja zavisi od
+    predznaka.) <dfn id="def-karcher">Karcherova sredina</dfn> umjesto toga minimizira zbir
     kvadrata uglova okreta do mjerenja. Izuzeci povlače obje sredine; medijan, na stranici <a
     href="average.html">Usrednjavanje</a>, mnogo manje. Pomjeri udio izuzetaka. Na slici je svaka tačka mjesto kamo
     mjerenje usmjerava nos, njegova Hopfova slika <var>h</var>(<var>r<sub>j</sub></var>); izuzeci imaju svoju boju i
@@ -390,8 +399,8 @@ export const page = {
   "many.heading4": "Sinhronizacija rotacija na grafu",
   "many.p5":
     `Robot koji mapira zgradu (SLAM, simultana lokalizacija i mapiranje: istovremeno gradi mapu i pronalazi sebe u
-    njoj) ili fotografije spojene u 3D model daju rotacije izmjerene između parova: kamera <var>i</var> u odnosu na
-    kameru <var>j</var>. Određivanje svih rotacija iz njih je sinhronizacija na grafu: svaka kamera je čvor, svako
+    njoj) ili fotografije spojene u 3D model daju rotacije izmjerene između parova: kamera <var>j</var> u odnosu na
+    kameru <var>i</var>, <var>R<sub>ij</sub></var> = <var>R<sub>i</sub></var>ᵀ<var>R<sub>j</sub></var>. Određivanje svih rotacija iz njih je sinhronizacija na grafu: svaka kamera je čvor, svako
     mjerenje grana. Rješenje je ono s najmanjom tetivnom cijenom <var>f</var> = Σ ‖<var>R<sub>i</sub></var>
     <var>R<sub>ij</sub></var> − <var>R<sub>j</sub></var>‖², zbirom po granama kvadrata koliko svako mjerenje
     promašuje (ista udaljenost pravo kroz unutrašnjost, ovdje između matrica).`,

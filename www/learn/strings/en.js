@@ -70,7 +70,7 @@ export const page = {
     `Euler showed that every rotation is a single turn by an angle <var>θ</var> about an axis, a unit vector
     <var>u</var>. A <dfn id="def-quaternion">quaternion</dfn> is a number <var>q</var> = <var>a</var> + <var>b</var>
     i + <var>c</var> j + <var>d</var> k with four real parts, where Hamilton's rules i² = j² = k² = ijk = −1 fix how
-    to multiply. The order matters: ij = k but ji = −k. Its length is |<var>q</var>| = √(<var>a</var>² +
+    to multiply. The order matters: ij = k, jk = i, ki = j, but ji = −k, kj = −i, ik = −j. Its length is |<var>q</var>| = √(<var>a</var>² +
     <var>b</var>² + <var>c</var>² + <var>d</var>²), its conjugate is <var>q̄</var> = <var>a</var> − <var>b</var> i −
     <var>c</var> j − <var>d</var> k, and a <dfn id="def-unit-quaternion">unit quaternion</dfn> is one of length 1.`,
   "turn.p2": "The turn by <var>θ</var> about <var>u</var> is the unit quaternion",
@@ -107,12 +107,15 @@ export const page = {
     `Press 360° below. The aircraft is back where it started, yet <var>q</var> = −1 is on the far side of the circle.
     Since (−<var>q</var>) <var>v</var> (−<var>q̄</var>) = <var>q</var> <var>v</var> <var>q̄</var>, the quaternions
     <var>q</var> and −<var>q</var> are one rotation: every rotation is a pair of opposite points of S³. This is the
-    <dfn id="def-double-cover">double cover</dfn>, and everything later must be blind to the sign.`,
+    <dfn id="def-double-cover">double cover</dfn>, and a method on rotations must either ignore the sign or say which
+    one it takes. KLI takes it as given: from <var>p</var>·<var>r</var> &lt; 0 it flows the long way round, so first
+    flip <var>r</var> to make <var>p</var>·<var>r</var> ≥ 0.`,
   "cover.p3":
     `The angle <var>φ</var> between two unit quaternions, cos <var>φ</var> = <var>p</var>·<var>r</var> =
     <var>p</var>₁<var>r</var>₁ + <var>p</var>₂<var>r</var>₂ + <var>p</var>₃<var>r</var>₃ +
     <var>p</var>₄<var>r</var>₄, measures them: the rotation from <var>p</var> to <var>r</var> turns by
-    2<var>φ</var>. The shortest way along the sphere is an arc of a great circle, a <dfn
+    2<var>φ</var>. The shortest way along the sphere is an arc of a great circle (where the sphere meets a plane through its
+    centre), a <dfn
     id="def-geodesic">geodesic</dfn>. Between two rotations there are two such arcs, to <var>r</var> and to
     −<var>r</var>; “the shortest path” takes the one with <var>p</var>·<var>r</var> ≥ 0.`,
   "cover.caption1":
@@ -229,7 +232,8 @@ export const page = {
     <var>q</var>′ = (<var>K</var>/2)(<var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>): the paper's method,
     next. How much they agree is measured as on the circle: the order parameter on S³ is the length <var>R</var> =
     |(1/<var>N</var>) Σ<sub><var>j</var></sub> <var>q<sub>j</sub></var>| of the mean of the <var>q<sub>j</sub></var>
-    as points of R⁴ (the leader counted too), 1 when all are at one point, small when they are spread over S³.`,
+    as points of R⁴ (the leader counted too), 1 when all are at one point, small when they are spread over S³. It is not blind to the sign: <var>q</var> and
+    −<var>q</var> average to 0, so <var>R</var> can be small while the rotations agree.`,
   "kuramoto.caption2":
     `Eight followers (purple, with their trails) and the pinned leader <var>r</var> (orange), drawn by the Hopf map;
     the sphere turns with the one in section 5.`,
@@ -357,8 +361,11 @@ export const page = {
   "many.p2":
     `An animator sets a character's joints at a few moments, the keyframes, and the computer fills in the rest. SLERP
     from key to key turns at a steady rate on each piece but jerks at every key, where the axis and speed change at
-    once. The KLI chain on <a href="keyframes.html">Many rotations</a> passes through the same keys with the turning
-    rate changing smoothly. Move <em>smoothness</em> from 0 (piecewise SLERP) to 1. The figure draws where the nose
+    once: a jump in angular velocity, a visible snap on screen and a kick of torque for a motor or a gimbal. The KLI
+    chain on <a href="keyframes.html">Many rotations</a> samples the whole curve densely on S³ and pins the samples at
+    the keys (pinned leaders, section 6); every other sample follows a Kuramoto–Lohe flow, drawn by its neighbours and
+    pushed off by its second neighbours, and settles on a curve through the keys whose turning rate changes smoothly.
+    (Between two keys alone it is SLERP's arc, as KLI is.) Move <em>smoothness</em> from 0 (piecewise SLERP) to 1. The figure draws where the nose
     points (the Hopf map of section 5) along three curves through the same keys: the KLI chain (orange, solid), <dfn
     id="def-squad">Squad</dfn> (Shoemake's spline of quaternions, the usual smooth curve of animation software,
     built from SLERPs between extra control points; purple, dashed) and piecewise SLERP (dark, dotted). The white
@@ -366,18 +373,21 @@ export const page = {
   "many.heading2": "The swarm: synchronisation, or its opposite",
   "many.p3":
     `Drones agreeing on a heading, satellites on an attitude, a flock turning as one: many rotations coupled by the
-    Lohe model of section 6, with no leader. On <a href="swarm.html">The swarm</a>, <var>K</var> &gt; 0 draws them
+    non-abelian Kuramoto (Lohe) model of section 6, with no leader. On <a href="swarm.html">The swarm</a>, <var>K</var> &gt; 0 draws them
     into step (<dfn id="def-sync">synchronisation</dfn>, the order parameter going to 1) and <var>K</var> &lt; 0
     spreads them apart.`,
   "many.heading3": "Averaging: one rotation from many noisy ones",
   "many.p4":
     `A robot's camera measures its orientation many times, each a little off, and a few badly off: those are <dfn
-    id="def-outlier">outliers</dfn>. One follower pulled by all the measurements at once settles on the <dfn
+    id="def-outlier">outliers</dfn>. One follower pulled by all the measurements at once, each pull weighted by <var>q</var>·<var>r<sub>j</sub></var>
+    so that signs do not matter, settles on the <dfn
     id="def-chordal">chordal mean</dfn>, the rotation <var>q</var> that maximises
     Σ(<var>q</var>·<var>r<sub>j</sub></var>)² (blind to each sign). <em>Chordal</em> means that distance is measured
-    straight through the inside, along the chord |<var>p</var> − <var>q</var>|, not along the sphere: for unit
-    quaternions |<var>p</var> − <var>q</var>|² = 2 − 2 <var>p</var>·<var>q</var>, so a short chord is a large dot
-    product. The <dfn id="def-karcher">Karcher mean</dfn> instead minimises the sum of squared turning angles to the
+    straight through, between the rotation matrices, not along the sphere: ‖<var>R<sub>q</sub></var> −
+    <var>R<sub>j</sub></var>‖² = 8(1 − (<var>q</var>·<var>r<sub>j</sub></var>)²), the same for <var>r<sub>j</sub></var>
+    and −<var>r<sub>j</sub></var>, so a short chord is a large dot product. (The chord between the quaternions
+    themselves, 2 − 2 <var>q</var>·<var>r<sub>j</sub></var>, gives the quaternion mean, which depends on the
+    signs.) The <dfn id="def-karcher">Karcher mean</dfn> instead minimises the sum of squared turning angles to the
     measurements. Both are dragged by outliers; the median, on <a href="average.html">Averaging</a>, much less. Move
     the share of wild measurements. In the figure each dot is where a measurement points the nose, its Hopf image
     <var>h</var>(<var>r<sub>j</sub></var>); the wild ones have a colour of their own and are ringed once the median
@@ -389,7 +399,7 @@ export const page = {
   "many.p5":
     `A robot mapping a building (SLAM, simultaneous localisation and mapping: it builds the map and finds itself in
     it at the same time) or photos stitched into a 3D model give rotations measured between pairs: camera
-    <var>i</var> relative to camera <var>j</var>. Finding every rotation from these is synchronisation on a graph:
+    <var>j</var> relative to camera <var>i</var>, <var>R<sub>ij</sub></var> = <var>R<sub>i</sub></var>ᵀ<var>R<sub>j</sub></var>. Finding every rotation from these is synchronisation on a graph:
     each camera a node, each measurement an edge. The answer is the one with the smallest chordal cost <var>f</var>
     = Σ ‖<var>R<sub>i</sub></var> <var>R<sub>ij</sub></var> − <var>R<sub>j</sub></var>‖², the sum over the edges of
     how far each measurement misses, squared (the same straight-through distance, here between matrices).`,
