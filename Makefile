@@ -268,6 +268,7 @@ bench: pkg www setup-browser
 	node bench/average.mjs
 	node bench/sync.mjs
 	node bench/posegraphs.mjs
+	node bench/poses.mjs
 	node bench/size.mjs
 	node bench/page.mjs
 	node bench/first-paint.mjs
