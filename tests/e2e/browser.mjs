@@ -47,7 +47,11 @@ export async function open(query = "", { still = false, ...options } = {}) {
 }
 
 /** The reader arrives: the pointer moves over the page (a page's motion waits for it). */
-export const engage = (page) => page.mouse.move(3, 3);
+export const engage = async (page) => {
+  // Two moves: a pointer already at the first point (a reload) would send no event.
+  await page.mouse.move(2, 2);
+  await page.mouse.move(6, 6);
+};
 
 /** As `open`, but the page is left blank: the caller loads what it wants, from `origin()`. */
 export async function blank({ init, prepare, ...options } = {}) {
