@@ -4,33 +4,20 @@
 //! written poses its vertices. The solver is tested in depth natively (`src/sync/poses/tests.rs`).
 #![cfg(all(target_arch = "wasm32", feature = "sync"))]
 
-use js_sys::{Array, Float64Array, Object, Reflect, Uint32Array};
+use js_sys::{Float64Array, Uint32Array};
 use kli_wasm::poses::{synchronize_poses_js, write_g2o};
 use kli_wasm::sync::read_g2o_text;
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::wasm_bindgen_test;
+
+mod common;
+use common::{field, floats, nested, object, refused};
 
 const CSAIL: &str = include_str!("../../../tests/fixtures/posegraphs/CSAIL.g2o");
 const SMALL_GRID: &str = include_str!("../../../tests/fixtures/posegraphs/smallGrid3D.g2o");
 
 /// Options as key–value pairs.
 type Options = Vec<(&'static str, JsValue)>;
-
-fn object(entries: &[(&str, JsValue)]) -> JsValue {
-    let object = Object::new();
-    for (key, value) in entries {
-        Reflect::set(&object, &(*key).into(), value).unwrap();
-    }
-    object.into()
-}
-
-fn field(value: &JsValue, key: &str) -> JsValue {
-    Reflect::get(value, &key.into()).unwrap()
-}
-
-fn floats(value: &JsValue, key: &str) -> Vec<f64> {
-    field(value, key).unchecked_into::<Float64Array>().to_vec()
-}
 
 fn cost(result: &JsValue) -> f64 {
     field(result, "cost").as_f64().unwrap()
@@ -40,10 +27,6 @@ fn certified(result: &JsValue) -> bool {
     field(&field(result, "certificate"), "certified").as_bool().unwrap()
 }
 
-fn nested(rows: &[&[f64]]) -> JsValue {
-    rows.iter().map(|r| JsValue::from(Float64Array::from(*r))).collect::<Array>().into()
-}
-
 fn read(text: &str) -> JsValue {
     read_g2o_text(&text.into(), None).unwrap()
 }
@@ -51,14 +34,6 @@ fn read(text: &str) -> JsValue {
 fn solve(input: &JsValue, options: &[(&str, JsValue)]) -> Result<JsValue, JsValue> {
     let options = (!options.is_empty()).then(|| object(options).unchecked_into());
     synchronize_poses_js(input, options).map_err(Into::into)
-}
-
-/// The `argument`, `kind` and message of a thrown Error.
-fn refused(result: Result<impl Sized, impl Into<JsValue>>) -> (String, String, String) {
-    let Err(error) = result else { panic!("expected an Error") };
-    let error: JsValue = error.into();
-    let get = |key: &str| Reflect::get(&error, &key.into()).unwrap().as_string().unwrap();
-    (get("argument"), get("kind"), get("message"))
 }
 
 /// CSAIL (2D, 1,045 poses): MATH.md's 31.70372 to 1e-6, certified, z = 0 and rotations about z.

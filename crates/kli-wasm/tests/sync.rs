@@ -3,38 +3,13 @@
 //! The solvers are tested in depth natively (`src/sync/tests.rs`, `tests/sync_fixture.rs`).
 #![cfg(all(target_arch = "wasm32", feature = "sync"))]
 
-use js_sys::{Array, Float64Array, Int32Array, Object, Reflect, Uint8Array, Uint32Array};
+use js_sys::{Array, Float64Array, Int32Array, Uint8Array, Uint32Array};
 use kli_wasm::sync::{JsSyncFlow, read_g2o_text, synchronize_rotations};
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::wasm_bindgen_test;
 
-fn object(entries: &[(&str, JsValue)]) -> JsValue {
-    let object = Object::new();
-    for (key, value) in entries {
-        Reflect::set(&object, &(*key).into(), value).unwrap();
-    }
-    object.into()
-}
-
-fn field(value: &JsValue, key: &str) -> JsValue {
-    Reflect::get(value, &key.into()).unwrap()
-}
-
-fn floats(value: &JsValue, key: &str) -> Vec<f64> {
-    field(value, key).unchecked_into::<Float64Array>().to_vec()
-}
-
-fn nested(rows: &[&[f64]]) -> JsValue {
-    rows.iter().map(|r| JsValue::from(Float64Array::from(*r))).collect::<Array>().into()
-}
-
-/// The `argument`, `kind` and message of a thrown Error.
-fn refused(result: Result<impl Sized, impl Into<JsValue>>) -> (String, String, String) {
-    let Err(error) = result else { panic!("expected an Error") };
-    let error: JsValue = error.into();
-    let get = |key: &str| Reflect::get(&error, &key.into()).unwrap().as_string().unwrap();
-    (get("argument"), get("kind"), get("message"))
-}
+mod common;
+use common::{field, floats, nested, object, refused};
 
 const S60: f64 = 0.5; // sin 30°
 const C60: f64 = 0.866_025_403_784_438_6; // cos 30°
