@@ -50,19 +50,20 @@ fn pose_graph(
     }
 }
 
+/// A rotation uniform on SO(3), or about z with its angle uniform in 2D.
+fn rotation(random: &mut Random, d: usize) -> DQuat {
+    if d == 2 {
+        DQuat::from_rotation_z(2.0 * PI * random.uniform())
+    } else {
+        random.unit_quaternion()
+    }
+}
+
 /// Random poses (rotations uniform, about z in 2D; positions normal, spread 5) on a ring with
 /// chords of probability `p`, each edge measured exactly, `κ` in [1, 10), `τ` in [0.1, 5).
 fn exact(d: usize, n: usize, p: f64, seed: u64) -> (PoseGraph, Vec<DQuat>, Vec<DVec3>) {
     let mut random = Random::new(seed);
-    let rotations: Vec<DQuat> = (0..n)
-        .map(|_| {
-            if d == 2 {
-                DQuat::from_rotation_z(2.0 * PI * random.uniform())
-            } else {
-                random.unit_quaternion()
-            }
-        })
-        .collect();
+    let rotations: Vec<DQuat> = (0..n).map(|_| rotation(&mut random, d)).collect();
     let positions: Vec<DVec3> = (0..n)
         .map(|_| {
             let v = random.gaussian3() * 5.0;
@@ -159,16 +160,7 @@ fn random_graph(d: usize, n: usize, m: usize, seed: u64) -> PoseGraph {
             edges.push([i, j]);
         }
     }
-    let relative = edges
-        .iter()
-        .map(|_| {
-            if d == 2 {
-                DQuat::from_rotation_z(2.0 * PI * random.uniform())
-            } else {
-                random.unit_quaternion()
-            }
-        })
-        .collect();
+    let relative = edges.iter().map(|_| rotation(&mut random, d)).collect();
     let translations = edges
         .iter()
         .map(|_| {
@@ -191,15 +183,7 @@ fn eliminating_the_translations_is_the_direct_least_squares_minimum() {
         let (n, m) = (7, 10);
         let graph = random_graph(d, n, m, seed);
         let mut random = Random::new(seed + 100);
-        let rotations: Vec<DQuat> = (0..n)
-            .map(|_| {
-                if d == 2 {
-                    DQuat::from_rotation_z(2.0 * PI * random.uniform())
-                } else {
-                    random.unit_quaternion()
-                }
-            })
-            .collect();
+        let rotations: Vec<DQuat> = (0..n).map(|_| rotation(&mut random, d)).collect();
         let r: Vec<DMat3> = rotations.iter().map(|&q| DMat3::from_quat(q)).collect();
         // Rows: d per edge, sqrt(τ) (t_j − t_i − R_i t̃); unknowns t_1 … t_{n−1}.
         let unknowns = d * (n - 1);
