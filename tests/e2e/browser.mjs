@@ -120,6 +120,23 @@ export function compare(page, a, b, { slack = 0 } = {}) {
   }, [a.toString("base64"), b.toString("base64"), slack]);
 }
 
+/**
+ * Waits until the canvas `selector` matches (or the canvas in the shadow root of the
+ * <kli-figure> it matches) has more than `least` painted, non-white pixels, and returns how many;
+ * 0 when it has not within `timeout` ms. A canvas starts transparent, (0, 0, 0, 0): no drawing.
+ * @param {import("playwright-core").Page} page
+ * @param {string} selector
+ */
+export const painted = (page, selector, least = 0, timeout = 10000) => page.waitForFunction(([selector, least]) => {
+  const found = document.querySelector(selector);
+  const canvas = found?.shadowRoot?.querySelector("canvas") ?? found;
+  if (!(canvas instanceof HTMLCanvasElement) || canvas.width < 10) return false;
+  const data = /** @type {CanvasRenderingContext2D} */ (canvas.getContext("2d")).getImageData(0, 0, canvas.width, canvas.height).data;
+  let count = 0;
+  for (let i = 0; i < data.length; i += 4) if (data[i + 3] > 0 && (data[i] < 250 || data[i + 1] < 250 || data[i + 2] < 250)) count++;
+  return count > least && count;
+}, /** @type {[string, number]} */ ([selector, least]), { timeout }).then((handle) => handle.jsonValue()).then(Number, () => 0);
+
 /** Pixel statistics of a canvas: how many are painted and not white, and how many are near a colour. */
 export function canvasStats(page, selector, colours = {}) {
   return page.evaluate(([selector, colours]) => {

@@ -5,19 +5,12 @@
 // are checked here too: axe and 390 px.
 import { test } from "node:test";
 import assert from "node:assert/strict";
-import { axeViolations, setup, open } from "./browser.mjs";
+import { axeViolations, painted, setup, open } from "./browser.mjs";
 
 setup();
 
-/** Painted, non-white pixels of the figure's canvas. */
-const painted = (page) => page.waitForFunction(() => {
-  const canvas = document.querySelector("kli-figure")?.shadowRoot?.querySelector("canvas");
-  if (!canvas || canvas.width < 10) return false;
-  const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
-  let count = 0;
-  for (let i = 0; i < data.length; i += 4) if (data[i + 3] > 0 && (data[i] < 250 || data[i + 1] < 250 || data[i + 2] < 250)) count++;
-  return count > 2000 && count;
-}, null, { timeout: 10000 }).then((handle) => handle.jsonValue());
+/** The figure's painted pixels, once it shows a drawing. */
+const figureDrawn = (page) => painted(page, "kli-figure", 2000);
 
 test("a tour figure in a frame: its title, the figure drawn at its attributes, named for a screen reader, filling the frame", async () => {
   const { page, context, problems } = await open("figure/?view=slerp&s=0.25&title=SLERP%20a%20quarter%20of%20the%20way",
@@ -25,7 +18,7 @@ test("a tour figure in a frame: its title, the figure drawn at its attributes, n
   try {
     assert.equal(await page.locator("h1").textContent(), "SLERP a quarter of the way");
     assert.equal(await page.title(), "SLERP a quarter of the way");
-    assert.ok(await painted(page) > 2000);
+    assert.ok(await figureDrawn(page) > 2000);
     const figure = await page.evaluate(() => {
       const element = document.querySelector("kli-figure");
       const box = element.getBoundingClientRect();
@@ -70,7 +63,7 @@ test("the site's documents and the frame meet WCAG 2.2 AA (axe) and fit 390 px",
     const { page, context, problems } = await open(address, { viewport: { width: 390, height: 800 } });
     try {
       await page.waitForLoadState("load");
-      if (address.startsWith("figure/")) await painted(page);
+      if (address.startsWith("figure/")) await figureDrawn(page);
       assert.deepEqual(await axeViolations(page), [], `${address}: axe`);
       assert.ok(await page.evaluate(() => document.documentElement.scrollWidth <= innerWidth), `${address} is wider than 390 px`);
       assert.deepEqual(problems, [], address);
@@ -94,7 +87,7 @@ test("a figure is named for a screen reader while its module is still on its way
     assert.equal(await page.evaluate(() => document.querySelector("kli-figure").run), null, "the module is held back");
     assert.equal(await page.evaluate(() => document.querySelector("kli-figure").shadowRoot.querySelector("canvas").getAttribute("aria-label")), "SLERP");
     release();
-    assert.ok(await painted(page) > 2000);
+    assert.ok(await figureDrawn(page) > 2000);
     assert.deepEqual(problems, []);
   } finally {
     release();

@@ -9,7 +9,7 @@ import { dirname, join } from "node:path";
 import { pathToFileURL } from "node:url";
 import { chromium } from "playwright-core";
 import { CHROMIUM } from "../../scripts/static-server.mjs";
-import { root } from "./browser.mjs";
+import { painted, root } from "./browser.mjs";
 import { PAGES } from "../../www/pages.js";
 
 let browser;
@@ -26,24 +26,9 @@ const drawn = async (page) => {
   const counts = [];
   for (const id of ids) {
     await page.locator(`canvas#${id}`).scrollIntoViewIfNeeded();
-    await page.waitForFunction((id) => {
-      const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById(id));
-      const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
-      for (let i = 0; i < data.length; i += 4) if (data[i + 3] > 0 && (data[i] < 250 || data[i + 1] < 250 || data[i + 2] < 250)) return true;
-      return false;
-    }, id, { timeout: 5000 }).catch(() => {});
-    counts.push({ id, count: await page.evaluate(paint, id) });
+    counts.push({ id, count: await painted(page, `canvas#${id}`, 0, 5000) });
   }
   return counts;
-};
-
-/** The painted, non-white pixels of the canvas `id`. */
-const paint = (/** @type {string} */ id) => {
-  const canvas = /** @type {HTMLCanvasElement} */ (document.getElementById(id));
-  const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
-  let count = 0;
-  for (let i = 0; i < data.length; i += 4) if (data[i + 3] > 0 && (data[i] < 250 || data[i + 1] < 250 || data[i + 2] < 250)) count++;
-  return count;
 };
 
 for (const { html: name } of PAGES) {
@@ -100,14 +85,8 @@ test("dist/single/kli-figure.js: one classic script, the element with every modu
   try {
     await page.goto(allowed[0]);
     await page.waitForFunction(() => Array.from(document.querySelectorAll("kli-figure"), (f) => f.run).every(Boolean), null, { timeout: 10000 });
-    const drawn = await page.evaluate(() => Array.from(document.querySelectorAll("kli-figure"), (f) => {
-      const canvas = f.shadowRoot.querySelector("canvas");
-      const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
-      let count = 0;
-      for (let i = 0; i < data.length; i += 4) if (data[i + 3] > 0 && (data[i] < 250 || data[i + 1] < 250 || data[i + 2] < 250)) count++;
-      return count;
-    }));
-    drawn.forEach((count, i) => assert.ok(count > 1000, `figure ${i} is blank`));
+    const figures = await page.locator("kli-figure").count();
+    for (let i = 1; i <= figures; i++) assert.ok(await painted(page, `kli-figure:nth-of-type(${i})`, 1000) > 1000, `figure ${i} is blank`);
     assert.ok(await page.evaluate(() => Math.abs(document.querySelector("kli-figure").end - 11.66) < 1e-9));
     assert.deepEqual(problems, []);
   } finally {
@@ -157,15 +136,7 @@ test("the teacher's kit: one zip with every one-file page, the mathematics, the 
     // first figure's slide shows it drawn.
     await page.goto(pathToFileURL(join(dir, "kli-teaching-kit/deck/slides.html")).href + "#/slide-turn");
     await page.waitForFunction(() => window.Reveal?.isReady?.() && window.Reveal.getPlugin("notes"), null, { timeout: 10000 });
-    const figure = await page.waitForFunction(() => {
-      const canvas = document.getElementById("turn")?.shadowRoot?.querySelector("canvas");
-      if (!canvas || canvas.width < 10) return 0;
-      const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
-      let count = 0;
-      for (let i = 0; i < data.length; i += 4) if (data[i + 3] > 0 && (data[i] < 250 || data[i + 1] < 250 || data[i + 2] < 250)) count++;
-      return count > 1000 && count;
-    }, null, { timeout: 10000 }).then((handle) => handle.jsonValue(), () => 0);
-    assert.ok(figure > 1000, "the kit's deck: the first figure is blank");
+    assert.ok(await painted(page, "#turn", 1000) > 1000, "the kit's deck: the first figure is blank");
     assert.deepEqual(problems, []);
   } finally {
     await context.close();

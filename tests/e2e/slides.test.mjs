@@ -6,7 +6,7 @@
 import { test } from "node:test";
 import assert from "node:assert/strict";
 import { inflateSync } from "node:zlib";
-import { setup, open } from "./browser.mjs";
+import { open, painted, setup } from "./browser.mjs";
 
 setup();
 
@@ -104,14 +104,7 @@ test("the lecture: every slide has speaker notes, the notes plugin is on, and ev
           id, { timeout: 10000 }).then(() => page.evaluate((id) => document.getElementById(id).message?.textContent ?? "", id));
         assert.equal(refused, "", `slide ${index}: the figure #${id} refused an attribute`);
         await figureReady(page, id);
-        const painted = await page.waitForFunction((id) => {
-          const canvas = document.getElementById(id).shadowRoot.querySelector("canvas");
-          const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
-          let count = 0;
-          for (let i = 0; i < data.length; i += 4) if (data[i + 3] > 0 && (data[i] < 250 || data[i + 1] < 250 || data[i + 2] < 250)) count++;
-          return count > 2000 && count;
-        }, id, { timeout: 10000 }).then((handle) => handle.jsonValue(), () => 0);
-        assert.ok(painted > 2000, `slide ${index}: the figure #${id} is blank`);
+        assert.ok(await painted(page, `#${id}`, 2000) > 2000, `slide ${index}: the figure #${id} is blank`);
       }
     }
     assert.deepEqual(problems, []);
