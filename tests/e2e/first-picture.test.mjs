@@ -51,6 +51,13 @@ async function held(html, viewport) {
   return { page, context, problems, release };
 }
 
+/** Whether the first pictures were painted in the first contentful paint (Element Timing). */
+async function samePaint(page) {
+  await page.waitForFunction(() => performance.getEntriesByName("kli:first-frame").length > 0);
+  return page.evaluate(() => performance.getEntriesByName("kli:first-frame")[0].startTime
+    === performance.getEntriesByName("first-contentful-paint")[0]?.startTime);
+}
+
 /** A screenshot of each canvas's box, scrolled into view (a full-page screenshot would lay the
  *  page out at another size for a moment: a layout shift, and on a wide screen the phone's
  *  pictures fetched). With `live`, each once its canvas has taken over from its picture: the
@@ -72,7 +79,16 @@ for (const layout of LAYOUTS) {
     test(`${page.html} (${layout.name}): the first picture before the module, equal to the live one at rest, no shift`, async () => {
       const selectors = pictured(page);
       assert.ok(selectors.length >= 2, `${page.html} has first pictures`);
-      const { page: tab, context, problems, release } = await held(page.html, layout.viewport);
+      // The paint is the browser's to schedule: on a busy machine it may decode a picture a frame
+      // late once (2 loads of 36 in one day). The page loads again, up to twice; the last load is
+      // held to it.
+      let opened = await held(page.html, layout.viewport);
+      for (let attempt = 1; attempt < 3 && !(await samePaint(opened.page)); attempt++) {
+        opened.release();
+        await opened.context.close();
+        opened = await held(page.html, layout.viewport);
+      }
+      const { page: tab, context, problems, release } = opened;
       try {
         // Every picture shown while the module is still held back, and in the text's paint: its
         // sheet blocks rendering, so the first contentful paint is the pictures' (Element Timing).
