@@ -16,8 +16,12 @@
 //! synchronisation's relative rotation) and `t̃_ij ≈ R_iᵀ (t_j − t_i)`. Its weights are
 //! SE-Sync's (Rosen et al. 2019; MATH.md, "Pose graphs"), with `Σ` the inverse of an information
 //! block: in 3D `τ = 3 / tr(Σ_t)` and `κ = 3 / (2 tr(Σ_R))` (the 6×6 information's upper
-//! triangle row by row, translation block first); in 2D `τ = 2 / tr(Σ_t)` and `κ = I_θθ`. An edge
-//! written without its information has the identity's: `τ = 1`, and `κ = ½` in 3D, `1` in 2D.
+//! triangle row by row, translation block first); in 2D `τ = 2 / tr(Σ_t)` and `κ = I_θθ`. `Σ_R` is
+//! in g2o's units, the error quaternion's vector part (half the angle): an `EDGE3` line's rotation
+//! block, on the angles themselves, is multiplied by 4 first, so that a graph weighs the same in
+//! either format (GTSAM's `sphere2500.txt` and SE-Sync's `sphere2500.g2o`, one graph, have the
+//! same optimum). An edge written without its information has the identity's in its own units:
+//! `τ = 1`, and `κ = ½` (`EDGE_SE3:QUAT`), `2` (`EDGE3`) or `1` (2D).
 //!
 //! `FIX id` lines, blank lines and `#` comments are read and ignored; lines of any other kind
 //! (landmarks, priors, parameters) are skipped and counted, or refused with [`OtherLines::Refuse`].
@@ -120,6 +124,19 @@ impl Kind {
         }
     }
 
+    /// What a 3D line's rotation information is multiplied by to be in g2o's units, for which
+    /// SE-Sync's `κ` is defined. g2o's `EDGE_SE3:QUAT` measures the rotation error by the error
+    /// quaternion's vector part, `sin(θ/2) n ≈ θ/2 · n`; TORO's `EDGE3` by the angles themselves,
+    /// `θ n`. The same noise is `4 I` in g2o's units where it is `I` in TORO's (the Jacobian is
+    /// `½ I`, and information goes as its inverse squared): SE-Sync's `sphere2500.g2o` writes
+    /// `400, 400, 100` where GTSAM's `sphere2500.txt`, the same graph, writes `100, 100, 25`.
+    fn rotation_information_scale(self) -> f64 {
+        match self {
+            Kind::Edge3 => 4.0,
+            _ => 1.0,
+        }
+    }
+
     /// The entries of the information matrix's upper triangle after an edge's pose.
     fn information_entries(self) -> usize {
         match self.dimension() {
@@ -198,7 +215,10 @@ impl Fields<'_> {
         let entries = kind.information_entries();
         let have = self.fields.len().saturating_sub(at);
         if have == 0 {
-            return Ok(if kind.dimension() == 2 { (1.0, 1.0) } else { (0.5, 1.0) });
+            return Ok(match kind.dimension() {
+                2 => (1.0, 1.0),
+                _ => (0.5 * kind.rotation_information_scale(), 1.0),
+            });
         }
         if have < entries {
             return Err(bad(
@@ -253,7 +273,7 @@ impl Fields<'_> {
         let tau = 3.0 / trace_of_inverse3(block(0)).ok_or_else(|| positive("translation"))?;
         let kappa =
             3.0 / (2.0 * trace_of_inverse3(block(3)).ok_or_else(|| positive("rotation"))?);
-        Ok((kappa, tau))
+        Ok((kappa * kind.rotation_information_scale(), tau))
     }
 }
 

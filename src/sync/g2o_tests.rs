@@ -65,8 +65,10 @@ fn g2o_and_toro_3d_lines_are_read() {
     let got = DMat3::from_quat(graph.relative[1]);
     assert!((got - expected).to_cols_array().iter().all(|d| d.abs() < 1e-15));
     assert_eq!(graph.translations, vec![DVec3::new(1.0, 0.0, 0.0), DVec3::new(4.0, 5.0, 6.0)]);
-    // The identity's information, written or not: τ = 3 / tr(I₃) = 1, κ = 3 / (2 tr(I₃)) = ½.
-    assert_eq!(graph.rotation_weights, vec![0.5, 0.5]);
+    // The identity's information, written or not: τ = 3 / tr(I₃) = 1, κ = 3 / (2 tr(I₃)) = ½ on
+    // the g2o line; on the TORO line the identity is on the angles, 4 I₃ in g2o's half-angle
+    // units: κ = 3 / (2 tr(I₃ / 4)) = 2.
+    assert_eq!(graph.rotation_weights, vec![0.5, 2.0]);
     assert_eq!(graph.translation_weights, vec![1.0, 1.0]);
     let initial = graph.initial.unwrap();
     assert!(angle(initial[1], DQuat::from_rotation_z(PI / 2.0)) < 1e-15);
@@ -86,10 +88,11 @@ fn weights_in_3d_are_se_syncs() {
     let graph = read(&format!("EDGE_SE3:QUAT 0 1 0 0 0 0 0 0 1 {information}\n"));
     assert!(close(graph.translation_weights[0], 9.0 / 7.0), "{:?}", graph.translation_weights);
     assert!(close(graph.rotation_weights[0], 60.0 / 7.0), "{:?}", graph.rotation_weights);
-    // The same entries on a TORO line.
+    // The same entries on a TORO line: its rotation block is on the angles, diag(40, 80, 160) in
+    // g2o's half-angle units, tr Σ_R = 0.04375, κ = 3 / 0.0875 = 240/7; τ as before.
     let graph = read(&format!("EDGE3 0 1 0 0 0 0 0 0 {information}\n"));
     assert!(close(graph.translation_weights[0], 9.0 / 7.0));
-    assert!(close(graph.rotation_weights[0], 60.0 / 7.0));
+    assert!(close(graph.rotation_weights[0], 240.0 / 7.0), "{:?}", graph.rotation_weights);
 }
 
 #[test]

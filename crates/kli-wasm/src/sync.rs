@@ -145,8 +145,9 @@ export interface PoseGraph {
   edges: Uint32Array;
   /** 4m numbers: each edge's relative rotation in the call's order. */
   relative: Float64Array;
-  /** Each edge's rotation weight κ (3D: 3 / (2 tr Σ_R); 2D: I_θθ; the identity's without
-   *  information: ½ in 3D, 1 in 2D), which `synchronizeRotations` uses. */
+  /** Each edge's rotation weight κ (3D: 3 / (2 tr Σ_R), Σ_R in g2o's half-angle units, an
+   *  `EDGE3` line's angle information times 4; 2D: I_θθ; the identity's without information:
+   *  ½ on `EDGE_SE3:QUAT`, 2 on `EDGE3`, 1 in 2D), which `synchronizeRotations` uses. */
   weights: Float64Array;
   /** 3m numbers: each edge's measured translation in its first pose's frame (z = 0 in 2D). */
   translations: Float64Array;
