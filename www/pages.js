@@ -102,14 +102,14 @@ export const PAGES = [
     canvases: {
       euler: "#learn-euler", turn: "#learn-turn", cover: "#learn-cover", slerp: "#learn-slerp", hopf: "#learn-hopf",
       rolled: "#learn-rolled", phases: "#learn-phases", lohe: "#learn-lohe", kli: "#learn-kli", clock: "#learn-clock",
-      steps: "#learn-steps", drift: "#learn-drift",
+      steps: "#learn-steps", drift: "#learn-drift", rates: "#learn-rates",
     },
     save: {
       euler: ["Euler angles", "the Euler angles figure"], turn: ["Turn", "the turn"], cover: ["Double cover", "the double cover"],
       slerp: ["SLERP", "the SLERP figure"], hopf: ["Hopf sphere", "the Hopf sphere"], rolled: ["Rolled object", "the rolled object"],
       phases: ["Phases", "the Kuramoto phases"], lohe: ["Swarm on S³", "the swarm on S³"], kli: ["KLI", "the KLI figure"],
-      clock: ["Clock", "the clock"], steps: ["Algorithm 1", "Algorithm 1's steps"], drift: ["Drift", "the drift"],
-      tour: ["Algorithm 1's path", "Algorithm 1's path"],
+      clock: ["Time warp", "the time warp"], steps: ["Algorithm 1", "Algorithm 1's steps"], drift: ["Drift", "the drift"],
+      rates: ["Turning rate", "the turning rate"], tour: ["Algorithm 1's path", "Algorithm 1's path"],
     },
   },
 ];

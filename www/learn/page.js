@@ -42,6 +42,7 @@ const VALUES = /** @type {Record<string, (value: number, state: LearnState) => s
   digits: (v) => `ε = ${power(v)}`,
   delta: (v) => `δ = ${v}`,
   step: (v) => `h = ${v}`,
+  smoothness: (v) => live.figures.smoothness(String(v)),
 });
 
 /** The views whose canvas is near the screen (within 400 px). A view far from it keeps its first
@@ -88,8 +89,12 @@ const page = new Page({
     showValues(host);
     quoteSummary(run, state);
     quoteTime(run, host.t);
+    // The keyframes figure beside the turning rate shows the same smoothness.
+    document.getElementById("fig-keyframes")?.setAttribute("smoothness", String(state.smoothness));
   },
-  input: (host) => {
+  // The other pages' figures' sliders (section 9, no name) are theirs: the tour's run is not rebuilt.
+  input: (host, name) => {
+    if (!name) return true;
     showValues(host);
     return false;
   },
@@ -135,6 +140,12 @@ function quoteSummary(/** @type {LearnDemo} */ run, /** @type {LearnState} */ st
   const e = (/** @type {number} */ x) => x.toExponential(1);
   $("#drift-out", HTMLOutputElement).textContent =
     live.drift({ h: String(state.step), euler: e(d.euler), rk4: e(d.rk4), geodesic: e(d.geodesic) });
+  const r = s.rates;
+  const rates = {
+    s: String(state.smoothness), key: String(r.jumpKey), jump: r.jump.toFixed(2), acceleration: r.acceleration.toFixed(1),
+    slerpKey: String(r.slerpJumpKey), slerpJump: r.slerpJump.toFixed(2),
+  };
+  $("#rates-out", HTMLOutputElement).textContent = r.continuous ? live.rates.smooth(rates) : live.rates.jump(rates);
 }
 
 /** The values the text quotes that follow the clock. */

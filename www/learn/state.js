@@ -7,16 +7,18 @@ import { argumentOf } from "../runtime/runs.js";
 
 /**
  * @typedef {{ yaw: number, pitch: number, bank: number, axis: string, angle: number, s: number, roll: number,
- *   coupling: number, lohe: number, digits: number, delta: number, integrator: string, step: number }} LearnState
+ *   coupling: number, lohe: number, digits: number, delta: number, integrator: string, step: number,
+ *   smoothness: number }} LearnState
  */
 
-/** The tour as it opens: the paper's ε = 1e-5 and δ = 0.01, a quarter turn about z. */
+/** The tour as it opens: the paper's ε = 1e-5 and δ = 0.01, a quarter turn about z, the keyframe
+ *  chain at its smoothest. */
 const START = /** @type {LearnState} */ ({
   yaw: 30, pitch: 40, bank: 0, axis: "z", angle: 90, s: 0.5, roll: 0, coupling: 1.5, lohe: 3, digits: 5, delta: 0.01,
-  integrator: "euler", step: 0.5,
+  integrator: "euler", step: 0.5, smoothness: 1,
 });
 
-/** The tour (learn.html): `?axis=z&angle=90&s=0.5&roll=0&K=1.5&digits=5&delta=0.01&int=euler&h=0.5…`. */
+/** The tour (learn.html): `?axis=z&angle=90&s=0.5&roll=0&K=1.5&digits=5&delta=0.01&int=euler&h=0.5&smooth=1…`. */
 export const LEARN = {
   schema: /** @type {const} */ ([
     { key: "yaw", url: "yaw", kind: "number", range: [-180, 180] },
@@ -32,6 +34,7 @@ export const LEARN = {
     { key: "delta", url: "delta", kind: "number", range: [0.001, 0.5] },
     { key: "integrator", url: "int", kind: "word" },
     { key: "step", url: "h", kind: "number", range: [0.01, 1] },
+    { key: "smoothness", url: "smooth", kind: "number", range: [0, 1] },
   ]),
   presets: { start: START },
   defaults: START,

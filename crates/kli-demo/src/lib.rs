@@ -49,6 +49,8 @@ mod sweep;
 #[cfg(feature = "sync-page")]
 pub mod sync;
 pub mod ticks;
+#[cfg(any(feature = "keyframes-page", feature = "learn-page"))]
+mod turning;
 
 #[cfg(feature = "kli-page")]
 pub use self::kli::KliDemo;

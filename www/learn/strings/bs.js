@@ -15,7 +15,8 @@ export const page = {
     href="#paper"><span lang="en">“Interpolating Rotations with Non-abelian Kuramoto Model on the 3-Sphere”</span></a>
     (Interpolacija rotacija neabelovim Kuramotovim modelom na 3-sferi) autora Zinaida Kapića i Aladina Crnkića, koji
     ova stranica implementira. Svaka slika je živa: pomjeri njen klizač i tekst pored nje navodi nove vrijednosti.
-    Slike koje se mijenjaju u vremenu dijele jedan sat, traku na dnu ekrana. Svaki odjeljak završava pitanjem:
+    Slike koje se mijenjaju u vremenu dijele jedno vrijeme <var>t</var>, koje postavlja
+    traka vremena na dnu ekrana. Svaki odjeljak završava pitanjem:
     predvidi odgovor, pa ga provjeri dugmetom u njemu.`,
   "contents.item1": `<a href="#care">Zašto je s rotacijama potreban oprez</a>`,
   "contents.item2": `<a href="#turn">Osa, ugao, četiri broja</a>`,
@@ -87,13 +88,16 @@ export const page = {
   "turn.p5":
     `Četiri broja sada: <output id="turn-out">q = 0.707 + 0.000 i + 0.000 j + 0.707 k</output>.`,
   "turn.question1":
-    `Predvidi, pa provjeri: četvrtina okreta oko z. Koja su četiri broja i kamo ide nos?`,
+    `Predvidi, pa provjeri: okret za 120° oko dijagonale (1, 1, 1)/√3. Koja su četiri broja i kamo ide nos?`,
   "turn.p6":
-    `Prvo to izračunaj iz formule. Zatim <a class="set" href="?axis=z&amp;angle=90#turn"
-    data-state='{"axis":"z","angle":90}'>postavi 90° oko z</a>.`,
+    `Prvo to izračunaj iz formule. Zatim <a class="set" href="?axis=diagonal&amp;angle=120#turn"
+    data-state='{"axis":"diagonal","angle":120}'>postavi 120° oko dijagonale</a>.`,
   "turn.p7":
-    `<strong>Odgovor.</strong> cos 45° = sin 45° = 0.707, pa je <var>q</var> = 0.707 + 0.707 k. Nos, osa
-    <var>x</var>, ide u <var>y</var>: <var>q</var> i <var>q̄</var> = j.`,
+    `<strong>Odgovor.</strong> cos 60° = 0.5, sin 60° = 0.866, a svaka komponenta ose je 1/√3 = 0.577, pa svaka od
+    jedinica i, j, k dobija 0.866 × 0.577 = 0.5: <var>q</var> = 0.5 + 0.5 i + 0.5 j + 0.5 k, što je <var>r</var> iz
+    rada (odjeljak 7). Trećina punog okreta oko dijagonale kružno premješta ose: nos, osa <var>x</var>, ide u
+    <var>y</var> (<var>q</var> i <var>q̄</var> = j), <var>y</var> ide u <var>z</var>, a <var>z</var> u
+    <var>x</var>.`,
   "cover.title1": `<span class="number">3</span> S³ i dvostruko natkrivanje`,
   "cover.p1":
     `Četiri broja jediničnog kvaterniona su tačka na udaljenosti 1 od ishodišta četverodimenzionalnog prostora:
@@ -199,14 +203,18 @@ export const page = {
     sin(<var>θ<sub>j</sub></var> − <var>θ<sub>i</sub></var>).`,
   "kuramoto.p3":
     `Koliko se slažu, mjeri <dfn id="def-order">parametar reda</dfn>: dužina <var>R</var> njihove prosječne tačke,
-    (1/<var>N</var>) Σ e<sup>i<var>θ<sub>j</sub></var></sup>; 0 kad su raštrkani, 1 kad su usklađeni. Ispod, 20 faza
+    (1/<var>N</var>) Σ e<sup>i<var>θ<sub>j</sub></var></sup>; 0 kad su raštrkani, 1 kad su usklađeni.
+    Ovdje je i imaginarna jedinica kompleksnih brojeva, i² = −1, a e<sup>i<var>θ</var></sup> = cos <var>θ</var> + i
+    sin <var>θ</var> je tačka pod uglom <var>θ</var> na jediničnoj kružnici kompleksne ravni. To nije komponenta i
+    kvaterniona iz odjeljka 2: kvaternion ima tri takve jedinice, i, j i k, a na S³ niže se usrednjavaju sami
+    kvaternioni. Ispod, 20 faza
     ima frekvencije ravnomjerno raspoređene od −0.5 do 0.5 (narandžaste se okreću naprijed, ljubičaste unazad). Za
     mnogo oscilatora s takvom raspodjelom privlačenje pobjeđuje čim <var>K</var> pređe 2/(π<var>g</var>(0)) ≈ 0.64,
     gdje je <var>g</var>(0) = 1 gustina frekvencija u njihovom središtu. Postavi <var>K</var> i pritisni
     <strong>Pusti od t = 0</strong>.`,
   "kuramoto.caption1":
-    `Faze na svojoj kružnici, strelica je njihova prosječna tačka; pored je <var>R</var>(<var>t</var>) do kraja sata
-    (<var>t</var> = 12, kasnije kad je <var>ε</var> iz odjeljka 7 manji), s označenim prikazanim trenutkom.`,
+    `Faze na svojoj kružnici, strelica je njihova prosječna tačka; pored je <var>R</var>(<var>t</var>) do kraja trake
+    vremena (<var>t</var> = 12, kasnije kad je <var>ε</var> iz odjeljka 7 manji), s označenim prikazanim trenutkom.`,
   "kuramoto.legend1": "Kuramotove faze",
   "kuramoto.p4": `<output id="phases-out">Pri t = 0.00, R = 0.049.</output>`,
   "kuramoto.p5":
@@ -268,13 +276,15 @@ export const page = {
   "kli.p4":
     `<output id="kli-out">Pri t = 0.00, φ = 60.00°, s = 0.000: q = 0.000 + 0.000 i + 0.000 j + 1.000 k.</output>`,
   "kli.p5":
-    `<strong>Sat.</strong> Neka je <var>φ</var>(<var>t</var>) ugao između <var>q</var>(<var>t</var>) i <var>r</var>.
+    `<strong>Iskrivljenje vremena.</strong> Neka je <var>φ</var>(<var>t</var>) ugao između <var>q</var>(<var>t</var>) i <var>r</var>.
     Tada je <var>φ</var>′ = −sin <var>φ</var>, čije je rješenje tan(<var>φ</var>(<var>t</var>)/2) =
     tan(<var>φ</var>₀/2) e<sup>−<var>t</var></sup>. Dakle, <var>q</var>(<var>t</var>) je tačka SLERP-a za
-    <var>s</var>(<var>t</var>) = 1 − <var>φ</var>(<var>t</var>)/<var>φ</var>₀: tačno isti put kao SLERP, ali po
-    drugom satu. Počinje brzinom sin <var>φ</var>₀ i eksponencijalno usporava kako stiže.`,
+    <var>s</var>(<var>t</var>) = 1 − <var>φ</var>(<var>t</var>)/<var>φ</var>₀: tačno isti put kao SLERP, ali drugim
+    tempom. Ovo <var>s</var>(<var>t</var>) je KLI-jevo <em>iskrivljenje vremena</em>: koliko je duž SLERP-ovog luka u
+    trenutku <var>t</var> (traka vremena postavlja <var>t</var>, a iskrivljenje je ono što tok od njega napravi).
+    Počinje brzinom sin <var>φ</var>₀ i eksponencijalno usporava kako stiže.`,
   "kli.caption2":
-    `<var>s</var>(<var>t</var>) za <span class="kli">KLI</span> naspram <span class="slerp">SLERP</span>-a izvedenog
+    `Iskrivljenje vremena <var>s</var>(<var>t</var>) za <span class="kli">KLI</span> naspram <span class="slerp">SLERP</span>-a izvedenog
     za isto vrijeme, <var>t</var>/<var>T</var>.`,
   "kli.p6":
     `<dfn id="def-algorithm-1">Algoritam 1</dfn> iz rada računa tok korak po korak: počni od <var>q</var> =
@@ -288,7 +298,7 @@ export const page = {
     `<var>T</var>* = ln( tan(<var>φ</var>₀/2) / tan(arcsin(<var>ε</var>/2)) ) = 11.6568 za primjer iz rada,`,
   "kli.p8":
     `a petlja staje na prvom višekratniku od <var>δ</var> poslije toga, 11.66. Izvedi korake sam: <strong>Korak
-    δ</strong> pomjera sat za jedan korak, a tačka na grafiku je udaljenost u tom koraku.`,
+    δ</strong> pomjera traku vremena za jedan korak, a tačka na grafiku je udaljenost u tom koraku.`,
   "kli.caption3":
     `‖<var>r</var> − <var>q<sub>n</sub></var>‖ u svakom koraku <var>t<sub>n</sub></var> = <var>nδ</var> na
     logaritamskoj skali, <var>ε</var> isprekidano, zaustavljanje <var>T</var> i <var>T</var>* tačkasto.`,
@@ -298,7 +308,7 @@ export const page = {
     1166 koraka, pri T = 11.66; T* = 11.6568.</output>`,
   "kli.question1": "Predvidi, pa provjeri: u kojem je trenutku KLI na pola luka?",
   "kli.p10":
-    `Koristi sat: pola puta znači <var>φ</var> = 30°. Pogodi, pa <a class="set" href="?t=0.77#kli" data-t="0.77">idi
+    `Koristi traku vremena: pola puta znači <var>φ</var> = 30°. Pogodi, pa <a class="set" href="?t=0.77#kli" data-t="0.77">idi
     na t = 0.77</a>.`,
   "kli.p11":
     `<strong>Odgovor.</strong> tan 15° = tan 30° e<sup>−<var>t</var></sup> daje <var>t</var> = ln(tan 30° / tan 15°)
@@ -309,8 +319,8 @@ export const page = {
     `Pogodi, pa <a class="set" href="?digits=6#kli" data-state='{"digits":6}'>postavi ε = 10⁻⁶</a>.`,
   "kli.p13":
     `<strong>Odgovor.</strong> Za mali <var>ε</var> je tan(arcsin(<var>ε</var>/2)) ≈ <var>ε</var>/2, pa svaka cifra
-    dodaje ln 10 ≈ 2.303 vremenu <var>T</var>*: 13.9594, a petlja staje pri <var>T</var> = 13.96. Sat i osa grafika
-    sada idu do 15, pa se vide i zaustavljanje <var>T</var> i <var>T</var>*. Udaljenost opada kao
+    dodaje ln 10 ≈ 2.303 vremenu <var>T</var>*: 13.9594, a petlja staje pri <var>T</var> = 13.96. Traka vremena i ose
+    grafika sada idu do 15, pa se vide i zaustavljanje <var>T</var> i <var>T</var>*. Udaljenost opada kao
     e<sup>−<var>t</var></sup>, prava linija na logaritamskom grafiku.`,
   "kli.question3": "Napomena za čitaoce rada: štampana jednačina 4 i Tabela 1",
   "kli.p14":
@@ -342,7 +352,11 @@ export const page = {
   "integrators.question1":
     `Predvidi, pa provjeri: prepolovi korak s 0.5 na 0.25. Koliko puta se smanje odstupanja Eulerove metode i RK4?`,
   "integrators.p3":
-    `Pogodi, pa <a class="set" href="?h=0.25#integrators" data-state='{"step":0.25}'>postavi h = 0.25</a>.`,
+    `Savjet: odstupanje koje raste kao <var>h</var><sup><var>p</var></sup> postane 2<sup><var>p</var></sup> puta
+    manje kad se <var>h</var> prepolovi, a odstupanje RK4 raste kao <var>h</var>⁴. Za Eulerovu metodu izračunaj
+    odstupanje njenog prvog koraka iz gornje formule, √(1 + <var>h</var>²|<var>v</var>|²) − 1 uz |<var>v</var>| =
+    sin 60° = 0.866, pri <var>h</var> = 0.5 i pri 0.25, i razmisli je li prvi korak i pri 0.25 još uvijek najgori.
+    Pogodi, pa <a class="set" href="?h=0.25#integrators" data-state='{"step":0.25}'>postavi h = 0.25</a>.`,
   "integrators.p4":
     `<strong>Odgovor.</strong> Eulerovo oko 2.8 puta (s 0.090 na 0.032), RK4 oko 23 puta (s 1.5·10⁻³ na 6.5·10⁻⁵).
     Eulerovo odstupanje nije gomila malih grešaka. Pri <var>h</var> = 0.5 najveće odstupanje je već u prvom koraku:
@@ -370,6 +384,47 @@ export const page = {
     <dfn id="def-squad">Squad</dfn> (Shoemakeov splajn kvaterniona, uobičajena glatka kriva u softveru za animaciju,
     sastavljena od SLERP-ova između dodatnih kontrolnih tačaka; ljubičasto, isprekidano) i SLERP po dijelovima
     (tamno, tačkasto). Bijele tačke k0, k1, … su ključevi.`,
+  "many.p10":
+    `Slika iznad pokazuje kamo pokazuje nos, a ne koliko brzo se tijelo okreće, a upravo prelom u toj brzini gledalac
+    vidi. U svakom trenutku tijelo koje se okreće okreće se oko neke ose nekom brzinom. Njegova <em>brzina
+    okretanja</em>, ugaona brzina <var>ω</var>(<var>t</var>), jeste vektor duž te ose čija je dužina
+    |<var>ω</var>| ta brzina, u radijanima po jedinici vremena (s kvaternionima, <var>q</var>′ = ½ <var>ω</var>
+    <var>q</var>). SLERP od ključa do ključa okreće se oko jedne stalne ose jednolikom brzinom na svakom dijelu: dio
+    koji se okrene za <var>θ</var> za vrijeme Δ<var>t</var> ima |<var>ω</var>| = <var>θ</var>/Δ<var>t</var>. U
+    ključu preuzima sljedeći dio s drugom osom i brzinom, pa <var>ω</var> skoči: njegova brzina promjene, ugaono
+    ubrzanje <var>ω̇</var>, tu je neograničena. U animaciji je to vidljiv trzaj u ključnom kadru; za kameru,
+    podrhtavanje slike; za motor ili zglob robota, nagli skok momenta sile (moment je moment inercije puta ugaono
+    ubrzanje), koji opterećuje zupčanike i pokreće vibracije ruke. Klizač glatkoće postavlja KLI lanac od 0, što je
+    sam SLERP po dijelovima, do 1, najglađeg, gdje se <var>ω</var>, pa čak i <var>ω̇</var>, mijenjaju bez skoka.
+    Ispod je brzina okretanja duž lanca kroz ista četiri ključa, od k0 pri <var>t</var> = 0 do k3 pri
+    <var>t</var> = 3: to je vlastito vrijeme ključnih kadrova, a ne vrijeme trake.`,
+  "many.caption1":
+    `Lijevo (gore, na uskom ekranu): |<var>ω</var>(<var>t</var>)| za <span class="kli">KLI lanac</span> pri
+    odabranoj glatkoći (debelo) i za SLERP po dijelovima (tamno, tačkasto), ključevi kao tačkaste linije, a skok
+    vektora <var>ω</var> lanca upisan je uz svaki ključ gdje postoji. Desno (dolje): <var>ω</var> lanca po
+    komponentama <span class="x">x</span>, <span class="y">y</span> i <span class="z">z</span>.`,
+  "many.p11":
+    `<output id="rates-out">Pri glatkoći 1 ω nema skoka ni u jednom ključu; njegova najveća brzina promjene |ω̇| je
+    5.9 rad po jedinici vremena². SLERP po dijelovima skoči za 2.92 rad po jedinici vremena u k1.</output>`,
+  "many.p12":
+    `Svaka glatkoća veća od 0 već uklanja skokove: kriva lanca je tada klase C², pa se <var>ω</var> blizu ključa
+    može samo brzo mijenjati, nikad odjednom. Mala glatkoća ima cijenu u velikom, iako konačnom, |<var>ω̇</var>|
+    blizu ključeva; pri 1 promjena je raspoređena duž cijele krive, koja se savija najmanje (najmanji
+    ∫|<var>ω̇</var>|² d<var>t</var>) od svih krivih kroz ključeve. Pomjeri klizač od 1 do 0.05 i prati kako
+    navedeni |<var>ω̇</var>| raste, pa do 0, gdje više nije ograničen.`,
+  "many.question2":
+    `Predvidi, pa provjeri: pri glatkoći 0 oba dijela koja se sastaju u k2 okrenu se za 122.6° (2.14 rad) za
+    jednu jedinicu vremena, pa je |ω| s obje strane 2.14. Skače li ω u k2, i za koliko?`,
+  "many.p13":
+    `Pogodi, pa <a class="set" href="?smooth=0#many-keyframes" data-state='{"smoothness":0}'>postavi glatkoću na
+    0</a> i pogledaj k2 na oba grafika.`,
+  "many.p14":
+    `<strong>Odgovor.</strong> Da, za 2.53 rad po jedinici vremena. Brzina okretanja je vektor: dužina mu ostaje
+    2.14, ali mu se osa u trenu zakrene za 72.6°, od (−0.41, 0.73, 0.55) do (0.73, 0.41, 0.55), a skok je dužina
+    razlike, 2 × 2.14 × sin(72.6°/2) = 2.53. Zato lijevi grafik u k2 nema stepenicu, dok komponente <var>x</var> i
+    <var>y</var> na desnom skaču (<var>z</var> ostaje 1.17). Za trzaj nije potrebna promjena brzine, dovoljna je
+    promjena smjera: automobil koji bez kočenja uđe u oštru krivinu ipak baci putnike u stranu. Najveći skok je u
+    k1, 2.92, gdje se mijenjaju i osa i brzina.`,
   "many.heading2": "Roj: sinhronizacija ili njena suprotnost",
   "many.p3":
     `Dronovi koji se usaglašavaju o smjeru leta, sateliti o orijentaciji, jato koje skreće kao jedno: mnogo rotacija
@@ -552,7 +607,7 @@ export const page = {
     vektorski); put Algoritma 1 na primjeru iz rada kao podaci.`,
   "footer.p1":
     `Rust → WebAssembly; svaki broj na ovoj stranici izračunava se u tvom pregledniku kodom npm paketa
-    <code>kli</code>. Tipke: Space pusti/pauziraj, ← → pomjeri sat, Home ponovo; strelice okreću sferu iz
+    <code>kli</code>. Tipke: Space pusti/pauziraj, ← → pomjeri traku vremena, Home ponovo; strelice okreću sferu iz
     odjeljka 5 kad je ona u fokusu. Dalje: isprobaj dvije rotacije iz rada na stranici <a href="index.html">KLI: dvije
     rotacije</a>.`,
   "care.label1": "Skretanje",
@@ -568,6 +623,7 @@ export const page = {
   "kli.label2": "Korak δ",
   "integrators.label1": "Integrator",
   "integrators.label2": "Korak h",
+  "many.legend1": "Ključni kadrovi",
   "many.label1": "Glatkoća",
   "many.label2": "Sprezanje K",
   "many.label3": "Udio izuzetaka",
@@ -610,13 +666,16 @@ export const page = {
   "kli.aria3": "Udaljenost od r u svakom koraku Algoritma 1 na logaritamskoj skali, opada pravolinijski dok ne padne ispod epsilon u T.",
   "integrators.aria1": "Odstupanje dužine q od 1 u zavisnosti od vremena na logaritamskoj skali za Eulerov, RK4 i geodezijski korak, izabrani podebljan.",
   "many.figure1": "Hopfove krive kroz četiri ključna kadra",
+  "many.aria1":
+    "Brzina okretanja u zavisnosti od vremena kroz četiri ključna kadra: njena veličina za KLI lanac i za SLERP " +
+    "po dijelovima, koji u ključevima skače, i tri komponente lanca.",
   "many.valuetext1": "glatkoća 1",
   "many.figure2": "200 rotacija roja na Hopfovoj sferi",
   "many.figure3": "Mjerenja i njihove sredine na Hopfovoj sferi",
   "many.valuetext2": "20% izuzetaka",
   "many.figure4": "Graf rotacija, grane obojene prema tome koliko se svako mjerenje razlikuje od rješenja",
   "many.valuetext3": "10% pogrešnih",
-  "clock.aria1": "Sat vodiča",
+  "clock.aria1": "Traka vremena vodiča",
 };
 
 /** Tekst koji page.js piše dok se slike mijenjaju. */
@@ -638,6 +697,15 @@ export const live = {
     smoothness: (/** @type {string} */ v) => `glatkoća ${v}`,
     outliers: (/** @type {string} */ v) => `${v}% izuzetaka`,
     wrong: (/** @type {string} */ v) => `${v}% pogrešnih`,
+  },
+  /** Brzina okretanja iz odjeljka 9: lanca, sa skokom ili bez njega (pri glatkoći 0). */
+  rates: {
+    jump: (/** @type {Record<string, string>} */ v) =>
+      `Pri glatkoći 0 lanac je SLERP po dijelovima: u k${v.key} ω u trenu skoči za ${v.jump} rad po jedinici ` +
+      `vremena, što je neograničeno ugaono ubrzanje.`,
+    smooth: (/** @type {Record<string, string>} */ v) =>
+      `Pri glatkoći ${v.s} ω nema skoka ni u jednom ključu; njegova najveća brzina promjene |ω̇| je ${v.acceleration} ` +
+      `rad po jedinici vremena². SLERP po dijelovima skoči za ${v.slerpJump} rad po jedinici vremena u k${v.slerpKey}.`,
   },
   slerp: (/** @type {Record<string, string>} */ v) => `Pri s = ${v.s} SLERP je ${v.slerp}° duž luka, NLERP ${v.nlerp}°.`,
   hopf: (/** @type {Record<string, string>} */ v) => `Nos pokazuje prema ${v.nose}; krilo prema ${v.wing}.`,
@@ -666,7 +734,7 @@ export const live = {
       `Udaljenost Algoritma 1 do r u svakom koraku na logaritamskoj skali, pravolinijski pad; ${v.steps} koraka, zaustavljanje pri T = ${v.T}.`,
   },
   /** Naslovni red sačuvanog videa. */
-  video: "KLI: tok iz rada na velikom krugu i njegov sat",
+  video: "KLI: tok iz rada na velikom krugu i njegovo iskrivljenje vremena",
   /** Vrijednost iz adrese koju modul nije prihvatio, po ključu kontrole: `got` je vrijednost kako ju je adresa dala. */
   refused: {
     axis: (/** @type {string} */ got) => `osa mora biti x, y, z ili diagonal (dato je ${got})`,
@@ -702,6 +770,11 @@ export const canvas = {
   drift: "| |q| − 1 |, odstupanje od S³",
   largest: "{integrator}: najveće odstupanje {drift}",
   geodesic: "geodezijski",
+  rate: "|ω(t)|, brzina okretanja",
+  parts: "ω(t) po komponentama x, y, z",
+  chain: "KLI lanac, glatkoća {smoothness}",
+  pieces: "SLERP po dijelovima",
+  jump: "skok {jump}",
 };
 
 /** Riječi zajedničkog izvršnog dijela na ovoj stranici, po njihovom engleskom; `{ime}` je vrijednost. */
@@ -749,12 +822,14 @@ export const runtime = {
   "the swarm on S³": "roj na S³",
   "KLI": "KLI",
   "the KLI figure": "slika KLI-ja",
-  "Clock": "Sat",
-  "the clock": "sat",
+  "Time warp": "Iskrivljenje vremena",
+  "the time warp": "iskrivljenje vremena",
   "Algorithm 1": "Algoritam 1",
   "Algorithm 1's steps": "koraci Algoritma 1",
   "Drift": "Odstupanje",
   "the drift": "odstupanje",
+  "Turning rate": "Brzina okretanja",
+  "the turning rate": "brzina okretanja",
   "Algorithm 1's path": "Put Algoritma 1",
   "Save a video": "Sačuvaj video",
   ["Each frame drawn for its own time (not filmed from the screen): smooth on any machine. MP4 and WebM play in " +
@@ -788,7 +863,8 @@ export const runtime = {
   "phases": "faze",
   "lohe": "roj na S³",
   "kli": "KLI",
-  "clock": "sat",
+  "clock": "iskrivljenje vremena",
   "steps": "koraci",
   "drift": "odstupanje",
+  "rates": "brzina okretanja",
 };

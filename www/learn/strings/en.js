@@ -18,8 +18,8 @@ export const page = {
     `A guided tour for anyone who knows vectors and matrices and has never met a quaternion. It ends at the method of
     the paper <a href="#paper">“Interpolating Rotations with Non-abelian Kuramoto Model on the 3-Sphere”</a> by
     Zinaid Kapić and Aladin Crnkić, which this site implements. Every figure is live: move its slider and the text
-    beside it quotes the new values. The figures that move in time share one clock, the bar at the foot of the
-    screen. Each section ends with a question: predict the answer, then press the button in it to check.`,
+    beside it quotes the new values. The figures that move in time share one time <var>t</var>, set by the time
+    bar at the foot of the screen. Each section ends with a question: predict the answer, then press the button in it to check.`,
   "contents.item1": `<a href="#care">Why rotations need care</a>`,
   "contents.item2": `<a href="#turn">An axis, an angle, four numbers</a>`,
   "contents.item3": `<a href="#cover">S³ and the double cover</a>`,
@@ -89,13 +89,17 @@ export const page = {
   "turn.p5":
     `The four numbers now: <output id="turn-out">q = 0.707 + 0.000 i + 0.000 j + 0.707 k</output>.`,
   "turn.question1":
-    `Predict, then check: a quarter turn about z. What are the four numbers, and where does the nose go?`,
+    `Predict, then check: a turn by 120° about the diagonal (1, 1, 1)/√3. What are the four numbers, and where does
+    the nose go?`,
   "turn.p6":
-    `Work it out from the formula first. Then <a class="set" href="?axis=z&amp;angle=90#turn"
-    data-state='{"axis":"z","angle":90}'>set 90° about z</a>.`,
+    `Work it out from the formula first. Then <a class="set" href="?axis=diagonal&amp;angle=120#turn"
+    data-state='{"axis":"diagonal","angle":120}'>set 120° about the diagonal</a>.`,
   "turn.p7":
-    `<strong>Answer.</strong> cos 45° = sin 45° = 0.707, so <var>q</var> = 0.707 + 0.707 k. The nose, the
-    <var>x</var> axis, goes to <var>y</var>: <var>q</var> i <var>q̄</var> = j.`,
+    `<strong>Answer.</strong> cos 60° = 0.5, sin 60° = 0.866, and each part of the axis is 1/√3 = 0.577, so each
+    of i, j, k gets 0.866 × 0.577 = 0.5: <var>q</var> = 0.5 + 0.5 i + 0.5 j + 0.5 k, the paper's <var>r</var>
+    (section 7). A third of a full turn about the diagonal takes the axes round in a cycle: the nose, the
+    <var>x</var> axis, goes to <var>y</var> (<var>q</var> i <var>q̄</var> = j), <var>y</var> goes to <var>z</var>
+    and <var>z</var> to <var>x</var>.`,
   "cover.title1": `<span class="number">3</span> S³ and the double cover`,
   "cover.p1":
     `The four numbers of a unit quaternion are a point at distance 1 from the origin of four-dimensional space: the
@@ -203,13 +207,17 @@ export const page = {
   "kuramoto.p3":
     `How much they agree is the <dfn id="def-order">order parameter</dfn>: the length <var>R</var> of their average
     point, (1/<var>N</var>) Σ e<sup>i<var>θ<sub>j</sub></var></sup>; 0 when they are scattered, 1 when in step.
+    Here i is the complex unit, i² = −1, and e<sup>i<var>θ</var></sup> = cos <var>θ</var> + i sin <var>θ</var> is
+    the point at angle <var>θ</var> on the unit circle of the complex plane. It is not the quaternion part i of
+    section 2: a quaternion has three such units, i, j and k, and on S³ below the average is taken of the quaternions
+    themselves.
     Below, 20 phases have frequencies spread evenly from −0.5 to 0.5 (orange turn forwards, purple backwards). For
     many oscillators with such a spread, the pull wins once <var>K</var> passes 2/(π<var>g</var>(0)) ≈ 0.64, where
     <var>g</var>(0) = 1 is how densely the frequencies lie at their centre. Set <var>K</var> and press <strong>Play
     from t = 0</strong>.`,
   "kuramoto.caption1":
     `The phases on their circle, the arrow their average point; beside it <var>R</var>(<var>t</var>) up to the
-    clock's end (<var>t</var> = 12, later when section 7's <var>ε</var> is smaller), the time on show marked.`,
+    end of the time bar (<var>t</var> = 12, later when section 7's <var>ε</var> is smaller), the time on show marked.`,
   "kuramoto.legend1": "Kuramoto phases",
   "kuramoto.p4": `<output id="phases-out">At t = 0.00, R = 0.049.</output>`,
   "kuramoto.p5":
@@ -269,13 +277,14 @@ export const page = {
   "kli.p4":
     `<output id="kli-out">At t = 0.00, φ = 60.00°, s = 0.000: q = 0.000 + 0.000 i + 0.000 j + 1.000 k.</output>`,
   "kli.p5":
-    `<strong>The clock.</strong> Call <var>φ</var>(<var>t</var>) the angle between <var>q</var>(<var>t</var>) and
+    `<strong>The time warp.</strong> Call <var>φ</var>(<var>t</var>) the angle between <var>q</var>(<var>t</var>) and
     <var>r</var>. Then <var>φ</var>′ = −sin <var>φ</var>, whose solution is tan(<var>φ</var>(<var>t</var>)/2) =
     tan(<var>φ</var>₀/2) e<sup>−<var>t</var></sup>. So <var>q</var>(<var>t</var>) is SLERP's point at
-    <var>s</var>(<var>t</var>) = 1 − <var>φ</var>(<var>t</var>)/<var>φ</var>₀: the same path as SLERP, exactly, on
-    another clock. It starts at speed sin <var>φ</var>₀ and slows down exponentially as it arrives.`,
+    <var>s</var>(<var>t</var>) = 1 − <var>φ</var>(<var>t</var>)/<var>φ</var>₀: the same path as SLERP, exactly, at
+    another pace. This <var>s</var>(<var>t</var>) is KLI's <em>time warp</em>, how far along SLERP's arc it is at
+    time <var>t</var> (the time bar sets <var>t</var>; the warp is what the flow makes of it). It starts at speed sin <var>φ</var>₀ and slows down exponentially as it arrives.`,
   "kli.caption2":
-    `<span class="kli">KLI</span>'s <var>s</var>(<var>t</var>) against <span class="slerp">SLERP</span> run over the
+    `<span class="kli">KLI</span>'s time warp <var>s</var>(<var>t</var>) against <span class="slerp">SLERP</span> run over the
     same time, <var>t</var>/<var>T</var>.`,
   "kli.p6":
     `<dfn id="def-algorithm-1">Algorithm 1</dfn> of the paper computes the flow step by step: start at <var>q</var> =
@@ -288,7 +297,7 @@ export const page = {
     `<var>T</var>* = ln( tan(<var>φ</var>₀/2) / tan(arcsin(<var>ε</var>/2)) ) = 11.6568 for the paper's example,`,
   "kli.p8":
     `and the loop stops at the first multiple of <var>δ</var> past it, 11.66. Step it yourself: <strong>Step
-    δ</strong> moves the clock on by one step, and the dot on the plot is that step's distance.`,
+    δ</strong> moves the time bar on by one step, and the dot on the plot is that step's distance.`,
   "kli.caption3":
     `‖<var>r</var> − <var>q<sub>n</sub></var>‖ at each step <var>t<sub>n</sub></var> = <var>nδ</var> on a log scale,
     <var>ε</var> dashed, the stop <var>T</var>, and <var>T</var>* dotted.`,
@@ -298,7 +307,7 @@ export const page = {
     after 1166 steps, at T = 11.66; T* = 11.6568.</output>`,
   "kli.question1": "Predict, then check: at what time is KLI halfway along the arc?",
   "kli.p10":
-    `Use the clock: halfway means <var>φ</var> = 30°. Guess, then <a class="set" href="?t=0.77#kli" data-t="0.77">go
+    `Use the time bar: halfway means <var>φ</var> = 30°. Guess, then <a class="set" href="?t=0.77#kli" data-t="0.77">go
     to t = 0.77</a>.`,
   "kli.p11":
     `<strong>Answer.</strong> tan 15° = tan 30° e<sup>−<var>t</var></sup> gives <var>t</var> = ln(tan 30° / tan 15°)
@@ -309,8 +318,8 @@ export const page = {
     `Guess, then <a class="set" href="?digits=6#kli" data-state='{"digits":6}'>set ε = 10⁻⁶</a>.`,
   "kli.p13":
     `<strong>Answer.</strong> For small <var>ε</var>, tan(arcsin(<var>ε</var>/2)) ≈ <var>ε</var>/2, so each digit
-    adds ln 10 ≈ 2.303 to <var>T</var>*: 13.9594, and the loop stops at <var>T</var> = 13.96. The clock and the
-    plot's axis now run to 15, so the stop <var>T</var> and <var>T</var>* show. The distance falls by
+    adds ln 10 ≈ 2.303 to <var>T</var>*: 13.9594, and the loop stops at <var>T</var> = 13.96. The time bar and the
+    plots' axes now run to 15, so the stop <var>T</var> and <var>T</var>* show. The distance falls by
     e<sup>−<var>t</var></sup>, a straight line on the log plot.`,
   "kli.question3": "A note for readers of the paper: the printed eq. 4 and Table 1",
   "kli.p14":
@@ -342,7 +351,11 @@ export const page = {
   "integrators.question1":
     `Predict, then check: halve the step from 0.5 to 0.25. How much smaller do Euler's and RK4's drifts get?`,
   "integrators.p3":
-    `Guess, then <a class="set" href="?h=0.25#integrators" data-state='{"step":0.25}'>set h = 0.25</a>.`,
+    `Hint: a drift that goes like <var>h</var><sup><var>p</var></sup> gets 2<sup><var>p</var></sup> times smaller
+    when <var>h</var> is halved, and RK4's goes like <var>h</var>⁴. For Euler, work out the drift of its first step
+    from the formula above, √(1 + <var>h</var>²|<var>v</var>|²) − 1 with |<var>v</var>| = sin 60° = 0.866, at
+    <var>h</var> = 0.5 and at 0.25, and ask whether the first step is still the worst one at 0.25. Guess, then <a
+    class="set" href="?h=0.25#integrators" data-state='{"step":0.25}'>set h = 0.25</a>.`,
   "integrators.p4":
     `<strong>Answer.</strong> Euler's about 2.8 times (0.090 to 0.032), RK4's about 23 times (1.5·10⁻³ to 6.5·10⁻⁵).
     Euler's drift is not many small errors piling up. At <var>h</var> = 0.5 the largest drift is the very first
@@ -370,6 +383,47 @@ export const page = {
     id="def-squad">Squad</dfn> (Shoemake's spline of quaternions, the usual smooth curve of animation software,
     built from SLERPs between extra control points; purple, dashed) and piecewise SLERP (dark, dotted). The white
     dots k0, k1, … are the keys.`,
+  "many.p10":
+    `The figure above shows where the nose points, not how fast the object turns, and a kink in how fast is what a
+    viewer sees. At each moment a turning object turns about some axis at some rate. Its <em>turning rate</em>, the
+    angular velocity <var>ω</var>(<var>t</var>), is the vector along that axis whose length |<var>ω</var>| is the
+    rate, in radians per unit of time (with quaternions, <var>q</var>′ = ½ <var>ω</var> <var>q</var>). SLERP from
+    key to key turns about one fixed axis at one steady rate on each piece: a piece that turns by <var>θ</var> in a
+    time Δ<var>t</var> has |<var>ω</var>| = <var>θ</var>/Δ<var>t</var>. At a key the next piece takes over with
+    another axis and rate, so <var>ω</var> jumps: its rate of change, the angular acceleration <var>ω̇</var>, is
+    unbounded there. In an animation that is a visible jerk at the keyframe; for a camera, a shake in the picture;
+    for a motor or a robot's joint, a spike of torque (torque is the moment of inertia times the angular
+    acceleration), which strains the gears and sets the arm vibrating. The smoothness slider sets the KLI chain
+    from 0, piecewise SLERP itself, to 1, its smoothest, where <var>ω</var> and even <var>ω̇</var> change without a
+    jump. Below, the turning rate along the chain through the same four keys, k0 at <var>t</var> = 0 to k3 at
+    <var>t</var> = 3: the keyframes' own time, not the time bar's.`,
+  "many.caption1":
+    `Left (above, on a narrow screen): |<var>ω</var>(<var>t</var>)| of the <span class="kli">KLI chain</span> at the
+    chosen smoothness (thick) and of piecewise SLERP (dark, dotted), the keys as dotted lines, and the chain's jump
+    of <var>ω</var> written at each key where it has one. Right (below): the chain's <var>ω</var> in its
+    <span class="x">x</span>, <span class="y">y</span> and <span class="z">z</span> parts.`,
+  "many.p11":
+    `<output id="rates-out">At smoothness 1 ω has no jump at any key; its largest rate of change |ω̇| is 5.9 rad per
+    unit time². Piecewise SLERP jumps by 2.92 rad per unit time at k1.</output>`,
+  "many.p12":
+    `Any smoothness above 0 already takes the jumps away: the chain's curve is then C², so <var>ω</var> can only
+    change quickly near a key, never at once. What a small smoothness costs is a large, though finite,
+    |<var>ω̇</var>| near the keys; at 1 the change is spread along the whole curve, which bends least (the smallest
+    ∫|<var>ω̇</var>|² d<var>t</var>) of all curves through the keys. Slide from 1 down to 0.05 and watch the
+    quoted |<var>ω̇</var>| grow, then to 0, where it has no bound at all.`,
+  "many.question2":
+    `Predict, then check: at smoothness 0, both pieces that meet at k2 turn by 122.6° (2.14 rad) in one unit of
+    time, so |ω| is 2.14 on both sides. Does ω jump at k2, and by how much?`,
+  "many.p13":
+    `Guess, then <a class="set" href="?smooth=0#many-keyframes" data-state='{"smoothness":0}'>set the smoothness to
+    0</a> and look at k2 in both plots.`,
+  "many.p14":
+    `<strong>Answer.</strong> Yes, by 2.53 rad per unit time. The turning rate is a vector: its length stays 2.14,
+    but its axis swings in an instant through 72.6°, from (−0.41, 0.73, 0.55) to (0.73, 0.41, 0.55), and the jump
+    is the length of the difference, 2 × 2.14 × sin(72.6°/2) = 2.53. So the left plot has no step at k2, while the
+    <var>x</var> and <var>y</var> parts on the right step (<var>z</var> stays at 1.17). A jolt needs no change of
+    speed, only of direction: a car that takes a sharp corner without braking still throws its passengers sideways.
+    The largest jump is at k1, 2.92, where the axis and the rate both change.`,
   "many.heading2": "The swarm: synchronisation, or its opposite",
   "many.p3":
     `Drones agreeing on a heading, satellites on an attitude, a flock turning as one: many rotations coupled by the
@@ -548,7 +602,7 @@ export const page = {
     vector); Algorithm 1's path on the paper's example as data.`,
   "footer.p1":
     `Rust → WebAssembly; every number on this page is computed in your browser by the code of the npm package
-    <code>kli</code>. Keys: Space play/pause, ← → step the clock, Home restart; arrows turn the sphere of section 5
+    <code>kli</code>. Keys: Space play/pause, ← → step the time bar, Home restart; arrows turn the sphere of section 5
     when it has focus. Next: try the paper's two rotations on <a href="index.html">KLI: two rotations</a>.`,
   "care.label1": "Yaw",
   "care.label2": "Pitch",
@@ -563,6 +617,7 @@ export const page = {
   "kli.label2": "Step δ",
   "integrators.label1": "Integrator",
   "integrators.label2": "Step h",
+  "many.legend1": "Keyframes",
   "many.label1": "Smoothness",
   "many.label2": "Coupling K",
   "many.label3": "Share of wild ones",
@@ -605,13 +660,16 @@ export const page = {
   "kli.aria3": "The distance from r at each step of Algorithm 1 on a log scale, falling in a straight line until it passes below epsilon at T.",
   "integrators.aria1": "The drift of the length of q from 1 against time on a log scale for Euler, RK4 and the geodesic step, the chosen one drawn thick.",
   "many.figure1": "The Hopf curves through four keyframes",
+  "many.aria1":
+    "The turning rate against time through four keyframes: its size for the KLI chain and for piecewise SLERP, " +
+    "which steps at the keys, and the chain's three parts.",
   "many.valuetext1": "smoothness 1",
   "many.figure2": "200 rotations of the swarm on the Hopf sphere",
   "many.figure3": "Measurements and their means on the Hopf sphere",
   "many.valuetext2": "20% wild",
   "many.figure4": "A graph of rotations, its edges coloured by how far each measurement disagrees with the answer",
   "many.valuetext3": "10% wrong",
-  "clock.aria1": "The tour's clock",
+  "clock.aria1": "The tour's time bar",
 };
 
 /** Three decimals etc. are page.js's; these put the numbers into words. */
@@ -633,6 +691,15 @@ export const live = {
     smoothness: (/** @type {string} */ v) => `smoothness ${v}`,
     outliers: (/** @type {string} */ v) => `${v}% wild`,
     wrong: (/** @type {string} */ v) => `${v}% wrong`,
+  },
+  /** Section 9's turning rate: the chain's, with or without a jump (at smoothness 0). */
+  rates: {
+    jump: (/** @type {Record<string, string>} */ v) =>
+      `At smoothness 0 the chain is piecewise SLERP: at k${v.key} ω jumps by ${v.jump} rad per unit time in an ` +
+      `instant, an unbounded angular acceleration.`,
+    smooth: (/** @type {Record<string, string>} */ v) =>
+      `At smoothness ${v.s} ω has no jump at any key; its largest rate of change |ω̇| is ${v.acceleration} rad per ` +
+      `unit time². Piecewise SLERP jumps by ${v.slerpJump} rad per unit time at k${v.slerpKey}.`,
   },
   slerp: (/** @type {Record<string, string>} */ v) => `At s = ${v.s} SLERP is ${v.slerp}° along the arc, NLERP ${v.nlerp}°.`,
   hopf: (/** @type {Record<string, string>} */ v) => `The nose points to ${v.nose}; a wing to ${v.wing}.`,
@@ -661,7 +728,7 @@ export const live = {
       `Algorithm 1's distance to r at each step on a log scale, a straight fall; ${v.steps} steps, stopping at T = ${v.T}.`,
   },
   /** A saved video's title line. */
-  video: "KLI: the paper's flow on the great circle, and its clock",
+  video: "KLI: the paper's flow on the great circle, and its time warp",
   /** A value of the URL the module refused, by the control's key (the English page shows the module's own message;
    *  another language these): `got` is the value as the URL gave it. */
   refused: {
@@ -698,13 +765,18 @@ export const canvas = {
   drift: "| |q| − 1 |, the drift off S³",
   largest: "{integrator}: largest drift {drift}",
   geodesic: "geodesic",
+  rate: "|ω(t)|, the turning rate",
+  parts: "ω(t) in its x, y, z parts",
+  chain: "KLI chain, smoothness {smoothness}",
+  pieces: "piecewise SLERP",
+  jump: "jump {jump}",
 };
 
 /** The shared runtime's words on this page (its controls, the Save section, the navigation), by
  *  their English; `{name}` is a value filled in. English: each its own. */
 export const runtime = {
   ...Object.fromEntries([
-    // The clock and the text size.
+    // The time bar's buttons and the text size.
     "Play", "Pause", "Text size", "normal", "large (1.5×)", "projector (2×)", "hall (3×)",
     // Loading, and a value of the URL that its slider would refuse.
     "Loading the WebAssembly module…", "The WebAssembly module could not be loaded: {error}",
@@ -716,8 +788,8 @@ export const runtime = {
     "Save", "{noun} as {format}", "Saved {what}.", "Could not save: {error}",
     "Euler angles", "the Euler angles figure", "Turn", "the turn", "Double cover", "the double cover",
     "SLERP", "the SLERP figure", "Hopf sphere", "the Hopf sphere", "Rolled object", "the rolled object",
-    "Phases", "the Kuramoto phases", "Swarm on S³", "the swarm on S³", "KLI", "the KLI figure", "Clock", "the clock",
-    "Algorithm 1", "Algorithm 1's steps", "Drift", "the drift", "Algorithm 1's path",
+    "Phases", "the Kuramoto phases", "Swarm on S³", "the swarm on S³", "KLI", "the KLI figure", "Time warp", "the time warp",
+    "Algorithm 1", "Algorithm 1's steps", "Drift", "the drift", "Turning rate", "the turning rate", "Algorithm 1's path",
     // Saving a video (www/runtime/video/panel.js), the figures by their views' names.
     "Save a video",
     "Each frame drawn for its own time (not filmed from the screen): smooth on any machine. MP4 and WebM play in " +
@@ -726,6 +798,6 @@ export const runtime = {
     "Cancel", "Video progress", "animated GIF", "{format} (this browser cannot encode it)",
     "Cannot save the video: {problem}.", "Encoding the video…", "Saved {name}: {frames} frames, {size} MB, encoded in {took} s.",
     "The video was cancelled.", "Could not save the video: {error}",
-    "euler", "turn", "cover", "slerp", "hopf", "rolled", "phases", "lohe", "kli", "clock", "steps", "drift",
+    "euler", "turn", "cover", "slerp", "hopf", "rolled", "phases", "lohe", "kli", "clock", "steps", "drift", "rates",
   ].map((english) => [english, english])),
 };

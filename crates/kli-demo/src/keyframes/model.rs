@@ -8,6 +8,7 @@ use kli::quaternion::from_wxyz;
 use kli::spline::{ChainOptions, Curve, Keys, KliSpline, PiecewiseSlerp, Squad};
 
 use crate::palette::{INK, KLI, SLERP};
+use crate::turning;
 
 /// Samples a unit of time for the series and the figures (as in MATH.md's measurements).
 const PER_UNIT: f64 = 256.0;
@@ -50,7 +51,7 @@ pub struct Series {
 pub struct Measures {
     /// The largest distance from a key at its time (of the closer sign).
     pub key_error: f64,
-    /// The largest jump of ω across a key (±1e-4 either side).
+    /// The largest jump of ω across a key ([`turning::jump`]).
     pub largest_jump: f64,
     /// ∫|ω̇|² dt.
     pub bending: f64,
@@ -126,18 +127,11 @@ impl Model {
 }
 
 fn series(curve: &dyn Curve, times: &[f64]) -> Series {
-    let dt = times[1] - times[0];
-    let omega: Vec<DVec3> = times.iter().map(|&t| curve.angular_velocity(t)).collect();
-    let acceleration = (0..omega.len())
-        .map(|k| {
-            let (a, b) = (k.saturating_sub(1), (k + 1).min(omega.len() - 1));
-            ((omega[b] - omega[a]) / ((b - a) as f64 * dt)).length()
-        })
-        .collect();
+    let omega = turning::angular_velocities(curve, times);
     Series {
         hopf: times.iter().map(|&t| hopf(curve.at(t))).collect(),
         speed: omega.iter().map(|w| w.length()).collect(),
-        acceleration,
+        acceleration: turning::accelerations(&omega, times[1] - times[0]),
     }
 }
 
@@ -148,10 +142,9 @@ fn measures(curve: &dyn Curve, keys: &Keys, s: &Series, dt: f64) -> Measures {
         .zip(keys.times())
         .map(|(&k, &t)| (curve.at(t) - k).length().min((curve.at(t) + k).length()))
         .fold(0.0, f64::max);
-    let h = 1e-4;
     let largest_jump = keys.times()[1..keys.len() - 1]
         .iter()
-        .map(|&t| (curve.angular_velocity(t + h) - curve.angular_velocity(t - h)).length())
+        .map(|&t| turning::jump(curve, t).length())
         .fold(0.0, f64::max);
     let bending = trapezoid(s.acceleration.iter().map(|a| a * a), dt);
     let total_angle = trapezoid(s.speed.iter().copied(), dt);

@@ -5,6 +5,7 @@
 //! computes is `model`, its pictures `view`; this file is the class and the run contract.
 
 mod model;
+mod rates;
 mod view;
 mod words;
 
@@ -59,6 +60,8 @@ export interface LearnDemoOptions {
   delta?: number;
   /** The integrator shown thick in the drift figure, "euler", "rk4" or "geodesic", and its step, 0.01 to 1. Defaults "euler", 0.5. */
   integrator?: string; step?: number;
+  /** The keyframe chain's smoothness in section 9, 0 (piecewise SLERP) to 1. Default 1. */
+  smoothness?: number;
   /** The words the views draw, in the page's language, by key (www/learn/strings/en.js's `canvas`); English when absent. */
   words?: Record<string, string>;
 }
@@ -76,6 +79,12 @@ export interface LearnSummary {
   finalTime: number; steps: number; predictedTime: number; epsilon: number;
   /** The largest | |q| − 1 | of each integrator at the reader's step. */
   drift: { euler: number; rk4: number; geodesic: number };
+  /** Section 9's turning rate ω through the keyframes (keys: 16 numbers, [w, x, y, z] each, at
+   *  times 0, 1, 2, 3): the chain's largest jump |ω(t⁺) − ω(t⁻)| at an inner key and that key's
+   *  index, piecewise SLERP's, the chain's largest |ω̇| (rad per unit time²; meaningful only when
+   *  continuous), and whether its ω is continuous (smoothness above 0). */
+  rates: { keys: number[]; jump: number; jumpKey: number; slerpJump: number; slerpJumpKey: number;
+    acceleration: number; continuous: boolean };
 }
 /** The tour's values at a time t: the phases' order R, the swarm's order and widest angle to the
  *  leader (degrees), KLI's q(t), φ(t) (degrees), s(t), Algorithm 1's step n and ‖r − qₙ‖. */
@@ -160,11 +169,12 @@ fn read_options(value: Option<JsValue>) -> Result<Options, KliError> {
         "delta",
         "integrator",
         "step",
+        "smoothness",
         "words",
     ];
     let mut o = Options::default();
     let Some(fields) = Fields::new(value, &keys, example)? else { return Ok(o) };
-    let numbers: [(&str, f64, f64, &mut f64); 10] = [
+    let numbers: [(&str, f64, f64, &mut f64); 11] = [
         ("yaw", -180.0, 180.0, &mut o.yaw),
         ("pitch", -90.0, 90.0, &mut o.pitch),
         ("bank", -180.0, 180.0, &mut o.bank),
@@ -175,6 +185,7 @@ fn read_options(value: Option<JsValue>) -> Result<Options, KliError> {
         ("lohe", 0.0, 4.0, &mut o.lohe),
         ("delta", 0.001, 0.5, &mut o.delta),
         ("step", 0.01, 1.0, &mut o.step),
+        ("smoothness", 0.0, 1.0, &mut o.smoothness),
     ];
     for (key, min, max, slot) in numbers {
         if let Some(value) = bounded(&fields, key, min, max)? {
@@ -236,6 +247,19 @@ impl LearnDemo {
             .set("geodesic", drift(Integrator::Geodesic))
             .end();
         let wing = q * glam::DVec3::Y;
+        let rates = &m.rates;
+        let ((jump, key), (slerp_jump, slerp_key)) =
+            (rates.chain.largest_jump(), rates.slerp.largest_jump());
+        let keys: Vec<f64> = rates.keys.quaternions().iter().flat_map(|&k| to_wxyz(k)).collect();
+        let rates = Record::new()
+            .set("keys", list(&keys))
+            .set("jump", jump)
+            .set("jumpKey", key as f64)
+            .set("slerpJump", slerp_jump)
+            .set("slerpJumpKey", slerp_key as f64)
+            .set("acceleration", rates.chain.acceleration)
+            .set("continuous", rates.continuous())
+            .end();
         Record::new()
             .set("lockDegrees", model::lock_angle(o.pitch))
             .set("turn", list(&to_wxyz(m.turn())))
@@ -248,6 +272,7 @@ impl LearnDemo {
             .set("predictedTime", m.predicted())
             .set("epsilon", o.epsilon())
             .set("drift", drifts)
+            .set("rates", rates)
             .end()
     }
 }
@@ -293,11 +318,20 @@ impl Figure for LearnDemo {
             title: "KLI: q′ = r − (q·r) q on the great circle",
             motion: Motion::Moving,
         },
-        View { name: "clock", title: "KLI's clock against SLERP's", motion: Motion::Moving },
+        View {
+            name: "clock",
+            title: "KLI's time warp s(t) against SLERP's t/T",
+            motion: Motion::Moving,
+        },
         View { name: "steps", title: "Algorithm 1's steps towards ε", motion: Motion::Moving },
         View { name: "drift", title: "The integrators' drift off S³", motion: Motion::Still },
+        View {
+            name: "rates",
+            title: "The turning rate ω(t) through keyframes",
+            motion: Motion::Still,
+        },
     ];
-    const NAMES: &'static [&'static str] = &names::<12>(Self::VIEWS);
+    const NAMES: &'static [&'static str] = &names::<13>(Self::VIEWS);
     const EXPORT: &'static str = "tour";
 
     /// See `LearnSummary` (the TypeScript section above).
@@ -322,7 +356,8 @@ impl Figure for LearnDemo {
             "kli" => view::draw_kli(pen, m, frame),
             "clock" => view::draw_clock(pen, m, frame),
             "steps" => view::draw_steps(pen, m, frame),
-            _ => view::draw_drift(pen, m, frame),
+            "drift" => view::draw_drift(pen, m, frame),
+            _ => view::draw_rates(pen, m, frame),
         }
     }
 

@@ -1,8 +1,9 @@
 //! What the tour's figures compute, a section at a time: Euler angles and their lock, a turn by
 //! axis and angle, SLERP beside NLERP, the Hopf map under a roll, the Kuramoto model on the
 //! circle, the Lohe model on S³ with a pinned leader, KLI and Algorithm 1, and the integrators'
-//! drift. Every formula is the paper's or docs/MATH.md's, named where it is used.
+//! drift, and the turning rate through keyframes ([`Rates`]). Every formula is the paper's or docs/MATH.md's, named where it is used.
 
+pub use super::rates::Rates;
 use super::words::Words;
 use glam::{DQuat, DVec3};
 use kli::closed_form::{angle_at, reach_time, time_warp};
@@ -85,6 +86,8 @@ pub struct Options {
     pub delta: f64,
     pub integrator: Integrator,
     pub step: f64,
+    /// The keyframe chain's smoothness in section 9, 0 (piecewise SLERP) to 1.
+    pub smoothness: f64,
     /// The words the views draw (English unless the page gives its language's).
     pub words: Words,
 }
@@ -105,6 +108,7 @@ impl Default for Options {
             delta: 0.01,
             integrator: Integrator::Euler,
             step: 0.5,
+            smoothness: 1.0,
             words: Words::default(),
         }
     }
@@ -330,6 +334,8 @@ pub struct Model {
     /// The great circle from the paper's `p` to `r`.
     pub arc: GreatArc,
     pub drifts: Vec<Drift>,
+    /// Section 9's turning rates through the keyframes.
+    pub rates: Rates,
     /// The end of the tour's clock: [`END`], or later if Algorithm 1 stops (or `T*` falls)
     /// later, so that the stop and `T*` are on show: the first whole time past both by 0.25.
     pub end: f64,
@@ -350,6 +356,7 @@ impl Model {
         })?;
         let arc = GreatArc::new(p, r, true)?;
         let drifts = Integrator::ALL.iter().map(|&i| Drift::new(i, p, r, options.step)).collect();
+        let rates = Rates::new(options.smoothness)?;
         let predicted = reach_time(&arc, options.epsilon());
         let end = END.max((path.final_time().max(predicted) + 0.25).ceil());
         Ok(Model {
@@ -359,6 +366,7 @@ impl Model {
             path,
             arc,
             drifts,
+            rates,
             options,
         })
     }
@@ -389,7 +397,7 @@ impl Model {
         angle_at(&self.arc, t.max(0.0))
     }
 
-    /// `s(t) = 1 − φ(t)/φ₀`, KLI's clock on SLERP's path.
+    /// `s(t) = 1 − φ(t)/φ₀`, KLI's time warp: where on SLERP's path it is at time `t`.
     pub fn warp(&self, t: f64) -> f64 {
         time_warp(&self.arc, t.max(0.0))
     }

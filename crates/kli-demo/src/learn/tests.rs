@@ -179,3 +179,70 @@ fn the_clock_reaches_past_the_stop_for_every_epsilon() {
     assert!(close(six.path.final_time(), 13.96, 1e-9));
     assert_eq!(six.end, 15.0);
 }
+
+/// The world-frame angular velocity of the SLERP piece from `a` to `b` over `duration`, from the
+/// keys alone: `b = exp(v) a` with `v = (θ/2) u`, so `q(t) = exp(v t/duration) a` and
+/// `ω = 2 q′ q̄ = θ u / duration` (θ the piece's turning angle, u its axis, by glam's own
+/// axis–angle).
+fn piece_rate(a: DQuat, b: DQuat, duration: f64) -> DVec3 {
+    let d = b * a.conjugate();
+    let d = if d.w < 0.0 { -d } else { d };
+    let (axis, angle) = d.to_axis_angle();
+    axis * angle / duration
+}
+
+#[test]
+fn at_smoothness_0_the_turning_rate_jumps_at_each_inner_key_by_the_pieces_difference() {
+    let model = Model::new(Options { smoothness: 0.0, ..Options::default() }).unwrap();
+    let keys: Vec<DQuat> = super::rates::KEYS.iter().map(|&k| from_wxyz(k)).collect();
+    let rates = &model.rates;
+    // Unit durations (the keys at 0, 1, 2, 3): the first piece turns 2 acos 0.8 = 73.7° about x.
+    let pieces: Vec<DVec3> = keys.windows(2).map(|k| piece_rate(k[0], k[1], 1.0)).collect();
+    assert!((pieces[0] - DVec3::X * 2.0 * 0.8f64.acos()).length() < 1e-12);
+    for (i, jump) in rates.chain.jumps.iter().enumerate() {
+        let want = (pieces[i + 1] - pieces[i]).length();
+        assert!(close(*jump, want, 1e-6), "k{}: {jump} against {want}", i + 1);
+    }
+    // At k2 both pieces turn 2 acos 0.48 = 122.6° in a unit of time: |ω| is the same either side,
+    // and yet ω jumps (its axis turns), by 2.53.
+    assert!(close(pieces[1].length(), pieces[2].length(), 1e-12));
+    assert!(rates.chain.jumps[1] > 2.5, "{}", rates.chain.jumps[1]);
+    // Between the keys each piece turns at its constant rate.
+    for (k, &t) in rates.times.iter().enumerate() {
+        let piece = (t.floor() as usize).min(2);
+        if (t - t.round()).abs() > 0.01 {
+            assert!((rates.chain.omega[k] - pieces[piece]).length() < 1e-6, "t = {t}");
+        }
+    }
+    // The plot steps at each inner key: the key's time twice, with the piece before and then the
+    // piece after.
+    for (i, &key) in [1.0, 2.0].iter().enumerate() {
+        let at = rates.times.iter().position(|&t| t == key).unwrap();
+        assert_eq!(rates.times[at + 1], key);
+        assert!((rates.chain.omega[at] - pieces[i]).length() < 1e-6, "before k{}", i + 1);
+        assert!((rates.chain.omega[at + 1] - pieces[i + 1]).length() < 1e-6, "after k{}", i + 1);
+    }
+    assert!(!rates.continuous());
+    // Piecewise SLERP is the same curve.
+    assert_eq!(rates.slerp.jumps.len(), 2);
+    for (a, b) in rates.chain.jumps.iter().zip(&rates.slerp.jumps) {
+        assert!(close(*a, *b, 1e-9));
+    }
+}
+
+#[test]
+fn at_smoothness_above_0_the_turning_rate_does_not_jump() {
+    for smoothness in [0.05, 0.5, 1.0] {
+        let model = Model::new(Options { smoothness, ..Options::default() }).unwrap();
+        let rates = &model.rates;
+        assert!(rates.continuous());
+        // A continuous ω read ±1e-4 either side of a key differs by 2e-4 |ω̇| (|ω̇| < 10 here).
+        for (i, jump) in rates.chain.jumps.iter().enumerate() {
+            assert!(*jump < 2e-3, "smoothness {smoothness}, k{}: {jump}", i + 1);
+        }
+        // ... and ω̇ is bounded: no sample's difference is a jump over two sample intervals.
+        assert!(rates.chain.acceleration < 12.0, "{}", rates.chain.acceleration);
+        // Piecewise SLERP still jumps, whatever the chain's smoothness.
+        assert!(rates.slerp.largest_jump().0 > 2.9, "{:?}", rates.slerp.largest_jump());
+    }
+}

@@ -1,6 +1,6 @@
 //! The tour's pictures, one function a view, all through the one [`Pen`]: the object
 //! ([`draw_object`]), the sphere S² ([`crate::sphere_view`]'s globe and grid), plots
-//! ([`Panel`]), and a plane of R⁴ cut through S³ (a great circle, drawn as a circle).
+//! ([`Panel`]: the turning rate of section 9 too), and a plane of R⁴ cut through S³ (a great circle, drawn as a circle).
 
 use glam::{DQuat, DVec3};
 use kli::{Integrator, hopf};
@@ -13,13 +13,13 @@ use crate::aircraft::Face;
 use crate::camera::Viewport;
 use crate::figure::Frame;
 use crate::format::{exponential, fixed};
-use crate::legend::{Entry, Mark, TextBox, clear_place, draw_legend_row, text_box};
+use crate::legend::{Entry, Mark, TextBox, clear_place, draw_legend_row, draw_plot_key, text_box};
 use crate::object_view::{draw_object, object_camera};
 use crate::palette::{AXIS_X, AXIS_Y, AXIS_Z, GRID, INK, KLI, MUTED, SLERP};
 use crate::pen::Pen;
 use crate::plots::{Panel, inset, trim};
 use crate::sphere_view::{Side, View, draw_globe, draw_grid_back, draw_grid_front, grid};
-use crate::ticks::decades;
+use crate::ticks::{decades, nice_step};
 
 /// A rectangle `(left, top, width, height)`, CSS pixels.
 type Rect = (f64, f64, f64, f64);
@@ -569,4 +569,94 @@ pub fn integrator_style(integrator: Integrator, words: &Words) -> (&'static str,
         Integrator::Rk4 => (SLERP, "RK4"),
         Integrator::Geodesic => (AXIS_Y, &words.geodesic),
     }
+}
+
+/// Y ticks at a nice step from `low` to `high`, as [`trim`] writes them.
+fn even_ticks(low: f64, high: f64) -> Vec<(f64, String)> {
+    let step = nice_step(high - low);
+    if step <= 0.0 {
+        return vec![(low, trim(low))];
+    }
+    let first = (low / step).ceil() as i64;
+    let last = (high / step).floor() as i64;
+    (first..=last).map(|k| k as f64 * step).map(|y| (y, trim(y))).collect()
+}
+
+/// Section 9, the turning rate through the four keyframes: `|ω(t)|` of the chain at the reader's
+/// smoothness (thick) over piecewise SLERP's (dotted), a line at each key with the chain's jump of
+/// `ω` there where it has one; beside it (below, when narrow) the chain's `ω` in its x, y and z
+/// parts, where a jump shows even at a key where only the axis changes (k2: both pieces turn
+/// 123° in a unit of time, so `|ω|` is the same either side).
+pub fn draw_rates(pen: &Pen, model: &Model, frame: &Frame) {
+    let (rates, words) = (&model.rates, &model.options.words);
+    let text = pen.text_scale();
+    let (w, h) = (frame.width, frame.height);
+    let cells = if w >= 1.6 * h {
+        [(0.0, 0.0, w / 2.0, h), (w / 2.0, 0.0, w / 2.0, h)]
+    } else {
+        [(0.0, 0.0, w, h / 2.0), (0.0, h / 2.0, w, h / 2.0)]
+    };
+    let times = &rates.times;
+    let span = (times[0], times[times.len() - 1]);
+    let key_times = rates.keys.times();
+    let lines = |panel: &Panel| {
+        for &k in key_times {
+            let (x, _) = panel.at(k, 0.0);
+            pen.line((x, panel.top), (x, panel.top + panel.height), MUTED, 1.0, &[2.0, 3.0]);
+        }
+    };
+    // |ω(t)|, both curves on one scale.
+    let speed = |omega: &[DVec3]| omega.iter().map(|v| v.length()).collect::<Vec<f64>>();
+    let (chain, slerp) = (speed(&rates.chain.omega), speed(&rates.slerp.omega));
+    let top = chain.iter().chain(&slerp).fold(0.0_f64, |m, &v| m.max(v)).max(1e-9) * 1.25;
+    let panel = Panel::new(inset(cells[0], text, 40.0), span, (0.0, top));
+    panel.frame_with(pen, &words.rate, &even_ticks(0.0, top), "t");
+    lines(&panel);
+    panel.series(pen, times, slerp.iter().copied(), INK, 1.5, &[2.0, 3.0]);
+    panel.series(pen, times, chain.iter().copied(), KLI, 3.0, &[]);
+    let size = 11.0;
+    for (i, &k) in key_times.iter().enumerate() {
+        let (x, y) = panel.at(k, top);
+        let align = if i + 1 == key_times.len() { "right" } else { "left" };
+        let dx = if align == "right" { -4.0 } else { 4.0 };
+        pen.text(&format!("k{i}"), (x + dx, y + 10.0 * text), MUTED, size, align);
+    }
+    // A jump is written where the text quotes one (page.js: above 0.01 rad per unit time).
+    for (&k, &jump) in key_times[1..].iter().zip(&rates.chain.jumps) {
+        if jump >= 0.01 {
+            let label = fill(&words.jump, &[("jump", fixed(jump, 2).as_str())]);
+            let (x, y) = panel.at(k, top);
+            pen.text(&label, (x + 4.0, y + 24.0 * text), KLI, size, "left");
+        }
+    }
+    let smoothness = trim(rates.smoothness);
+    let chain_label = fill(&words.chain, &[("smoothness", smoothness.as_str())]);
+    let entries = [
+        Entry { mark: Mark::Line(KLI, 3.0, &[]), label: &chain_label },
+        Entry { mark: Mark::Line(INK, 1.5, &[2.0, 3.0]), label: &words.pieces },
+    ];
+    draw_legend_row(
+        pen,
+        (panel.left + panel.width, panel.top + panel.height - 10.0 * text),
+        &entries,
+    );
+    // The chain's ω in its parts.
+    let parts = |c: usize| rates.chain.omega.iter().map(move |v| v.to_array()[c]);
+    let (low, high) =
+        (0..3).flat_map(parts).fold((0.0_f64, 0.0_f64), |(lo, hi), v| (lo.min(v), hi.max(v)));
+    let pad = 0.1 * (high - low).max(1e-9);
+    let panel = Panel::new(inset(cells[1], text, 40.0), span, (low - pad, high + pad));
+    panel.frame_with(pen, &words.parts, &even_ticks(low - pad, high + pad), "t");
+    lines(&panel);
+    let colours = [AXIS_X, AXIS_Y, AXIS_Z];
+    for (c, colour) in colours.iter().enumerate() {
+        panel.series(pen, times, parts(c), colour, 2.0, &[]);
+    }
+    let names = ["ωx", "ωy", "ωz"];
+    let entries: Vec<Entry> = colours
+        .iter()
+        .zip(names)
+        .map(|(&colour, label)| Entry { mark: Mark::Line(colour, 2.0, &[]), label })
+        .collect();
+    draw_plot_key(pen, &panel, &words.parts, &entries);
 }

@@ -58,6 +58,11 @@ words! {
     drift "drift" "| |q| − 1 |, the drift off S³",
     largest "largest" "{integrator}: largest drift {drift}",
     geodesic "geodesic" "geodesic",
+    rate "rate" "|ω(t)|, the turning rate",
+    parts "parts" "ω(t) in its x, y, z parts",
+    chain "chain" "KLI chain, smoothness {smoothness}",
+    pieces "pieces" "piecewise SLERP",
+    jump "jump" "jump {jump}",
 }
 
 /// `template` with each `{name}` of `values` replaced by its value.
