@@ -53,6 +53,14 @@ pub struct PoseGraph {
     pub rotation_weights: Vec<f64>,
     /// Each edge's translation weight `τ_ij`, from its information matrix.
     pub translation_weights: Vec<f64>,
+    /// Each edge's information matrix as the file gave it, in g2o's order and units: its upper
+    /// triangle row by row, 6 numbers an edge in 2D (`x, y, θ`), 21 in 3D (the translation, then
+    /// the error quaternion's vector part). An `EDGE2` line's TORO order is rearranged, an
+    /// `EDGE3` line's rotation rows are multiplied by 4 and its coupling block by 2 (angles to
+    /// half-angles; see [`read_g2o`]'s module), and a line without one has the identity's in its
+    /// own units. Empty for a graph not read from a file: a writer then writes the diagonal
+    /// information of `κ` and `τ`.
+    pub information: Vec<f64>,
     /// Every pose's rotation from its vertex line, when every pose has one.
     pub initial: Option<Vec<DQuat>>,
     /// Every pose's position from its vertex line, when every pose has one (z = 0 in 2D).
@@ -209,17 +217,38 @@ impl Fields<'_> {
         }
     }
 
-    /// `(κ, τ)` from the information entries at `fields[at..]`, or the identity's when the line
-    /// has none.
-    fn weights(&self, kind: Kind, at: usize) -> Result<(f64, f64), KliError> {
+    /// The information entries at `fields[at..]` in g2o's order and units (see
+    /// [`PoseGraph::information`]), the identity's in the line's own units when it has none, and
+    /// `(κ, τ)` from them.
+    fn weights(&self, kind: Kind, at: usize) -> Result<(Vec<f64>, f64, f64), KliError> {
         let entries = kind.information_entries();
         let have = self.fields.len().saturating_sub(at);
-        if have == 0 {
-            return Ok(match kind.dimension() {
-                2 => (1.0, 1.0),
-                _ => (0.5 * kind.rotation_information_scale(), 1.0),
-            });
+        let mut upper = if have == 0 {
+            // The identity's upper triangle: 1 where a row starts.
+            let n = if kind.dimension() == 2 { 3 } else { 6 };
+            (0..n).flat_map(|r| (r..n).map(move |c| f64::from(u8::from(r == c)))).collect()
+        } else {
+            self.information_numbers(entries, have, at)?
+        };
+        if kind.dimension() == 3 {
+            // Rows 3–5 are the rotation's: the rotation block scales by s, the coupling by √s.
+            let s = kind.rotation_information_scale();
+            let cells = (0..6).flat_map(|r| (r..6).map(move |c| (r, c)));
+            for ((r, c), x) in cells.zip(upper.iter_mut()) {
+                *x *= [1.0, s.sqrt(), s][usize::from(r >= 3) + usize::from(c >= 3)];
+            }
         }
+        let (kappa, tau) = self.weights_of(kind, &mut upper)?;
+        Ok((upper, kappa, tau))
+    }
+
+    /// `entries` numbers at `fields[at..]`, of which the line has `have`.
+    fn information_numbers(
+        &self,
+        entries: usize,
+        have: usize,
+        at: usize,
+    ) -> Result<Vec<f64>, KliError> {
         if have < entries {
             return Err(bad(
                 self.line,
@@ -228,6 +257,12 @@ impl Fields<'_> {
                 ),
             ));
         }
+        (at..at + entries).map(|k| self.number(k)).collect()
+    }
+
+    /// `(κ, τ)` from an information matrix's upper triangle in g2o's units (an `EDGE2` line's
+    /// rearranged into g2o's order here where it is written in TORO's).
+    fn weights_of(&self, kind: Kind, upper: &mut [f64]) -> Result<(f64, f64), KliError> {
         let positive = |what: &str| {
             bad(
                 self.line,
@@ -235,7 +270,7 @@ impl Fields<'_> {
             )
         };
         if kind.dimension() == 2 {
-            let i = self.numbers::<6>(at)?;
+            let i = <[f64; 6]>::try_from(&*upper).unwrap_or_default();
             // (I11, I12, I22, I33) from I11 I12 I13 I22 I23 I33 (g2o) or I11 I12 I22 I33 I13 I23
             // (TORO). EDGE2 lines are written both ways (GTSAM's w20000.txt in g2o's order, its
             // .graph files in TORO's): a diagonal information is positive definite in only one
@@ -250,7 +285,11 @@ impl Fields<'_> {
             let (tau, kappa) = match planar(g2o) {
                 (Some(tau), Some(kappa)) => (Some(tau), Some(kappa)),
                 g2o_reading if kind == Kind::Edge2 => match planar(toro) {
-                    (Some(tau), Some(kappa)) => (Some(tau), Some(kappa)),
+                    (Some(tau), Some(kappa)) => {
+                        // I11 I12 I13 I22 I23 I33 from I11 I12 I22 I33 I13 I23.
+                        upper.copy_from_slice(&[i[0], i[1], i[4], i[2], i[5], i[3]]);
+                        (Some(tau), Some(kappa))
+                    }
                     _ => g2o_reading,
                 },
                 g2o_reading => g2o_reading,
@@ -259,11 +298,10 @@ impl Fields<'_> {
             let kappa = kappa.ok_or_else(|| positive("rotation"))?;
             return Ok((kappa, tau));
         }
-        let upper = self.numbers::<21>(at)?;
         // The full symmetric matrix from the upper triangle, row by row.
         let mut m = [[0.0; 6]; 6];
         let cells = (0..6).flat_map(|r| (r..6).map(move |c| (r, c)));
-        for ((r, c), x) in cells.zip(upper) {
+        for ((r, c), &x) in cells.zip(upper.iter()) {
             (m[r][c], m[c][r]) = (x, x);
         }
         // The diagonal 3×3 block from row and column `o` (symmetric: its rows are its columns).
@@ -273,7 +311,7 @@ impl Fields<'_> {
         let tau = 3.0 / trace_of_inverse3(block(0)).ok_or_else(|| positive("translation"))?;
         let kappa =
             3.0 / (2.0 * trace_of_inverse3(block(3)).ok_or_else(|| positive("rotation"))?);
-        Ok((kappa * kind.rotation_information_scale(), tau))
+        Ok((kappa, tau))
     }
 }
 
@@ -310,6 +348,7 @@ pub fn read_g2o(text: &str, others: OtherLines) -> Result<PoseGraph, KliError> {
     let mut translations = Vec::new();
     let mut rotation_weights = Vec::new();
     let mut translation_weights = Vec::new();
+    let mut information = Vec::new();
     let mut vertices: Vec<(u64, DQuat, DVec3)> = Vec::new();
     let mut skipped: Vec<(String, usize)> = Vec::new();
     for (index, raw) in text.lines().enumerate() {
@@ -361,7 +400,8 @@ pub fn read_g2o(text: &str, others: OtherLines) -> Result<PoseGraph, KliError> {
         if kind.is_edge() {
             let (i, j) = (fields.id(0)?, fields.id(1)?);
             let (q, t) = fields.pose(kind, 2)?;
-            let (kappa, tau) = fields.weights(kind, needs)?;
+            let (upper, kappa, tau) = fields.weights(kind, needs)?;
+            information.extend(upper);
             file_edges.push([i, j]);
             relative.push(q);
             translations.push(t);
@@ -410,6 +450,7 @@ pub fn read_g2o(text: &str, others: OtherLines) -> Result<PoseGraph, KliError> {
         translations,
         rotation_weights,
         translation_weights,
+        information,
         initial,
         positions,
         skipped,

@@ -95,6 +95,61 @@ fn weights_in_3d_are_se_syncs() {
     assert!(close(graph.rotation_weights[0], 240.0 / 7.0), "{:?}", graph.rotation_weights);
 }
 
+/// Each edge's information as written, in g2o's order and units: a g2o line's numbers as they
+/// are; a TORO `EDGE3` line's rotation rows from angles to half-angles (the error quaternion's
+/// vector part is half the angle, so the same noise has 4 times the information: the rotation
+/// block times 4, the coupling block times 2); an `EDGE2` line's TORO order rearranged; the
+/// identity's, in the line's own units, where a line has none.
+#[test]
+fn information_is_kept_in_g2os_order_and_units() {
+    let upper3 = [2.0, 1.0, 0.0, 0.5, 0.0, 0.0, 2.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0];
+    let rotation = [10.0, 0.0, 0.0, 20.0, 0.0, 40.0];
+    let words = |x: &[f64]| x.iter().map(f64::to_string).collect::<Vec<_>>().join(" ");
+    let information: Vec<f64> = upper3.iter().chain(&rotation).copied().collect();
+    let text = format!(
+        "EDGE_SE3:QUAT 0 1 0 0 0 0 0 0 1 {0}\nEDGE3 1 2 0 0 0 0 0 0 {0}\nEDGE3 2 0 0 0 0 0 0 0\n",
+        words(&information)
+    );
+    let graph = read(&text);
+    assert_eq!(graph.information.len(), 3 * 21);
+    assert_eq!(graph.information[..21], information[..]);
+    // Row 0's entries in columns 3–5 (the coupling, here (0, 3) = 0.5) double; the rotation
+    // block's entries quadruple; the translation block stays.
+    let toro: Vec<f64> =
+        [2.0, 1.0, 0.0, 1.0, 0.0, 0.0, 2.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0]
+            .into_iter()
+            .chain([40.0, 0.0, 0.0, 80.0, 0.0, 160.0])
+            .collect();
+    assert_eq!(graph.information[21..42], toro[..]);
+    // No information on the TORO line: the identity on the angles, diag(1, 1, 1, 4, 4, 4).
+    let diagonal: Vec<f64> = (0..6)
+        .flat_map(|r| (r..6).map(move |c| (r, c)))
+        .map(|(r, c)| {
+            if r != c {
+                0.0
+            } else if r < 3 {
+                1.0
+            } else {
+                4.0
+            }
+        })
+        .collect();
+    assert_eq!(graph.information[42..], diagonal[..]);
+    // 2D: EDGE_SE2 as written; EDGE2 in TORO's order (I11 I12 I22 I33 I13 I23 = 4 1 2 9 0 0,
+    // whose g2o reading has I33 = 0) rearranged to g2o's (I11 I12 I13 I22 I23 I33); none: the
+    // identity.
+    let graph = read(
+        "EDGE_SE2 0 1 1 0 0 4 1 0.3 2 0.2 9\nEDGE2 1 2 1 0 0 4 1 2 9 0 0\nEDGE_SE2 2 0 1 0 0\n",
+    );
+    assert_eq!(
+        graph.information,
+        vec![
+            4.0, 1.0, 0.3, 2.0, 0.2, 9.0, 4.0, 1.0, 0.0, 2.0, 0.0, 9.0, 1.0, 0.0, 0.0, 1.0, 0.0,
+            1.0
+        ]
+    );
+}
+
 #[test]
 fn planar_lines_are_read_with_their_weights() {
     // Information [[4, 1, 0.3], [1, 2, 0.2], [0.3, 0.2, 9]] (x, y, θ): Σ_t = [[4, 1], [1, 2]]⁻¹

@@ -322,7 +322,7 @@ test("synchronizePoses and writeG2o: 1,500 seeded hostile calls, each a result o
     () => new Proxy([0, 1], { get(t, k) { synchronizePoses(base); return Reflect.get(t, k); } }), () => function f() {}, () => [0, , 2],
   ];
   const hostile = () => values[Math.floor(next() * values.length)]();
-  const keys = ["dimension", "edges", "relative", "translations", "weights", "translationWeights", "count", "ids", "initial"];
+  const keys = ["dimension", "edges", "relative", "translations", "weights", "translationWeights", "count", "ids", "initial", "information"];
   let errors = 0;
   for (let i = 0; i < 1500; i++) {
     const value = hostile();

@@ -4,7 +4,7 @@
 //!
 //! A graph is read as `readG2o` returns it (every key it has is accepted) or from a plain object
 //! with the same keys: `dimension`, `edges`, `relative`, `translations`, `weights` (κ),
-//! `translationWeights` (τ), `count`, `ids`.
+//! `translationWeights` (τ), `count`, `ids`, `information` (what `writeG2o` writes).
 
 use std::fmt::Write;
 
@@ -48,6 +48,10 @@ export interface PoseGraphInput {
   /** For `writeG2o`: each pose's id in the file, ascending whole numbers (up to 2^53 − 1).
    *  Default 0, 1, … `synchronizePoses` does not read it. */
   ids?: ArrayLike<number>;
+  /** For `writeG2o`: each edge's information, its upper triangle row by row in g2o's order and
+   *  units (6 numbers an edge in 2D, 21 in 3D; finite), as `readG2o` gives it. Default: the
+   *  diagonal information of κ and τ. `synchronizePoses` checks it and does not read it. */
+  information?: ArrayLike<number>;
   /** A `PoseGraph`'s other keys are accepted and not read. */
   initial?: QuaternionsLike;
   positions?: ArrayLike<number>;
@@ -121,7 +125,7 @@ extern "C" {
 }
 
 /// The keys of a pose graph that are read.
-const READ: [&str; 8] = [
+const READ: [&str; 9] = [
     "dimension",
     "count",
     "edges",
@@ -129,6 +133,7 @@ const READ: [&str; 8] = [
     "translations",
     "weights",
     "translation_weights",
+    "information",
     "ids",
 ];
 /// A `PoseGraph`'s other keys: accepted, so that `readG2o`'s result is an input as it is.
@@ -264,6 +269,28 @@ fn read_pose_graph(
     };
     let rotation_weights = weights("weights")?;
     let translation_weights = weights("translation_weights")?;
+    // Only `writeG2o` writes it; checked here so that no call takes a malformed one.
+    let information = match fields.value("information")? {
+        None => Vec::new(),
+        Some(value) => {
+            let per = if dimension == 2 { 6 } else { 21 };
+            let values = numbers("information", &value, MAX_EDGES.saturating_mul(per))?;
+            if values.len() != m.saturating_mul(per) {
+                let size = if dimension == 2 { 3 } else { 6 };
+                let problem = format!(
+                    "must hold {per} numbers an edge, the upper triangle of its {size}×{size} \
+                     information ({} for {m} edges; got {})",
+                    per * m,
+                    values.len(),
+                );
+                return Err(KliError::invalid("information", problem));
+            }
+            for (k, &x) in values.iter().enumerate() {
+                require(&format!("information[{k}]"), x, Requirement::Finite)?;
+            }
+            values
+        }
+    };
     let largest = edges.iter().flatten().map(|&i| i + 1).max().unwrap_or(0);
     let count = match fields.whole("count", 1.0, MAX_ID)? {
         Some(count) => count as usize,
@@ -286,6 +313,7 @@ fn read_pose_graph(
         translations,
         rotation_weights,
         translation_weights,
+        information,
         initial: None,
         positions: None,
         skipped: Vec::new(),
@@ -362,11 +390,12 @@ fn angle(q: DQuat) -> f64 {
 /// qw` line with its measurement, in the graph's order. Every number is written exactly (it reads
 /// back as the same f64).
 ///
-/// A `PoseGraph` keeps each edge's weights κ and τ, not its information matrix: each edge is
-/// written with the diagonal information that `readG2o` reads back as the same κ and τ —
-/// `diag(τ, τ, κ)` in 2D, `diag(τ, τ, τ, 2κ, 2κ, 2κ)` in 3D (κ = 3 / (2 tr Σ_R), τ = 3 / tr Σ_t)
-/// — so the file's cost, and its optimum, are the graph's; an information with off-diagonal
-/// entries or unequal diagonals in the file read is not reproduced.
+/// Each edge's information is the graph's `information` where it has one (a `PoseGraph` read by
+/// `readG2o` keeps the file's, in g2o's order and units: another tool reading the file written
+/// weighs its errors as it weighed the original's); otherwise the diagonal information that
+/// `readG2o` reads back as the graph's κ and τ — `diag(τ, τ, κ)` in 2D, `diag(τ, τ, τ, 2κ, 2κ,
+/// 2κ)` in 3D (κ = 3 / (2 tr Σ_R), τ = 3 / tr Σ_t) — so the file's cost, and its optimum, are the
+/// graph's.
 #[wasm_bindgen(js_name = writeG2o, unchecked_return_type = "string")]
 pub fn write_g2o(
     #[wasm_bindgen(unchecked_param_type = "PoseGraphInput")] graph: &JsValue,
@@ -436,23 +465,30 @@ pub fn write_g2o(
     for (k, &[i, j]) in graph.edges.iter().enumerate() {
         let (q, t) = (graph.relative[k], graph.translations[k]);
         let (kappa, tau) = (graph.rotation_weights[k], graph.translation_weights[k]);
+        let size = if d == 2 { 3 } else { 6 };
+        let per = size * (size + 1) / 2;
+        let information = match graph.information.get(k * per..(k + 1) * per) {
+            Some(file) => file.to_vec(),
+            // The upper triangle, row by row, of diag(τ, τ, κ) (2D: κ = I33, τ = 2 / tr Σ_t)
+            // or diag(τ, τ, τ, 2κ, 2κ, 2κ) (3D).
+            None => (0..size)
+                .flat_map(|r| (r..size).map(move |c| (r, c)))
+                .map(|(r, c)| match (r == c, r + 1 == size && d == 2, r < 3) {
+                    (false, ..) => 0.0,
+                    (true, true, _) => kappa,
+                    (true, false, true) => tau,
+                    (true, false, false) => 2.0 * kappa,
+                })
+                .collect(),
+        };
         if d == 2 {
             let _ = write!(out, "EDGE_SE2 {} {}", ids[i], ids[j]);
-            // I11 I12 I13 I22 I23 I33: κ = I33, τ = 2 / tr(diag(τ, τ)⁻¹).
-            [t.x, t.y, angle(q), tau, 0.0, 0.0, tau, 0.0, kappa]
-                .into_iter()
-                .for_each(|x| write_number(&mut out, x));
+            [t.x, t.y, angle(q)].into_iter().for_each(|x| write_number(&mut out, x));
         } else {
             let _ = write!(out, "EDGE_SE3:QUAT {} {}", ids[i], ids[j]);
             [t.x, t.y, t.z, q.x, q.y, q.z, q.w].into_iter().for_each(|x| write_number(&mut out, x));
-            // The 6×6 information's upper triangle, row by row: diag(τ, τ, τ, 2κ, 2κ, 2κ).
-            for r in 0..6 {
-                for c in r..6 {
-                    let diagonal = if r < 3 { tau } else { 2.0 * kappa };
-                    write_number(&mut out, if r == c { diagonal } else { 0.0 });
-                }
-            }
         }
+        information.into_iter().for_each(|x| write_number(&mut out, x));
         out.push('\n');
     }
     Ok(out)

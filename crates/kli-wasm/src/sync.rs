@@ -46,6 +46,7 @@ export interface SyncInput {
   ids?: ArrayLike<number>;
   translations?: ArrayLike<number>;
   translationWeights?: ArrayLike<number>;
+  information?: ArrayLike<number>;
   positions?: ArrayLike<number>;
   skipped?: Record<string, number>;
 }
@@ -154,6 +155,12 @@ export interface PoseGraph {
   /** Each edge's translation weight τ (3 / tr Σ_t in 3D, 2 / tr Σ_t in 2D; 1 without
    *  information). */
   translationWeights: Float64Array;
+  /** Each edge's information matrix as the file gave it, in g2o's order and units (what
+   *  `writeG2o` writes back): its upper triangle row by row, 6 numbers an edge in 2D (x, y, θ),
+   *  21 in 3D (the translation, then the error quaternion's vector part). An `EDGE2` line's TORO
+   *  order is rearranged, an `EDGE3` line's rotation rows are scaled from angles to half-angles
+   *  (×4, the coupling ×2), and a line without one has the identity's in its own units. */
+  information: Float64Array;
   /** 4·count numbers: each pose's rotation from its vertex line, when every pose has one. */
   initial?: Float64Array;
   /** 3·count numbers: each pose's position from its vertex line, when every pose has one. */
@@ -253,8 +260,15 @@ pub(crate) fn read_edges(value: &JsValue) -> Result<Vec<[usize; 2]>, KliError> {
 const READ: [&str; 5] = ["edges", "relative", "weights", "count", "initial"];
 /// A `PoseGraph`'s other keys: accepted, so that `readG2o`'s result is an input as it is, and
 /// not read.
-const POSE_GRAPH: [&str; 6] =
-    ["dimension", "ids", "translations", "translation_weights", "positions", "skipped"];
+const POSE_GRAPH: [&str; 7] = [
+    "dimension",
+    "ids",
+    "translations",
+    "translation_weights",
+    "information",
+    "positions",
+    "skipped",
+];
 
 /// Reads `{ edges, relative, weights, count }` into a checked [`Graph`], and `initial` when
 /// present (unread: `None`) and `with_initial`.
@@ -386,6 +400,7 @@ pub fn read_g2o_text(
     set(&out, "weights", floats(&graph.rotation_weights));
     set(&out, "translations", vectors(&graph.translations));
     set(&out, "translationWeights", floats(&graph.translation_weights));
+    set(&out, "information", floats(&graph.information));
     if let Some(initial) = &graph.initial {
         set(&out, "initial", order.flat(initial).into());
     }

@@ -234,6 +234,7 @@ fn written_graphs_read_back_as_they_were() {
             ("translationWeights", 1e-14),
             ("translations", 0.0),
             ("relative", 1e-14),
+            ("information", 0.0),
         ] {
             close(key, floats(&again, key), floats(&graph, key), tolerance);
         }
@@ -244,6 +245,57 @@ fn written_graphs_read_back_as_they_were() {
         let resolved = solve(&again, &solve_options).unwrap();
         assert!((cost(&resolved) - cost(&result)).abs() <= 1e-9 * cost(&result));
     }
+}
+
+/// The file's information written back as it was read, off-diagonal entries too, so that
+/// another tool weighs the written file's errors as it weighed the original's; a TORO file's
+/// (EDGE3: on the angles; EDGE2: in TORO's order) written in g2o's units and order, which read
+/// back give the TORO file's κ and τ; an `information` of the wrong length named.
+#[wasm_bindgen_test]
+fn written_edges_keep_the_files_information() {
+    let full = "2 1 0 0.5 0 0 2 0 0 0 0 1 0 0 0 10 1 0 20 0 40";
+    let text = format!(
+        "EDGE_SE3:QUAT 0 1 1 0 0 0 0 0 1 {full}\nEDGE3 1 2 0 1 0 0 0 0.1 {full}\n\
+         EDGE3 2 0 -1 -1 0 0 0 -0.1\n"
+    );
+    let graph = read(&text);
+    let result = solve(&graph, &[]).unwrap();
+    let written = write_g2o(&graph, &result, None).unwrap();
+    let edges: Vec<&str> = written.lines().filter(|l| l.starts_with("EDGE")).collect();
+    assert_eq!(edges.len(), 3, "{written}");
+    // The g2o line's 21 numbers as they were.
+    assert!(edges[0].ends_with(full), "{}", edges[0]);
+    // The TORO line's in g2o's units: the coupling (0, 3) doubled, the rotation block ×4.
+    assert!(edges[1].ends_with("2 1 0 1 0 0 2 0 0 0 0 1 0 0 0 40 4 0 80 0 160"), "{}", edges[1]);
+    assert!(edges[2].ends_with("1 0 0 0 0 0 1 0 0 0 0 1 0 0 0 4 0 0 4 0 4"), "{}", edges[2]);
+    let again = read(&written);
+    for key in ["weights", "translationWeights", "information"] {
+        assert_eq!(floats(&again, key), floats(&graph, key), "{key}");
+    }
+    // 2D: an EDGE2 line in TORO's order (I11 I12 I22 I33 I13 I23) written in g2o's.
+    let graph = read("EDGE2 0 1 1 0 0 4 1 2 9 0 0\nEDGE2 1 0 -1 0 0 4 1 2 9 0 0\n");
+    let written = write_g2o(&graph, &solve(&graph, &[]).unwrap(), None).unwrap();
+    assert!(written.contains("EDGE_SE2 0 1 1 0 0 4 1 0 2 0 9\n"), "{written}");
+    let again = read(&written);
+    for key in ["weights", "translationWeights"] {
+        assert_eq!(floats(&again, key), floats(&graph, key), "{key}");
+    }
+    // A graph's own information of the wrong length, or not finite, names it.
+    let base = |information: &[f64]| {
+        object(&[
+            ("dimension", 2.into()),
+            ("edges", nested(&[&[0.0, 1.0]])),
+            ("relative", nested(&[&[1.0, 0.0, 0.0, 0.0]])),
+            ("translations", nested(&[&[1.0, 0.0, 0.0]])),
+            ("information", Float64Array::from(information).into()),
+        ])
+    };
+    let (argument, _, message) = refused(solve(&base(&[1.0; 5]), &[]));
+    assert_eq!(argument, "information");
+    assert!(message.contains("6 numbers an edge") && message.contains("got 5"), "{message}");
+    let (argument, ..) = refused(solve(&base(&[1.0, 0.0, 0.0, 1.0, 0.0, f64::NAN]), &[]));
+    assert_eq!(argument, "information[5]");
+    assert!(solve(&base(&[1.0, 0.0, 0.0, 1.0, 0.0, 1.0]), &[]).is_ok());
 }
 
 /// `writeG2o`'s lines, ids kept, and its refusals.

@@ -44,6 +44,7 @@ fn pose_graph(
         translations,
         rotation_weights: kappa,
         translation_weights: tau,
+        information: Vec::new(),
         initial: None,
         positions: None,
         skipped: Vec::new(),
