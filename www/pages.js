@@ -98,7 +98,7 @@ export const PAGES = [
   {
     name: "learn", html: "learn.html", title: "Learn: a guided tour", state: LEARN, figure: LEARN.defaults,
     module: () => import("./pkg/learn_demo.js"),
-    views: { turn: "turn", cover: "cover", slerp: "slerp", rolled: "rolled", phases: "phases", lohe: "lohe", tangent: "kli" },
+    views: { turn: "turn", cover: "cover", slerp: "slerp", rolled: "rolled", phases: "phases", lohe: "lohe", tangent: "kli", rates: "rates" },
     canvases: {
       euler: "#learn-euler", turn: "#learn-turn", cover: "#learn-cover", slerp: "#learn-slerp", hopf: "#learn-hopf",
       rolled: "#learn-rolled", phases: "#learn-phases", lohe: "#learn-lohe", kli: "#learn-kli", clock: "#learn-clock",

@@ -227,7 +227,7 @@ test("the figure interface under hostile input: every call draws with defaults o
         [new modules.swarm.SwarmDemo({ count: 20 }), ["hopf", "objects", "plots"], "swarm"],
         [new modules.average.AverageDemo({ count: 20 }), ["hopf", "objects", "means"], "measurements"],
         [new modules.sync.SyncDemo({ count: 20 }), ["graph", "hopf", "objects", "plots", "results"], "edges"],
-        [new modules.learn.LearnDemo({}), ["euler", "turn", "cover", "slerp", "hopf", "rolled", "phases", "lohe", "kli", "clock", "steps", "drift"], "tour"],
+        [new modules.learn.LearnDemo({}), ["euler", "turn", "cover", "slerp", "hopf", "rolled", "phases", "lohe", "kli", "clock", "steps", "drift", "rates"], "tour"],
       ];
       const ctx = document.createElement("canvas").getContext("2d");
       const hostileFrames = [null, undefined, 0, "frame", {}, { width: NaN, height: Infinity, pixelRatio: -1, t: "x" },

@@ -148,7 +148,7 @@ test("the module draws the tour's words in the language given (every view, no En
   const module = await import(join(root, "www/pkg/learn_demo.js"));
   module.initSync({ module: readFileSync(join(root, "www/pkg/learn_demo_bg.wasm")) });
   const [azimuth, elevation] = module.defaultCamera();
-  const views = ["euler", "turn", "cover", "slerp", "hopf", "rolled", "phases", "lohe", "kli", "clock", "steps", "drift"];
+  const views = ["euler", "turn", "cover", "slerp", "hopf", "rolled", "phases", "lohe", "kli", "clock", "steps", "drift", "rates"];
   const drawn = (words, state = {}) => {
     const run = new module.LearnDemo({ ...LEARN.defaults, ...state, words });
     const text = views.map((view) => run.toSvg(view, { width: 600, height: 360, pixelRatio: 1, t: 2, azimuth, elevation, textScale: 1 }))
@@ -156,7 +156,7 @@ test("the module draws the tour's words in the language given (every view, no En
     run.free();
     return text;
   };
-  for (const state of [{}, { pitch: 90, axis: "diagonal", integrator: "geodesic" }]) {
+  for (const state of [{}, { pitch: 90, axis: "diagonal", integrator: "geodesic", smoothness: 0 }]) {
     const words = drawn(bs.canvas, state);
     assert.ok(words.some((w) => w.includes("skretanje")), words.join(" | "));
     const english = words.filter((w) => ENGLISH_WORD.test(w));

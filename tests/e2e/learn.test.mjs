@@ -7,11 +7,12 @@
 import { test } from "node:test";
 import assert from "node:assert/strict";
 import { join } from "node:path";
-import { artifacts, axeViolations, canvasStats, open, setup } from "./browser.mjs";
+import { artifacts, axeViolations, canvasStats, open, painted, setup } from "./browser.mjs";
+import { FIGURE_DEFAULTS } from "../../www/keyframes/state.js";
 
 setup();
 
-const CANVASES = ["euler", "turn", "cover", "slerp", "hopf", "rolled", "phases", "lohe", "kli", "clock", "steps", "drift"];
+const CANVASES = ["euler", "turn", "cover", "slerp", "hopf", "rolled", "phases", "lohe", "kli", "clock", "steps", "drift", "rates"];
 const text = (page, selector) => page.textContent(selector).then((t) => t.trim());
 
 /** The Kuramoto figure's phases computed here, apart from the module: 20 natural frequencies evenly
@@ -33,6 +34,30 @@ function kuramotoOrder(coupling, t) {
   const [s, c] = theta.reduce(([s, c], x) => [s + Math.sin(x), c + Math.cos(x)], [0, 0]);
   return Math.hypot(s, c) / n;
 }
+
+/** The turning rate of piecewise SLERP through the keyframes figure's keys (www/keyframes/state.js,
+ *  the ones <kli-figure view="keyframes"> draws, at times 0, 1, 2, 3), from the keys alone: the piece
+ *  from a to b turns by θ = 2 acos w about u, where b ā = cos(θ/2) + sin(θ/2) u (w ≥ 0), so its
+ *  ω = θ u per unit time; the jump at key k is |ω_k − ω_(k−1)|. Returns [jump at k1, jump at k2]. */
+function slerpJumps() {
+  const mul = ([a, b, c, d], [e, f, g, h]) =>
+    [a * e - b * f - c * g - d * h, a * f + b * e + c * h - d * g, a * g - b * h + c * e + d * f, a * h + b * g - c * f + d * e];
+  const rates = FIGURE_DEFAULTS.keys.slice(1).map((b, i) => {
+    const [a0, ...av] = FIGURE_DEFAULTS.keys[i];
+    let d = mul(b, [a0, ...av.map((x) => -x)]);
+    if (d[0] < 0) d = d.map((x) => -x);
+    const angle = 2 * Math.acos(Math.min(1, d[0]));
+    return d.slice(1).map((x) => (x / Math.sin(angle / 2)) * angle);
+  });
+  return [1, 2].map((k) => Math.hypot(...rates[k].map((x, i) => x - rates[k - 1][i])));
+}
+
+/** Moves a slider as a reader does: its value, then an input event. */
+const slide = (page, selector, value) => page.evaluate(([selector, value]) => {
+  const input = /** @type {HTMLInputElement} */ (document.querySelector(selector));
+  input.value = value;
+  input.dispatchEvent(new Event("input", { bubbles: true }));
+}, [selector, value]);
 
 /** MATH.md's closed form on the paper's example: φ(t) with tan(φ/2) = tan(φ₀/2) e^−t, φ₀ = π/3. */
 const phiDegrees = (t) => (2 * Math.atan(Math.tan(Math.PI / 6) * Math.exp(-t)) * 180) / Math.PI;
@@ -148,6 +173,13 @@ test("an exercise opens, sets its figure, and its answer is the one the figure t
   await page.click("a.set[href='?angle=360#cover']");
   assert.equal(await text(page, "#cover-out"), "θ = 360°, q = −1.000 + 0.000 i + 0.000 j + 0.000 k");
   assert.equal(await page.getAttribute("[name=angle]", "aria-valuetext"), "360° about z");
+  // A turn by 120° about the diagonal, which the figure does not show at load (a quarter turn
+  // about z, tested above): cos 60° + sin 60° (i + j + k)/√3, each part 0.5.
+  const turn = page.locator("details.exercise", { hasText: "120° about the diagonal" });
+  await turn.locator("summary").click();
+  await turn.locator("a.set").click();
+  const part = (Math.sin(Math.PI / 3) / Math.sqrt(3)).toFixed(3);
+  assert.equal(await text(page, "#turn-out"), `q = ${Math.cos(Math.PI / 3).toFixed(3)} + ${part} i + ${part} j + ${part} k`);
   await page.locator("details.exercise", { hasText: "s = 0.25" }).locator("summary").click();
   await page.locator("details.exercise", { hasText: "s = 0.25" }).locator("a.set").click();
   const nlerp = (Math.atan2(0.25 * Math.sin(Math.PI / 3), 0.75 + 0.25 * Math.cos(Math.PI / 3)) * 180) / Math.PI;
@@ -191,6 +223,54 @@ test("an exercise opens, sets its figure, and its answer is the one the figure t
   assert.equal(await page.locator("#print-answers").count(), 0);
   assert.deepEqual(problems, []);
   await context.close();
+});
+
+test("the turning rate through the keyframes: drawn, quoted as the smoothness slider moves, and its exercise", async () => {
+  const { page, context, problems } = await open("learn.html", { reducedMotion: "reduce" });
+  const [k1, k2] = slerpJumps();
+  // The keys' own numbers: a 73.7° turn about x, then 122.6° turns whose axes are 72.6° apart.
+  assert.equal(k1.toFixed(2), "2.92");
+  assert.equal(k2.toFixed(2), "2.53");
+  await page.locator("#learn-rates").scrollIntoViewIfNeeded();
+  await page.waitForFunction(() => !document.getElementById("learn-rates-first"), null, { timeout: 5000 });
+  assert.ok((await painted(page, "#learn-rates", 3000)) > 3000, "the turning rate drawn");
+  const picture = () => page.$eval("#learn-rates", (canvas) => /** @type {HTMLCanvasElement} */ (canvas).toDataURL());
+  const smooth = await picture();
+  // Smoothness 1: no jump, a finite |ω̇|; piecewise SLERP's largest jump, at k1, as computed here.
+  const quoted = (s) => new RegExp(`^At smoothness ${s} ω has no jump at any key; its largest rate of change \\|ω̇\\| is ` +
+    `([\\d.]+) rad per unit time²\\. Piecewise SLERP jumps by ${k1.toFixed(2)} rad per unit time at k1\\.$`);
+  const one = (await text(page, "#rates-out")).match(quoted(1));
+  assert.ok(one, await text(page, "#rates-out"));
+  // The slider: at 0 the chain is piecewise SLERP and ω jumps, by the keys' own difference; the
+  // keyframes figure beside it follows, and so does the URL.
+  await slide(page, "[name=smoothness]", "0");
+  assert.equal(await text(page, "#rates-out"),
+    `At smoothness 0 the chain is piecewise SLERP: at k1 ω jumps by ${k1.toFixed(2)} rad per unit time in an instant, an unbounded angular acceleration.`);
+  assert.equal(await page.getAttribute("#fig-keyframes", "smoothness"), "0");
+  assert.equal(await page.getAttribute("[name=smoothness]", "aria-valuetext"), "smoothness 0");
+  await page.waitForURL(/smooth=0/);
+  assert.ok((await painted(page, "#learn-rates", 3000)) > 3000);
+  assert.notEqual(await picture(), smooth, "the figure follows the slider");
+  // Less smoothness, more angular acceleration near the keys.
+  await slide(page, "[name=smoothness]", "0.05");
+  const little = (await text(page, "#rates-out")).match(quoted(0.05));
+  assert.ok(little && Number(little[1]) > Number(one[1]), `${little?.[1]} against ${one[1]}`);
+  // The exercise: predict the jump at k2, where |ω| is the same on both sides; its link sets 0.
+  const exercise = page.locator("details.exercise", { hasText: "Does ω jump at k2" });
+  await exercise.locator("summary").click();
+  await exercise.locator("a.set").click();
+  await page.waitForURL(/smooth=0(&|#|$)/);
+  assert.equal(await page.inputValue("[name=smoothness]"), "0");
+  assert.equal(await page.getAttribute("#fig-keyframes", "smoothness"), "0");
+  assert.match(await text(page, "#rates-out"), /^At smoothness 0 the chain is piecewise SLERP/);
+  assert.match(await exercise.textContent(), new RegExp(`Yes, by ${k2.toFixed(2)} rad per unit time`));
+  assert.deepEqual(problems, []);
+  await context.close();
+  // The same view as a <kli-figure> for a course page (figure/), with its own smoothness.
+  const figure = await open("figure/?view=rates&smoothness=0&title=The%20turning%20rate");
+  assert.ok((await painted(figure.page, "kli-figure", 3000)) > 3000, "the rates figure on its own");
+  assert.deepEqual(figure.problems, []);
+  await figure.context.close();
 });
 
 test("reduced motion: nothing plays by itself, not even as a moving figure is reached", async () => {
