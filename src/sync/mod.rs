@@ -41,7 +41,10 @@ pub use certificate::Certificate;
 pub use flow::{MAX_STEPS, SyncFlow};
 pub use g2o::{OtherLines, PoseGraph, read_g2o};
 pub use graph::Graph;
-pub use poses::{MAX_RANK, PoseCertificate, PoseOptions, SynchronizedPoses, synchronize_poses};
+pub use poses::{
+    MAX_RANK, PoseCertificate, PoseOptions, PoseStage, SynchronizedPoses, synchronize_poses,
+    synchronize_poses_observed,
+};
 
 use glam::DQuat;
 

@@ -88,6 +88,22 @@ pub struct SynchronizedPoses {
     pub certificate: PoseCertificate,
 }
 
+/// Where [`synchronize_poses_observed`] is: each stage is announced as it begins, so that a long
+/// solve (10⁴ poses take seconds) can say what it is doing. Observing changes nothing solved.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PoseStage {
+    /// Eliminating the translations (one sparse factorisation) and the chordal start.
+    Chordal,
+    /// The trust region on the rank-`rank` relaxation, after `iterations` steps at lower ranks.
+    Optimising { rank: usize, iterations: usize },
+    /// The certificate `λ_min(Q − Λ)` at rank `rank` (Lanczos).
+    Certifying { rank: usize },
+    /// Rounding a higher-rank solution to rotations and the last pass at the dimension's rank.
+    Rounding,
+    /// The translations from the rotations, and the anchor's gauge.
+    Translations,
+}
+
 /// The largest [`PoseOptions::max_rank`] taken (each level adds a column to the iterate).
 pub const MAX_RANK: usize = 64;
 
@@ -112,6 +128,16 @@ const GRADIENT: f64 = 1e-13;
 pub fn synchronize_poses(
     graph: &PoseGraph,
     options: &PoseOptions,
+) -> Result<SynchronizedPoses, KliError> {
+    synchronize_poses_observed(graph, options, &mut |_| {})
+}
+
+/// [`synchronize_poses`], telling `observe` each [`PoseStage`] as it begins (a page's progress);
+/// the answer is the same, bit for bit.
+pub fn synchronize_poses_observed(
+    graph: &PoseGraph,
+    options: &PoseOptions,
+    observe: &mut dyn FnMut(PoseStage),
 ) -> Result<SynchronizedPoses, KliError> {
     let d = graph.dimension;
     if d != 2 && d != 3 {
@@ -254,9 +280,11 @@ pub fn synchronize_poses(
              factorisation met a non-positive or non-finite pivot)",
         )
     };
+    observe(PoseStage::Chordal);
     let problem = Reduced::new(d, n, edges).ok_or_else(scale_error)?;
     let start = chordal::chordal(&problem).ok_or_else(scale_error)?;
-    let solved = solve(&problem, options.max_rank, &start).ok_or_else(scale_error)?;
+    let solved = solve(&problem, options.max_rank, &start, observe).ok_or_else(scale_error)?;
+    observe(PoseStage::Translations);
     // Translations with t_0 = 0, then the gauge that takes the anchor to (I, 0).
     let x = stiefel::from_rotations(d, &solved.rotations);
     let z = problem.translations(&x);
@@ -323,7 +351,12 @@ struct Solved {
 
 /// Steps 3–5 of the module's documentation from the rotations `start`, on weights scaled to a
 /// largest of 1. `None` when a factorisation that a well-scaled problem always has fails.
-fn solve(problem: &Reduced, max_rank: usize, start: &[DQuat]) -> Option<Solved> {
+fn solve(
+    problem: &Reduced,
+    max_rank: usize,
+    start: &[DQuat],
+    observe: &mut dyn FnMut(PoseStage),
+) -> Option<Solved> {
     let d = problem.d;
     let preconditioner = trust::Preconditioner::new(problem)?;
     let tolerance = TOLERANCE * problem.scale;
@@ -332,10 +365,12 @@ fn solve(problem: &Reduced, max_rank: usize, start: &[DQuat]) -> Option<Solved> 
     let mut rank = d;
     let mut iterations = 0;
     let verdict = loop {
+        observe(PoseStage::Optimising { rank, iterations });
         let optimised =
             trust::optimise(problem, &preconditioner, x, gradient, trust::MAX_ITERATIONS);
         iterations += optimised.iterations;
         x = optimised.x;
+        observe(PoseStage::Certifying { rank });
         let verdict = staircase::certify(problem, &x, tolerance);
         if verdict.certified || rank >= max_rank {
             break verdict;
@@ -349,6 +384,7 @@ fn solve(problem: &Reduced, max_rank: usize, start: &[DQuat]) -> Option<Solved> 
     };
     let (x, verdict) = if x.r > d {
         // Round, polish at rank d, and certify the rotations themselves.
+        observe(PoseStage::Rounding);
         let rounded = stiefel::from_rotations(d, &stiefel::round(&x));
         let polished =
             trust::optimise(problem, &preconditioner, rounded, gradient, trust::MAX_ITERATIONS);

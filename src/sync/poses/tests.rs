@@ -285,12 +285,12 @@ fn the_staircase_escapes_a_twisted_ring() {
     // At rank 3 the escape leads (by the ring's symmetry) to a second saddle: one row of every
     // block common, the other twisted in the plane orthogonal to it, half the cost and the same
     // λ_min; rank 4 untwists it.
-    let solved = solve(&problem, 10, &twisted).unwrap();
+    let solved = solve(&problem, 10, &twisted, &mut |_| {}).unwrap();
     assert!(solved.certified && solved.rank > 2, "{} {}", solved.certified, solved.rank);
     let (cost, _) = problem.cost(&from_rotations(2, &solved.rotations));
     assert!(cost < 1e-20, "{cost}");
     // With no room to climb, the twisted ring is where it stays, uncertified.
-    let stuck = solve(&problem, 2, &twisted).unwrap();
+    let stuck = solve(&problem, 2, &twisted, &mut |_| {}).unwrap();
     assert!(!stuck.certified && stuck.rank == 2);
     let (cost, _) = problem.cost(&from_rotations(2, &stuck.rotations));
     assert!((cost - 8.0 * 2.0 * (2.0 - 2.0_f64.sqrt())).abs() < 1e-9, "{cost}");
@@ -526,5 +526,43 @@ fn extreme_scales_end_in_an_answer_or_a_refusal() {
             }
             Err(e) => assert_eq!(e.argument(), "graph", "case {c}: {e}"),
         }
+    }
+}
+
+/// Observing a solve changes nothing, and the stages come in the order the solver takes them:
+/// the chordal start, then each level optimised then certified (ranks rising by one from the
+/// dimension, the iterations so far never falling), rounding only after a level above the
+/// dimension, the translations last.
+#[test]
+fn observing_a_solve_reports_its_stages_and_changes_nothing() {
+    for (graph, d) in [(noisy(2, 40, 0.2, 5, 0.3), 2), (fixture("tinyGrid3D"), 3)] {
+        let options = PoseOptions::default();
+        let mut stages = Vec::new();
+        let observed =
+            synchronize_poses_observed(&graph, &options, &mut |s| stages.push(s)).unwrap();
+        assert_eq!(observed, synchronize_poses(&graph, &options).unwrap());
+        assert_eq!(stages.first(), Some(&PoseStage::Chordal));
+        assert_eq!(stages.last(), Some(&PoseStage::Translations));
+        assert_eq!(stages[1], PoseStage::Optimising { rank: d, iterations: 0 });
+        let levels: Vec<(usize, usize)> = stages
+            .iter()
+            .filter_map(|s| match *s {
+                PoseStage::Optimising { rank, iterations } => Some((rank, iterations)),
+                _ => None,
+            })
+            .collect();
+        let certified: Vec<usize> = stages
+            .iter()
+            .filter_map(|s| match *s {
+                PoseStage::Certifying { rank } => Some(rank),
+                _ => None,
+            })
+            .collect();
+        assert!(levels.windows(2).all(|w| w[1].0 == w[0].0 + 1 && w[1].1 >= w[0].1), "{levels:?}");
+        let rounded = stages.contains(&PoseStage::Rounding);
+        assert_eq!(rounded, levels.len() > 1, "{stages:?}");
+        // A certificate a level, and one more of the rounded rotations.
+        assert_eq!(certified.len(), levels.len() + usize::from(rounded), "{stages:?}");
+        assert_eq!(observed.certificate.rank, levels.last().unwrap().0);
     }
 }
