@@ -280,8 +280,8 @@ export const page = {
     Tada je <var>φ</var>′ = −sin <var>φ</var>, čije je rješenje tan(<var>φ</var>(<var>t</var>)/2) =
     tan(<var>φ</var>₀/2) e<sup>−<var>t</var></sup>. Dakle, <var>q</var>(<var>t</var>) je tačka SLERP-a za
     <var>s</var>(<var>t</var>) = 1 − <var>φ</var>(<var>t</var>)/<var>φ</var>₀: tačno isti put kao SLERP, ali drugim
-    tempom. Ovo <var>s</var>(<var>t</var>) je KLI-jevo <em>iskrivljenje vremena</em>: koliko je duž SLERP-ovog luka u
-    trenutku <var>t</var> (traka vremena postavlja <var>t</var>, a iskrivljenje je ono što tok od njega napravi).
+    tempom. Ovo <var>s</var>(<var>t</var>) je KLI-jevo <em>iskrivljenje vremena</em>: koliko je KLI odmakao duž
+    SLERP-ovog luka u trenutku <var>t</var> (traka vremena postavlja <var>t</var>, a iskrivljenje je ono što tok od njega napravi).
     Počinje brzinom sin <var>φ</var>₀ i eksponencijalno usporava kako stiže.`,
   "kli.caption2":
     `Iskrivljenje vremena <var>s</var>(<var>t</var>) za <span class="kli">KLI</span> naspram <span class="slerp">SLERP</span>-a izvedenog
@@ -385,19 +385,19 @@ export const page = {
     sastavljena od SLERP-ova između dodatnih kontrolnih tačaka; ljubičasto, isprekidano) i SLERP po dijelovima
     (tamno, tačkasto). Bijele tačke k0, k1, … su ključevi.`,
   "many.p10":
-    `Slika iznad pokazuje kamo pokazuje nos, a ne koliko brzo se tijelo okreće, a upravo prelom u toj brzini gledalac
-    vidi. U svakom trenutku tijelo koje se okreće okreće se oko neke ose nekom brzinom. Njegova <em>brzina
-    okretanja</em>, ugaona brzina <var>ω</var>(<var>t</var>), jeste vektor duž te ose čija je dužina
+    `Slika iznad prikazuje kamo je okrenut nos, a ne koliko se brzo tijelo okreće, a gledalac vidi upravo prelom u toj
+    brzini. Tijelo koje se okreće u svakom trenutku se okreće oko neke ose nekom brzinom. Njegova <dfn id="def-omega">brzina
+    okretanja</dfn>, ugaona brzina <var>ω</var>(<var>t</var>), jeste vektor duž te ose čija je dužina
     |<var>ω</var>| ta brzina, u radijanima po jedinici vremena (s kvaternionima, <var>q</var>′ = ½ <var>ω</var>
     <var>q</var>). SLERP od ključa do ključa okreće se oko jedne stalne ose jednolikom brzinom na svakom dijelu: dio
     koji se okrene za <var>θ</var> za vrijeme Δ<var>t</var> ima |<var>ω</var>| = <var>θ</var>/Δ<var>t</var>. U
-    ključu preuzima sljedeći dio s drugom osom i brzinom, pa <var>ω</var> skoči: njegova brzina promjene, ugaono
-    ubrzanje <var>ω̇</var>, tu je neograničena. U animaciji je to vidljiv trzaj u ključnom kadru; za kameru,
+    ključu preuzima sljedeći dio s drugom osom i brzinom, pa <var>ω</var> skoči: ugaono ubrzanje <var>ω̇</var>, brzina
+    kojom se <var>ω</var> mijenja, tu je neograničeno. U animaciji je to vidljiv trzaj u ključnom kadru; za kameru,
     podrhtavanje slike; za motor ili zglob robota, nagli skok momenta sile (moment je moment inercije puta ugaono
-    ubrzanje), koji opterećuje zupčanike i pokreće vibracije ruke. Klizač glatkoće postavlja KLI lanac od 0, što je
+    ubrzanje), koji opterećuje zupčanike i izaziva vibracije ruke robota. Klizač glatkoće postavlja KLI lanac od 0, što je
     sam SLERP po dijelovima, do 1, najglađeg, gdje se <var>ω</var>, pa čak i <var>ω̇</var>, mijenjaju bez skoka.
     Ispod je brzina okretanja duž lanca kroz ista četiri ključa, od k0 pri <var>t</var> = 0 do k3 pri
-    <var>t</var> = 3: to je vlastito vrijeme ključnih kadrova, a ne vrijeme trake.`,
+    <var>t</var> = 3: to je vlastito vrijeme ključnih kadrova, a ne vrijeme na traci vremena.`,
   "many.caption1":
     `Lijevo (gore, na uskom ekranu): |<var>ω</var>(<var>t</var>)| za <span class="kli">KLI lanac</span> pri
     odabranoj glatkoći (debelo) i za SLERP po dijelovima (tamno, tačkasto), ključevi kao tačkaste linije, a skok
@@ -421,8 +421,8 @@ export const page = {
   "many.p14":
     `<strong>Odgovor.</strong> Da, za 2.53 rad po jedinici vremena. Brzina okretanja je vektor: dužina mu ostaje
     2.14, ali mu se osa u trenu zakrene za 72.6°, od (−0.41, 0.73, 0.55) do (0.73, 0.41, 0.55), a skok je dužina
-    razlike, 2 × 2.14 × sin(72.6°/2) = 2.53. Zato lijevi grafik u k2 nema stepenicu, dok komponente <var>x</var> i
-    <var>y</var> na desnom skaču (<var>z</var> ostaje 1.17). Za trzaj nije potrebna promjena brzine, dovoljna je
+    razlike, 2 × 2.14 × sin(72.6°/2) = 2.53. Zato grafik od |<var>ω</var>| u k2 nema stepenicu, dok komponente
+    <var>x</var> i <var>y</var> vektora <var>ω</var> skaču (<var>z</var> ostaje 1.17). Za trzaj nije potrebna promjena brzine, dovoljna je
     promjena smjera: automobil koji bez kočenja uđe u oštru krivinu ipak baci putnike u stranu. Najveći skok je u
     k1, 2.92, gdje se mijenjaju i osa i brzina.`,
   "many.heading2": "Roj: sinhronizacija ili njena suprotnost",
@@ -488,6 +488,10 @@ export const page = {
   "glossary.definition1":
     `Petlja iz rada: pomjeraj tok za <var>δ</var> od <var>p</var> dok ne dođeš unutar <var>ε</var> od <var>r</var>.
     <a href="#def-algorithm-1">Odjeljak 7</a>`,
+  "glossary.term28": "ugaona brzina (brzina okretanja)",
+  "glossary.definition28":
+    `<var>ω</var>, vektor duž ose oko koje se rotacija okreće, čija je dužina brzina u radijanima po jedinici
+    vremena; <var>q</var>′ = ½ <var>ω</var> <var>q</var>. Skok u njoj je trzaj. <a href="#def-omega">Odjeljak 9</a>`,
   "glossary.term2": "certifikat",
   "glossary.definition2":
     `Provjera da je izračunato rješenje najbolje od svih, a ne samo lokalno. <a href="#def-certificate">Odjeljak 9</a>`,

@@ -385,13 +385,13 @@ export const page = {
     dots k0, k1, … are the keys.`,
   "many.p10":
     `The figure above shows where the nose points, not how fast the object turns, and a kink in how fast is what a
-    viewer sees. At each moment a turning object turns about some axis at some rate. Its <em>turning rate</em>, the
+    viewer sees. At each moment a turning object turns about some axis at some rate. Its <dfn id="def-omega">turning rate</dfn>, the
     angular velocity <var>ω</var>(<var>t</var>), is the vector along that axis whose length |<var>ω</var>| is the
     rate, in radians per unit of time (with quaternions, <var>q</var>′ = ½ <var>ω</var> <var>q</var>). SLERP from
     key to key turns about one fixed axis at one steady rate on each piece: a piece that turns by <var>θ</var> in a
     time Δ<var>t</var> has |<var>ω</var>| = <var>θ</var>/Δ<var>t</var>. At a key the next piece takes over with
-    another axis and rate, so <var>ω</var> jumps: its rate of change, the angular acceleration <var>ω̇</var>, is
-    unbounded there. In an animation that is a visible jerk at the keyframe; for a camera, a shake in the picture;
+    another axis and rate, so <var>ω</var> jumps: the angular acceleration <var>ω̇</var>, the rate at which
+    <var>ω</var> changes, is unbounded there. In an animation that is a visible jerk at the keyframe; for a camera, a shake in the picture;
     for a motor or a robot's joint, a spike of torque (torque is the moment of inertia times the angular
     acceleration), which strains the gears and sets the arm vibrating. The smoothness slider sets the KLI chain
     from 0, piecewise SLERP itself, to 1, its smoothest, where <var>ω</var> and even <var>ω̇</var> change without a
@@ -420,8 +420,8 @@ export const page = {
   "many.p14":
     `<strong>Answer.</strong> Yes, by 2.53 rad per unit time. The turning rate is a vector: its length stays 2.14,
     but its axis swings in an instant through 72.6°, from (−0.41, 0.73, 0.55) to (0.73, 0.41, 0.55), and the jump
-    is the length of the difference, 2 × 2.14 × sin(72.6°/2) = 2.53. So the left plot has no step at k2, while the
-    <var>x</var> and <var>y</var> parts on the right step (<var>z</var> stays at 1.17). A jolt needs no change of
+    is the length of the difference, 2 × 2.14 × sin(72.6°/2) = 2.53. So the plot of |<var>ω</var>| has no step at k2,
+    while the <var>x</var> and <var>y</var> parts of <var>ω</var> step (<var>z</var> stays at 1.17). A jolt needs no change of
     speed, only of direction: a car that takes a sharp corner without braking still throws its passengers sideways.
     The largest jump is at k1, 2.92, where the axis and the rate both change.`,
   "many.heading2": "The swarm: synchronisation, or its opposite",
@@ -484,6 +484,10 @@ export const page = {
   "glossary.definition1":
     `The paper's loop: step the flow by <var>δ</var> from <var>p</var> until within <var>ε</var> of <var>r</var>. <a
     href="#def-algorithm-1">Section 7</a>`,
+  "glossary.term28": "angular velocity (turning rate)",
+  "glossary.definition28":
+    `<var>ω</var>, the vector along the axis a rotation is turning about, its length the rate in radians per unit
+    time; <var>q</var>′ = ½ <var>ω</var> <var>q</var>. A jump in it is a jerk. <a href="#def-omega">Section 9</a>`,
   "glossary.term2": "certificate",
   "glossary.definition2":
     `A check that a computed answer is the best of all, not just locally. <a href="#def-certificate">Section 9</a>`,
