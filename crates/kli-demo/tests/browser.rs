@@ -330,7 +330,8 @@ fn no_two_labels_of_a_figure_overlap() {
         })
         .collect();
     // The tour at its start, and with every control moved: the lock, a double turn about the
-    // diagonal rolled, SLERP near its end, ε = 1e-8 with a coarse δ, RK4 at a fine step.
+    // diagonal rolled, SLERP near its end, ε = 1e-8 with a coarse δ, RK4 at a fine step, the
+    // keyframe chain at smoothness 0 (its jumps written at the keys).
     let learn = LearnDemo::new(None).unwrap();
     let moved = Object::new();
     for (key, value) in [
@@ -343,6 +344,7 @@ fn no_two_labels_of_a_figure_overlap() {
         ("delta", JsValue::from(0.3)),
         ("integrator", JsValue::from("rk4")),
         ("step", JsValue::from(0.1)),
+        ("smoothness", JsValue::from(0.0)),
     ] {
         Reflect::set(&moved, &key.into(), &value).unwrap();
     }
@@ -436,6 +438,7 @@ fn no_two_labels_of_a_figure_overlap() {
             ("clock", [(770.0, 220.0), (340.0, 220.0)]),
             ("steps", [(770.0, 260.0), (340.0, 260.0)]),
             ("drift", [(770.0, 280.0), (340.0, 280.0)]),
+            ("rates", [(770.0, 320.0), (340.0, 460.0)]),
         ]
         .iter()
         .flat_map(|(view, sizes)| {
