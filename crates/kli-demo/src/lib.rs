@@ -63,7 +63,7 @@ pub use learn::LearnDemo;
 #[cfg(feature = "swarm-page")]
 pub use swarm::SwarmDemo;
 #[cfg(feature = "sync-page")]
-pub use sync::{SyncDemo, SyncFile};
+pub use sync::{SyncDemo, SyncFile, SyncMap};
 
 use wasm_bindgen::prelude::*;
 

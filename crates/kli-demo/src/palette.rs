@@ -20,6 +20,10 @@ pub const AXIS_X: &str = "#c92a2a";
 pub const AXIS_Y: &str = "#237032";
 /// The body z-axis (fin).
 pub const AXIS_Z: &str = "#1971c2";
+/// A pose graph's edges by misfit, low to high (the map on the synchronisation page): blue to
+/// dark red, each darker than the one before (so the order reads in grey and to every kind of
+/// colour blindness), each at least 3:1 on white.
+pub const MISFIT: [&str; 5] = ["#3a86b4", "#5a5fbf", "#8e3b8e", "#a61c3c", "#7a0c0c"];
 
 #[cfg(test)]
 mod tests {
@@ -46,6 +50,17 @@ mod tests {
         assert!((contrast("#ffffff", "#000000") - 21.0).abs() < 1e-12);
         // WebAIM's checker gives 4.54:1 for #767676 on white, the lightest AA grey.
         assert!((contrast("#767676", "#ffffff") - 4.54).abs() < 0.005);
+    }
+
+    #[test]
+    fn the_misfit_scale_darkens_step_by_step_and_every_step_meets_3_to_1() {
+        for pair in MISFIT.windows(2) {
+            assert!(luminance(pair[1]) < luminance(pair[0]), "{pair:?}");
+        }
+        for colour in MISFIT {
+            let ratio = contrast(colour, BACKGROUND);
+            assert!(ratio >= 3.0, "{colour}: {ratio:.2}:1");
+        }
     }
 
     #[test]

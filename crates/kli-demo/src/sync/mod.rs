@@ -1,13 +1,18 @@
 //! The `SyncDemo` class: the synchronisation page's run. Its `model` (the graph, the
-//! measurements, both solutions and the flow), its pictures (`view`), its data (`export`) and a
-//! user's own file (`file`) are modules of their own; this file is the class, its options, its
-//! time and the sweep.
+//! measurements, both solutions and the flow), its pictures (`view`), its data (`export`), a
+//! user's own file (`file`, its rotations; `map`, the whole pose graph drawn as a map by
+//! `map_view`, from its `initial` estimate) and the built-in pose graph (`world`) are modules of
+//! their own; this file is the class, its options, its time and the sweep.
 
 mod export;
 mod file;
+mod initial;
+mod map;
+mod map_view;
 mod model;
 mod solutions;
 mod view;
+mod world;
 
 use kli::KliError;
 use kli::sync::Method;
@@ -18,6 +23,7 @@ use wasm_bindgen::prelude::*;
 use web_sys::CanvasRenderingContext2d;
 
 pub use self::file::SyncFile;
+pub use self::map::SyncMap;
 use self::model::{Model, Options, Problem, Shape};
 use self::solutions::Solutions;
 use crate::aircraft::{Face, aircraft};

@@ -194,3 +194,223 @@ fn numbers_that_are_not_this_problems_solutions_are_refused_by_name() {
     refused(&flag, "flag");
     assert!(Solutions::unpack(&good, n, m).is_ok());
 }
+
+// ---- The map: the built-in pose graph, the initial estimate, the optimum ---------------------
+
+use super::initial::{Poses, chained, initial};
+use super::map::{SyncMap, csv, edge_costs, read, solve_text};
+use super::map_view::class as misfit_class;
+use super::world::{World, WorldOptions, between, revisits, route};
+
+fn world(noise: f64, closures: usize, seed: u64) -> World {
+    World::new(&WorldOptions { noise, closures, seed })
+}
+
+/// The text without its VERTEX lines: a file with no initial estimate of its own.
+fn without_vertices(text: &str) -> String {
+    text.lines().filter(|l| !l.starts_with("VERTEX")).map(|l| format!("{l}\n")).collect()
+}
+
+fn map_of(text: &str) -> SyncMap {
+    let answer = solve_text(text, &mut |_| {}).unwrap();
+    SyncMap::of(read(text).unwrap(), &answer).unwrap()
+}
+
+/// `(x, y, θ)` of a planar pose.
+fn planar(poses: &Poses, k: usize) -> (f64, f64, f64) {
+    let q = poses.rotations[k];
+    (poses.positions[k].x, poses.positions[k].y, 2.0 * q.z.atan2(q.w))
+}
+
+fn angle_gap(a: f64, b: f64) -> f64 {
+    let d = (a - b).rem_euclid(std::f64::consts::TAU);
+    d.min(std::f64::consts::TAU - d)
+}
+
+#[test]
+fn the_built_in_world_has_the_poses_and_edges_its_route_gives() {
+    // The route: 3 + 2 + 3 + 2 + 1 + 3 + 1 + 2 + 2 + 1 + 2 + 2 = 24 blocks of 8 m, a pose a
+    // metre: 192 poses, 191 odometry edges; its last pose a metre short of the first.
+    let truth = route();
+    assert_eq!(truth.len(), 192);
+    assert_eq!((truth[191].0, truth[191].1), (1.0, 0.0));
+    assert_eq!(truth[191].2, std::f64::consts::PI);
+    // Corners by hand: pose 24 is the first at (3, 0) blocks, heading north (+y).
+    assert_eq!(truth[24], (24.0, 0.0, std::f64::consts::FRAC_PI_2));
+    for closures in [0, 1, 8, 40] {
+        let w = world(2.0, closures, 3);
+        assert_eq!(w.edges.len(), 191 + closures);
+        let graph = read(&w.text).unwrap();
+        assert_eq!((graph.count, graph.edges.len(), graph.dimension), (192, 191 + closures, 2));
+        // Every loop closure joins two poses at one place, more than a block apart.
+        for &[i, j] in &w.edges[191..] {
+            assert!(j > i + 8 && truth[i].0 == truth[j].0 && truth[i].1 == truth[j].1);
+        }
+    }
+    // The streets driven twice or more give at least as many places revisited as the page's
+    // slider asks for.
+    let pairs = revisits(&truth).len();
+    assert!(pairs >= super::world::MAX_CLOSURES, "{pairs}");
+}
+
+#[test]
+fn the_odometry_chained_without_noise_is_the_truth() {
+    let w = world(0.0, 8, 1);
+    for (&[i, j], &m) in w.edges.iter().zip(&w.measured) {
+        assert_eq!(m, between(w.truth[i], w.truth[j]));
+    }
+    let graph = read(&without_vertices(&w.text)).unwrap();
+    assert!(graph.initial.is_none());
+    let (poses, from_file) = initial(&graph);
+    assert!(!from_file);
+    for (k, &(x, y, t)) in w.truth.iter().enumerate() {
+        let (px, py, pt) = planar(&poses, k);
+        assert!((px - x).abs() < 1e-9 && (py - y).abs() < 1e-9, "{k}: {px} {py} against {x} {y}");
+        assert!(angle_gap(pt, t) < 1e-12, "{k}");
+    }
+    // With noise, the chaining (quaternions) is the world's own dead reckoning (angles), the
+    // file's VERTEX lines; the search follows odometry, never a loop closure, on this route.
+    let w = world(3.0, 20, 7);
+    let chained = chained(&read(&without_vertices(&w.text)).unwrap());
+    let (own, from_file) = initial(&read(&w.text).unwrap());
+    assert!(from_file);
+    for (k, &(x, y, t)) in w.dead_reckoning.iter().enumerate() {
+        for poses in [&chained, &own] {
+            let (px, py, pt) = planar(poses, k);
+            assert!((px - x).abs() < 1e-9 && (py - y).abs() < 1e-9 && angle_gap(pt, t) < 1e-12);
+        }
+    }
+}
+
+#[test]
+fn the_noise_free_world_solves_to_the_truth_at_cost_zero_certified() {
+    let w = world(0.0, 12, 1);
+    let map = map_of(&w.text);
+    let answer = solve_text(&w.text, &mut |_| {}).unwrap();
+    // Weights are 1/σ² with σ's floor of 0.1° and 5 mm: 4e4 for a metre, so "zero" is 1e-12.
+    assert!(answer[0] < 1e-12, "cost {}", answer[0]);
+    assert_eq!(answer[4], 1.0, "certified");
+    let optimum = Poses {
+        rotations: answer[6..6 + 4 * 192]
+            .chunks(4)
+            .map(|c| kli::from_wxyz([c[0], c[1], c[2], c[3]]))
+            .collect(),
+        positions: answer[6 + 4 * 192..]
+            .chunks(3)
+            .map(|c| glam::DVec3::new(c[0], c[1], c[2]))
+            .collect(),
+    };
+    // The truth's pose 0 is the origin heading east: the anchor's gauge is the truth's own.
+    for (k, &(x, y, t)) in w.truth.iter().enumerate() {
+        let (px, py, pt) = planar(&optimum, k);
+        assert!((px - x).abs() < 1e-7 && (py - y).abs() < 1e-7, "{k}: {px} {py} against {x} {y}");
+        assert!(angle_gap(pt, t) < 1e-9, "{k}");
+    }
+    assert!(map.optimum_misfits().iter().all(|&m| m < 1e-5 && misfit_class(m) == 0));
+}
+
+#[test]
+fn the_misfits_sum_to_the_solvers_cost_and_the_noisy_loop_is_straightened() {
+    let w = world(2.0, 8, 1);
+    let graph = read(&w.text).unwrap();
+    let answer = solve_text(&w.text, &mut |_| {}).unwrap();
+    let map = SyncMap::of(graph.clone(), &answer).unwrap();
+    let optimum = Poses {
+        rotations: answer[6..6 + 4 * 192]
+            .chunks(4)
+            .map(|c| kli::from_wxyz([c[0], c[1], c[2], c[3]]))
+            .collect(),
+        positions: answer[6 + 4 * 192..]
+            .chunks(3)
+            .map(|c| glam::DVec3::new(c[0], c[1], c[2]))
+            .collect(),
+    };
+    let total: f64 = edge_costs(&graph, &optimum).iter().sum();
+    assert!((total - answer[0]).abs() <= 1e-9 * answer[0], "{total} against {}", answer[0]);
+    assert_eq!(answer[4], 1.0);
+    // Dead reckoning drifts; the optimum with its loop closures is nearer the truth at the
+    // route's end (the worst place for odometry): by the world's numbers, not the solver's.
+    let end = |poses: &Poses| {
+        let (x, y, _) = planar(poses, 191);
+        (x - w.truth[191].0).hypot(y - w.truth[191].1)
+    };
+    let drift = end(map.initial_poses());
+    assert!(drift > 1.0 && end(&optimum) < 0.5 * drift, "{drift} {}", end(&optimum));
+    // The initial cost (the dead reckoning's) is far above the optimum's.
+    let initial: f64 = edge_costs(&graph, map.initial_poses()).iter().sum();
+    assert!(initial > 10.0 * answer[0]);
+}
+
+#[test]
+fn the_csv_reads_back_as_the_optimum() {
+    let text = include_str!("../../../../tests/fixtures/posegraphs/tinyGrid3D.g2o");
+    let graph = read(text).unwrap();
+    let answer = solve_text(text, &mut |_| {}).unwrap();
+    let n = graph.count;
+    let optimum = Poses {
+        rotations: answer[6..6 + 4 * n]
+            .chunks(4)
+            .map(|c| kli::from_wxyz([c[0], c[1], c[2], c[3]]))
+            .collect(),
+        positions: answer[6 + 4 * n..]
+            .chunks(3)
+            .map(|c| glam::DVec3::new(c[0], c[1], c[2]))
+            .collect(),
+    };
+    let answer = super::map::Answer {
+        cost: answer[0],
+        iterations: answer[1] as usize,
+        lambda_min: answer[2],
+        tolerance: answer[3],
+        certified: answer[4] == 1.0,
+        rank: answer[5] as usize,
+    };
+    let text = csv(&graph, &optimum, &answer);
+    let mut rows = text.lines().filter(|l| !l.starts_with('#'));
+    assert_eq!(rows.next(), Some("id,x,y,z,qx,qy,qz,qw"));
+    let rows: Vec<Vec<f64>> =
+        rows.map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect();
+    assert_eq!(rows.len(), n);
+    for (k, row) in rows.iter().enumerate() {
+        let (q, p) = (optimum.rotations[k], optimum.positions[k]);
+        assert_eq!(row[..], [graph.ids[k] as f64, p.x, p.y, p.z, q.x, q.y, q.z, q.w], "{k}");
+    }
+    // As g2o's VERTEX_SE3:QUAT lines with the file's edges, it reads back as the same poses and
+    // edges, at the same cost.
+    let vertices: String = rows
+        .iter()
+        .map(|r| {
+            format!(
+                "VERTEX_SE3:QUAT {} {} {} {} {} {} {} {}\n",
+                r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7]
+            )
+        })
+        .collect();
+    let edges: String = include_str!("../../../../tests/fixtures/posegraphs/tinyGrid3D.g2o")
+        .lines()
+        .filter(|l| l.starts_with("EDGE"))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let back = read(&(vertices + &edges)).unwrap();
+    assert_eq!(back.edges, graph.edges);
+    let (poses, from_file) = initial(&back);
+    assert!(from_file);
+    let cost: f64 = edge_costs(&back, &poses).iter().sum();
+    assert!((cost - answer.cost).abs() <= 1e-9 * answer.cost, "{cost} {}", answer.cost);
+}
+
+#[test]
+fn a_bad_file_is_refused_naming_its_line_and_answers_of_another_size_are_refused() {
+    let bad = "VERTEX_SE2 0 0 0 0\nVERTEX_SE2 1 1 0 0\nEDGE_SE2 0 1 1 zero 0\n";
+    let error = solve_text(bad, &mut |_| {}).unwrap_err();
+    assert!(error.to_string().contains("line 3"), "{error}");
+    let w = world(1.0, 4, 2);
+    let answer = solve_text(&w.text, &mut |_| {}).unwrap();
+    let graph = read(&w.text).unwrap();
+    let refused =
+        |data: &[f64]| SyncMap::of(graph.clone(), data).err().unwrap().argument().to_owned();
+    assert_eq!(refused(&answer[1..]), "answer");
+    let mut nan = answer.clone();
+    nan[10] = f64::NAN;
+    assert_eq!(refused(&nan), "answer");
+}

@@ -1,0 +1,190 @@
+//! The map of a pose graph: two panels at one scale, the initial estimate and the optimum, each
+//! pose's position joined in order (the trajectory) and every other edge (a loop closure) drawn
+//! thin, each edge in the colour of its misfit in that panel's poses; seen from above in 2D, by
+//! an orbiting camera in 3D. A key at the bottom says the colours.
+
+use glam::DVec3;
+
+use crate::camera::Camera;
+use crate::palette::{INK, MISFIT, MUTED};
+use crate::pen::Pen;
+
+/// The misfit classes' upper ends (standard deviations) and labels; the colours are
+/// [`MISFIT`]'s.
+pub const CLASSES: [(f64, &str); 5] =
+    [(0.5, "< 0.5σ"), (1.0, "0.5–1σ"), (2.0, "1–2σ"), (4.0, "2–4σ"), (f64::INFINITY, "≥ 4σ")];
+
+/// The class of a misfit (a NaN, which no pose gives, is the worst).
+pub fn class(misfit: f64) -> usize {
+    CLASSES.iter().position(|&(end, _)| misfit < end).unwrap_or(CLASSES.len() - 1)
+}
+
+/// One panel: its heading, a line under it, each pose's position, each edge's misfit.
+pub struct MapPanel<'a> {
+    pub heading: String,
+    pub line: String,
+    pub positions: &'a [DVec3],
+    pub misfits: &'a [f64],
+}
+
+/// Where the map is seen from: above (2D), or a camera (3D).
+pub enum Look {
+    Above,
+    Orbit(Camera),
+}
+
+impl Look {
+    fn flat(&self, p: DVec3) -> (f64, f64) {
+        match self {
+            Look::Above => (p.x, p.y),
+            Look::Orbit(camera) => {
+                let q = camera.project(p);
+                (q.x, q.y)
+            }
+        }
+    }
+}
+
+/// The font sizes: headings, lines and the key.
+const HEADING: f64 = 13.0;
+const LINE: f64 = 11.0;
+
+/// Draws the panels side by side (stacked when the figure is taller than wide).
+pub fn draw_map(
+    pen: &Pen,
+    edges: &[[usize; 2]],
+    panels: &[MapPanel],
+    look: &Look,
+    (width, height): (f64, f64),
+) {
+    let s = pen.text_scale();
+    let key = key_entries();
+    let key_height = draw_key(pen, &key, (8.0, 0.0), width - 16.0, false);
+    let body = (height - key_height - 8.0 * s).max(10.0);
+    let wide = width >= height;
+    let k = panels.len().max(1) as f64;
+    let head = 40.0 * s;
+    let cells: Vec<(f64, f64, f64, f64)> = (0..panels.len())
+        .map(|n| {
+            let n = n as f64;
+            if wide {
+                (n * width / k, 0.0, width / k, body)
+            } else {
+                (0.0, n * body / k, width, body / k)
+            }
+        })
+        .collect();
+    // One scale for both: the box of every panel's points, fitted in the smallest map area.
+    let flat: Vec<Vec<(f64, f64)>> =
+        panels.iter().map(|p| p.positions.iter().map(|&v| look.flat(v)).collect()).collect();
+    let points = flat.iter().flatten().filter(|p| p.0.is_finite() && p.1.is_finite());
+    let (mut low, mut high) =
+        ((f64::INFINITY, f64::INFINITY), (f64::NEG_INFINITY, f64::NEG_INFINITY));
+    for &(x, y) in points {
+        low = (low.0.min(x), low.1.min(y));
+        high = (high.0.max(x), high.1.max(y));
+    }
+    if low.0 > high.0 {
+        (low, high) = ((-1.0, -1.0), (1.0, 1.0));
+    }
+    let margin = 10.0;
+    let span = ((high.0 - low.0).max(1e-9), (high.1 - low.1).max(1e-9));
+    let scale = cells
+        .iter()
+        .map(|&(_, _, w, h)| {
+            ((w - 2.0 * margin).max(1.0) / span.0).min((h - head - 2.0 * margin).max(1.0) / span.1)
+        })
+        .fold(f64::INFINITY, f64::min);
+    let centre = (0.5 * (low.0 + high.0), 0.5 * (low.1 + high.1));
+    for ((panel, points), &(left, top, w, h)) in panels.iter().zip(&flat).zip(&cells) {
+        pen.text(&panel.heading, (left + 10.0, top + 12.0 * s), INK, HEADING, "left");
+        pen.text(&panel.line, (left + 10.0, top + 28.0 * s), MUTED, LINE, "left");
+        let (cx, cy) = (left + 0.5 * w, top + head + 0.5 * (h - head));
+        let at = |(x, y): (f64, f64)| (cx + scale * (x - centre.0), cy - scale * (y - centre.1));
+        draw_edges(pen, edges, panel.misfits, &|i| at(points[i]));
+        if let Some(&first) = points.first() {
+            pen.disc(at(first), 4.0, Some("#ffffff"), Some((INK, 2.0)));
+        }
+    }
+    draw_key(pen, &key, (8.0, body + 4.0 * s), width - 16.0, true);
+}
+
+/// Every edge as a segment: loop closures thin and under, then the trajectory, each class over
+/// the ones below it (a large misfit stays visible among many small ones), wider as it rises.
+fn draw_edges(pen: &Pen, edges: &[[usize; 2]], misfits: &[f64], at: &dyn Fn(usize) -> (f64, f64)) {
+    let mut groups: Vec<Vec<[(f64, f64); 2]>> = vec![Vec::new(); 2 * CLASSES.len()];
+    for (&[i, j], &misfit) in edges.iter().zip(misfits) {
+        let closure = usize::from(i.abs_diff(j) != 1);
+        let (a, b) = (at(i), at(j));
+        if [a.0, a.1, b.0, b.1].iter().all(|v| v.is_finite()) {
+            groups[2 * class(misfit) + 1 - closure].push([a, b]);
+        }
+    }
+    let thin = if edges.len() > 5000 { 0.5 } else { 0.8 };
+    for (g, segments) in groups.iter().enumerate() {
+        let (c, trajectory) = (g / 2, g % 2 == 1);
+        let width = if trajectory { 1.4 + 0.4 * c as f64 } else { thin + 0.3 * c as f64 };
+        pen.segments(segments, MISFIT[c], width, &[]);
+    }
+}
+
+/// A key's entry: a swatch (a line of a colour and width, or the first pose's ring) and a label.
+struct KeyEntry {
+    colour: &'static str,
+    width: f64,
+    ring: bool,
+    label: &'static str,
+}
+
+fn key_entries() -> Vec<KeyEntry> {
+    let mut entries =
+        vec![KeyEntry { colour: INK, width: 0.0, ring: false, label: "edge misfit:" }];
+    for (c, &(_, label)) in CLASSES.iter().enumerate() {
+        entries.push(KeyEntry {
+            colour: MISFIT[c],
+            width: 1.4 + 0.4 * c as f64,
+            ring: false,
+            label,
+        });
+    }
+    entries.push(KeyEntry { colour: MUTED, width: 0.8, ring: false, label: "thin: loop closure" });
+    entries.push(KeyEntry { colour: INK, width: 2.0, ring: true, label: "pose 0 (held fixed)" });
+    entries
+}
+
+/// Lays the key out in rows from `(left, top)` within `width`, wrapping; draws it when `draw`.
+/// Returns its height.
+fn draw_key(
+    pen: &Pen,
+    entries: &[KeyEntry],
+    (left, top): (f64, f64),
+    width: f64,
+    draw: bool,
+) -> f64 {
+    let s = pen.text_scale();
+    let (line, swatch) = (16.0 * s, 18.0 * s.sqrt());
+    let (mut x, mut y) = (left, top + 0.5 * line);
+    for entry in entries {
+        let text = pen.text_width(entry.label, LINE);
+        let swatch = if entry.width > 0.0 { swatch + 4.0 } else { 0.0 };
+        let wide = swatch + text + 12.0;
+        if x > left && x + wide > left + width {
+            (x, y) = (left, y + line);
+        }
+        if draw {
+            if entry.ring {
+                pen.disc(
+                    (x + 0.5 * swatch, y),
+                    4.0,
+                    Some("#ffffff"),
+                    Some((entry.colour, entry.width)),
+                );
+            } else if entry.width > 0.0 {
+                pen.line((x, y), (x + swatch - 4.0, y), entry.colour, entry.width, &[]);
+            }
+            pen.text(entry.label, (x + swatch, y), INK, LINE, "left");
+        }
+        x += wide;
+    }
+    y + 0.5 * line - top
+}
