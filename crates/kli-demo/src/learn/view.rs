@@ -13,7 +13,9 @@ use crate::aircraft::Face;
 use crate::camera::Viewport;
 use crate::figure::Frame;
 use crate::format::{exponential, fixed};
-use crate::legend::{Entry, Mark, TextBox, clear_place, draw_legend_row, draw_plot_key, text_box};
+use crate::legend::{
+    Entry, Mark, TextBox, clear_place, draw_legend_row, draw_plot_key, legend_row_width, text_box,
+};
 use crate::object_view::{draw_object, object_camera};
 use crate::palette::{AXIS_X, AXIS_Y, AXIS_Z, GRID, INK, KLI, MUTED, SLERP};
 use crate::pen::Pen;
@@ -635,11 +637,18 @@ pub fn draw_rates(pen: &Pen, model: &Model, frame: &Frame) {
         Entry { mark: Mark::Line(KLI, 3.0, &[]), label: &chain_label },
         Entry { mark: Mark::Line(INK, 1.5, &[2.0, 3.0]), label: &words.pieces },
     ];
-    draw_legend_row(
-        pen,
-        (panel.left + panel.width, panel.top + panel.height - 10.0 * text),
-        &entries,
-    );
+    // Along the foot of the panel, below the curves; one above the other where the row is wider
+    // than the panel (a phone, or large text).
+    let (right, foot, line) =
+        (panel.left + panel.width, panel.top + panel.height - 10.0 * text, 15.0 * text);
+    if legend_row_width(pen, &entries) <= panel.width - 8.0 {
+        draw_legend_row(pen, (right, foot), &entries);
+    } else {
+        for (i, entry) in entries.iter().enumerate() {
+            let y = foot - (entries.len() - 1 - i) as f64 * line;
+            draw_legend_row(pen, (right, y), std::slice::from_ref(entry));
+        }
+    }
     // The chain's ω in its parts.
     let parts = |c: usize| rates.chain.omega.iter().map(move |v| v.to_array()[c]);
     let (low, high) =
