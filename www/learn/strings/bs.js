@@ -407,8 +407,9 @@ export const page = {
     `<output id="rates-out">Pri glatkoći 1 ω nema skoka ni u jednom ključu; njegova najveća brzina promjene |ω̇| je
     5.9 rad po jedinici vremena². SLERP po dijelovima skoči za 2.92 rad po jedinici vremena u k1.</output>`,
   "many.p12":
-    `Svaka glatkoća veća od 0 već uklanja skokove: kriva lanca je tada klase C², pa se <var>ω</var> blizu ključa
-    može samo brzo mijenjati, nikad odjednom. Mala glatkoća ima cijenu u velikom, iako konačnom, |<var>ω̇</var>|
+    `Svaka glatkoća veća od 0 već uklanja skokove: kriva lanca je tada klase C² (rotacija ima dva neprekidna
+    izvoda, pa ni <var>ω</var> ni <var>ω̇</var> ne skaču), a <var>ω</var> se blizu ključa može samo brzo mijenjati,
+    nikad odjednom. Mala glatkoća ima cijenu u velikom, iako konačnom, |<var>ω̇</var>|
     blizu ključeva; pri 1 promjena je raspoređena duž cijele krive, koja se savija najmanje (najmanji
     ∫|<var>ω̇</var>|² d<var>t</var>) od svih krivih kroz ključeve. Pomjeri klizač od 1 do 0.05 i prati kako
     navedeni |<var>ω̇</var>| raste, pa do 0, gdje više nije ograničen.`,

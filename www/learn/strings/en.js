@@ -406,8 +406,9 @@ export const page = {
     `<output id="rates-out">At smoothness 1 ω has no jump at any key; its largest rate of change |ω̇| is 5.9 rad per
     unit time². Piecewise SLERP jumps by 2.92 rad per unit time at k1.</output>`,
   "many.p12":
-    `Any smoothness above 0 already takes the jumps away: the chain's curve is then C², so <var>ω</var> can only
-    change quickly near a key, never at once. What a small smoothness costs is a large, though finite,
+    `Any smoothness above 0 already takes the jumps away: the chain's curve is then C² (the rotation has two
+    continuous derivatives, so neither <var>ω</var> nor <var>ω̇</var> jumps), and <var>ω</var> can only change
+    quickly near a key, never at once. What a small smoothness costs is a large, though finite,
     |<var>ω̇</var>| near the keys; at 1 the change is spread along the whole curve, which bends least (the smallest
     ∫|<var>ω̇</var>|² d<var>t</var>) of all curves through the keys. Slide from 1 down to 0.05 and watch the
     quoted |<var>ω̇</var>| grow, then to 0, where it has no bound at all.`,

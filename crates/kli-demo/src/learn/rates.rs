@@ -3,7 +3,8 @@
 //! sampled for the figure, with the jump of `ω` at each inner key and the largest `|ω̇|`
 //! ([`crate::turning`], as the keyframes page measures them). The keys are those the
 //! `<kli-figure view="keyframes">` beside it draws (www/keyframes/state.js, `FIGURE_DEFAULTS`),
-//! at times 0, 1, 2, 3; tests/e2e/learn.test.mjs checks that the two agree.
+//! at times 0, 1, 2, 3; tests/e2e/learn.test.mjs checks the jump the text quotes against one it
+//! computes from those keys.
 
 use glam::{DQuat, DVec3};
 use kli::spline::{ChainOptions, Curve, Keys, KliSpline, PiecewiseSlerp};
