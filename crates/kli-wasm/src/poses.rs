@@ -79,6 +79,11 @@ export interface PoseCertificate {
   /** The rank of the Riemannian staircase's last level (the dimension when the first was
    *  certified). */
   rank: number;
+  /** A proven lower bound on the global minimum of the cost (the relaxation's dual bound):
+   *  the cost less a tolerance's share when certified; when not certified but the relaxation
+   *  was at a higher rank (it is not tight), its optimum, so the poses are within
+   *  `cost − lowerBound` of the global minimum; 0 when no level was certified. */
+  lowerBound: number;
 }
 
 /** What `synchronizePoses` found. */
@@ -359,6 +364,7 @@ pub fn synchronize_poses_js(
     set(&certificate, "tolerance", c.tolerance.into());
     set(&certificate, "certified", c.certified.into());
     set(&certificate, "rank", (c.rank as f64).into());
+    set(&certificate, "lowerBound", c.lower_bound.into());
     set(&out, "certificate", certificate.into());
     Ok(out.into())
 }

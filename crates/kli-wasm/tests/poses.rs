@@ -45,6 +45,10 @@ fn csail_reaches_maths_optimum_certified() {
     assert!(certified(&result));
     let certificate = field(&result, "certificate");
     assert_eq!(field(&certificate, "rank").as_f64(), Some(2.0));
+    // The dual bound: below MATH.md's optimum, by at most the tolerance's share (d n of it).
+    let number = |key: &str| field(&certificate, key).as_f64().unwrap();
+    let gap = 31.70372 - number("lowerBound");
+    assert!(gap >= -1e-6 * 31.70372 && gap <= 2.0 * 1045.0 * number("tolerance") + 1e-5, "{gap}");
     let (rotations, translations) = (floats(&result, "rotations"), floats(&result, "translations"));
     assert_eq!((rotations.len(), translations.len()), (4 * 1045, 3 * 1045));
     assert!(translations.chunks(3).all(|t| t[2] == 0.0));

@@ -71,6 +71,15 @@ pub struct PoseCertificate {
     /// dimension when the first level was); where it never was, where the staircase stopped
     /// (`max_rank`, or below it if no step along the eigenvector of `λ_min` lowered the cost).
     pub rank: usize,
+    /// A proven lower bound on the global minimum of the cost, from the last level whose
+    /// relaxation was certified (SE-Sync §4.2.1, the dual of the semidefinite relaxation): at
+    /// its point `Y`, `S Yᵀ = 0` and `S ⪰ −tolerance · I`, so every feasible `Z` (its `d × d`
+    /// diagonal blocks the identity, trace `dn`) has `tr(Q Z) ≥ tr(Q YᵀY) − tolerance · dn`.
+    /// Certified: the cost less `tolerance · dn` (the cost is the minimum). Not certified but the
+    /// relaxation was at a higher rank (it is not tight there: its optimum lies below every set
+    /// of rotations): the poses are within `cost − lower_bound` of the global minimum, SE-Sync's
+    /// suboptimality bound. No level certified: 0, the cost's own floor.
+    pub lower_bound: f64,
 }
 
 /// What [`synchronize_poses`] found.
@@ -232,6 +241,7 @@ pub fn synchronize_poses_observed(
                 tolerance: 0.0,
                 certified: true,
                 rank: d,
+                lower_bound: 0.0,
             },
         });
     }
@@ -314,6 +324,7 @@ pub fn synchronize_poses_observed(
         tolerance: TOLERANCE * problem.scale * unit_weight,
         certified: solved.certified,
         rank: solved.rank,
+        lower_bound: solved.lower_bound.max(0.0) * unit_weight,
     };
     Ok(SynchronizedPoses {
         rotations,
@@ -347,6 +358,8 @@ struct Solved {
     certified: bool,
     rank: usize,
     iterations: usize,
+    /// [`PoseCertificate::lower_bound`] on the scaled weights (−∞ where no level was certified).
+    lower_bound: f64,
 }
 
 /// Steps 3–5 of the module's documentation from the rotations `start`, on weights scaled to a
@@ -364,6 +377,9 @@ fn solve(
     let mut x: Stack = stiefel::from_rotations(d, start);
     let mut rank = d;
     let mut iterations = 0;
+    // The relaxation's value at a certified point, less the tolerance's share (the field's doc).
+    let bound = |x: &Stack| problem.cost(x).0 - tolerance * (d * problem.n) as f64;
+    let mut lower_bound = f64::NEG_INFINITY;
     let verdict = loop {
         observe(PoseStage::Optimising { rank, iterations });
         let optimised =
@@ -372,6 +388,9 @@ fn solve(
         x = optimised.x;
         observe(PoseStage::Certifying { rank });
         let verdict = staircase::certify(problem, &x, tolerance);
+        if verdict.certified {
+            lower_bound = bound(&x);
+        }
         if verdict.certified || rank >= max_rank {
             break verdict;
         }
@@ -390,6 +409,9 @@ fn solve(
             trust::optimise(problem, &preconditioner, rounded, gradient, trust::MAX_ITERATIONS);
         iterations += polished.iterations;
         let final_verdict = staircase::certify(problem, &polished.x, tolerance);
+        if final_verdict.certified {
+            lower_bound = lower_bound.max(bound(&polished.x));
+        }
         (polished.x, final_verdict)
     } else {
         (x, verdict)
@@ -400,5 +422,6 @@ fn solve(
         certified: verdict.certified,
         rank,
         iterations,
+        lower_bound,
     })
 }
