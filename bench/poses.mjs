@@ -130,7 +130,7 @@ for (const c of ran) {
 }
 console.log("‡ a TORO file (EDGE3, EDGE2): kli reads it; GTSAM, g2o and the reference read it as kli's writeG2o wrote it (the same κ and τ), as the reference reads g2o lines only.");
 for (const line of notRun) console.log(`not run: ${line}`);
-console.log("not run: GTSAM w20000.txt (20,061 poses: 66 s, not certified at rank 3, cost 518.63)");
+console.log("not run: GTSAM w20000.txt (20,061 poses: 66 s, not certified at rank 3, cost 518.63; its relaxation is not tight: lowerBound 518.6126, docs/performance.md)");
 console.log("Costs: + the share above the best of the three; Ceres (pyceres) is not a peer (bench/poses_peers.py).");
 
 record("synchronizePoses on real pose graphs (GTSAM's, SE-Sync's, the fixtures): cost within 1e-6 (relative) of the best any method reached, certified",
