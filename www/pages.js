@@ -87,12 +87,12 @@ export const PAGES = [
     views: { sync: "graph" },
     canvases: {
       graph: "#sync-graph", hopf: "#sync-hopf", plots: "#sync-plots", results: "#sync-results", objects: "#sync-objects",
-      sweep: "#sync-sweep", file: "#sync-file",
+      sweep: "#sync-sweep", map: "#sync-map", file: "#sync-file",
     },
     save: {
       graph: ["Graph", "the graph"], hopf: ["Hopf sphere", "the Hopf sphere"], plots: ["Plots", "the plots"],
       results: ["Solutions", "the two solutions"], objects: ["Objects", "the objects"], sweep: ["Sweep", "the wrong-edge sweep"],
-      file: ["Your pose graph", "your pose graph's residuals"], edges: ["The edges and nodes", "every edge and node"],
+      map: ["Map", "the pose graph's map"], file: ["Your pose graph's rotations", "your pose graph's rotation residuals"], edges: ["The edges and nodes", "every edge and node"],
     },
   },
   {

@@ -1,8 +1,9 @@
 // End-to-end tests of the synchronisation page (sync.html, made from www/sync/) in Debian's headless Chromium.
 import { test } from "node:test";
 import assert from "node:assert/strict";
+import { readFile } from "node:fs/promises";
 import { join } from "node:path";
-import { artifacts, axeViolations, canvasStats, open, setup } from "./browser.mjs";
+import { artifacts, axeViolations, canvasStats, open, painted, root, setup } from "./browser.mjs";
 
 setup();
 
@@ -213,13 +214,13 @@ test("a user's own pose graph, opened or dropped, is synchronised in the page's 
   });
   assert.equal(await page.isHidden("#file-figure"), true, "no empty figure before a file");
   await page.setInputFiles("#file-input", { name: "square.g2o", mimeType: "text/plain", buffer: Buffer.from(SQUARE) });
-  await page.waitForFunction(() => document.querySelector("#file-status").textContent.startsWith("square.g2o: 4 nodes"));
-  assert.equal(await page.textContent("#file-status"), "square.g2o: 4 nodes, 4 edges, certified.");
+  await page.waitForFunction(() => document.querySelector("#file-status").textContent.includes("rotations alone certified"));
+  assert.match(await page.textContent("#file-status"), /^square\.g2o: 4 poses, 4 edges; the map certified \(solved in [\d.]+ s\); its rotations alone certified\.$/);
   const rows = Object.fromEntries(await page.$$eval("#file-table tr", (trs) => trs.map((tr) => [tr.cells[0].textContent, tr.cells[1].textContent])));
   assert.ok(Math.abs(Number(rows["Chordal cost f"])) < 1e-20, JSON.stringify(rows));
   assert.match(rows.Certificate, /^certified/);
   assert.ok((await canvasStats(page, "#sync-file")).drawn > 3000);
-  assert.ok(await page.evaluate(() => window.__sent.includes("SyncFile.solve")), "solved in the worker");
+  assert.ok(await page.evaluate(() => window.__sent.includes("SyncFile.solve") && window.__sent.includes("SyncMap.solve")), "solved in the worker");
   // A 2D graph with landmarks: poses 0, 2, 4 (ids past the landmarks' 1 and 3), the landmark lines
   // set aside and counted.
   const planar = [
@@ -227,17 +228,101 @@ test("a user's own pose graph, opened or dropped, is synchronised in the page's 
     "EDGE_SE2 0 2 1 0 0.2 1 0 0 1 0 1", "EDGE_SE2_XY 0 1 5 5 1 0 1", "EDGE_SE2 2 4 -1 1 0.2 1 0 0 1 0 2", "EDGE_SE2 4 0 0 -1 0.2 1 0 0 1 0 4",
   ].join("\n");
   await page.setInputFiles("#file-input", { name: "planar.g2o", mimeType: "text/plain", buffer: Buffer.from(planar) });
-  await page.waitForFunction(() => document.querySelector("#file-status").textContent.startsWith("planar.g2o:"));
-  assert.equal(await page.textContent("#file-status"), "planar.g2o: 3 nodes, 3 edges (3 other lines skipped: landmarks, priors), certified.");
+  await page.waitForFunction(() => /^planar\.g2o: .*rotations alone certified/.test(document.querySelector("#file-status").textContent));
+  assert.match(await page.textContent("#file-status"), /^planar\.g2o: 3 poses, 3 edges \(3 other lines skipped: landmarks, priors\); the map certified/);
   // Dropped: a bad line is refused with its number, and the graph on show stays.
   await page.evaluate(() => {
     const data = new DataTransfer();
     data.items.add(new File(["# a comment\nEDGE_SE3:QUAT 0 1 0 0\n"], "bad.g2o"));
     document.querySelector("#file-section").dispatchEvent(new DragEvent("drop", { dataTransfer: data, bubbles: true, cancelable: true }));
   });
-  await page.waitForFunction(() => document.querySelector("#file-status").textContent.startsWith("bad.g2o:"));
+  await page.waitForFunction(() => /^bad\.g2o: .*line/.test(document.querySelector("#file-status").textContent));
   assert.match(await page.textContent("#file-status"), /^bad\.g2o: .*line 2/);
   assert.equal(await page.isHidden("#file-figure"), false);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+/** The map's table, heading → value. */
+const mapTable = async (page) => Object.fromEntries(await page.$$eval("#map-table tr", (trs) => trs.map((tr) => [tr.cells[0].textContent, tr.cells[1].textContent])));
+/** Waits for the map of `name` (a status that starts with it and says how long it took). */
+const mapOf = (page, name) => page.waitForFunction((name) => {
+  const status = document.querySelector("#file-status").textContent;
+  return status.startsWith(`${name}:`) && /solved in/.test(status);
+}, name, { timeout: 120000 });
+/** Clicks a save button of the map and returns the download's name and text. */
+async function savedMap(page, selector) {
+  const [download] = await Promise.all([page.waitForEvent("download"), page.click(selector)]);
+  return { name: download.suggestedFilename(), text: (await readFile(await download.path())).toString("utf8") };
+}
+const fixture = (name) => readFile(join(root, "tests/fixtures/posegraphs", name));
+
+test("the map: the built-in robot's loop solved before any file, a 2D and a 3D file, the certificate, the .g2o and CSV saves", async () => {
+  const { page, context, problems } = await open("sync.html", { reducedMotion: "reduce" });
+  // Before any file: the built-in pose graph, solved in the worker, drawn, certified. Its size
+  // is its route's (24 blocks of 8 m, a pose a metre: 192 poses, 191 odometry edges) and the
+  // loop closures asked for (8).
+  await mapOf(page, "The built-in robot's loop");
+  assert.ok(await painted(page, "#sync-map", 5000), "the map is drawn");
+  let rows = await mapTable(page);
+  assert.equal(rows.Poses, "192 (2D)");
+  assert.match(rows.Edges, /^199, of which 8 join/);
+  assert.match(rows.Certificate, /^certified: λmin\(S\) = /);
+  assert.equal(rows["Initial estimate"], "the odometry chained from pose 0");
+  const [initial, optimum] = rows["Cost f: initial, optimum"].split(", ").map(Number);
+  assert.ok(optimum > 0 && initial > 10 * optimum, rows["Cost f: initial, optimum"]);
+  // No loop closures: a chain, which the odometry fits exactly (cost 0 to rounding).
+  await page.fill("#world-closures", "0");
+  await page.waitForFunction(() => document.querySelector("#map-table").textContent.includes("191, of which 0"));
+  rows = await mapTable(page);
+  assert.ok(Number(rows["Cost f: initial, optimum"].split(", ")[1]) < 1e-9, rows["Cost f: initial, optimum"]);
+  // CSAIL (2D, 1,045 poses): SE-Sync's optimum, 31.70372 (MATH.md, by NumPy's LM), certified.
+  await page.setInputFiles("#file-input", { name: "CSAIL.g2o", mimeType: "text/plain", buffer: await fixture("CSAIL.g2o") });
+  await mapOf(page, "CSAIL.g2o");
+  rows = await mapTable(page);
+  assert.equal(rows.Poses, "1045 (2D)");
+  assert.equal(rows["Initial estimate"], "the odometry chained from pose 0", "CSAIL.g2o has no VERTEX lines");
+  const csail = Number(rows["Cost f: initial, optimum"].split(", ")[1]);
+  assert.ok(Math.abs(csail - 31.70372) < 1e-3, rows["Cost f: initial, optimum"]);
+  assert.match(rows.Certificate, /^certified/);
+  // The optimum saved as .g2o: the file's edges and the optimum's VERTEX lines, which, opened
+  // again, are the initial estimate at the optimum's cost.
+  const g2o = await savedMap(page, "#save-g2o");
+  assert.equal(g2o.name, "CSAIL-optimum.g2o");
+  assert.equal(g2o.text.split("\n").filter((line) => line.startsWith("VERTEX_SE2 ")).length, 1045);
+  await page.setInputFiles("#file-input", { name: "again.g2o", mimeType: "text/plain", buffer: Buffer.from(g2o.text) });
+  await mapOf(page, "again.g2o");
+  rows = await mapTable(page);
+  assert.equal(rows["Initial estimate"], "the file's own (its VERTEX lines)");
+  const [before, after] = rows["Cost f: initial, optimum"].split(", ").map(Number);
+  assert.ok(Math.abs(before - csail) < 1e-3 && Math.abs(after - csail) < 1e-3, rows["Cost f: initial, optimum"]);
+  // The CSV: a header and a row a pose, pose 0 at the origin.
+  const csv = await savedMap(page, "#save-poses-csv");
+  const lines = csv.text.trim().split("\n").filter((line) => !line.startsWith("#"));
+  assert.equal(lines[0], "id,x,y,z,qx,qy,qz,qw");
+  assert.equal(lines.length, 1046);
+  assert.deepEqual(lines[1].split(",").map(Number), [0, 0, 0, 0, 0, 0, 0, 1]);
+  // A 3D grid: turnable, by the keys too (the picture changes), certified.
+  await page.setInputFiles("#file-input", { name: "tinyGrid3D.g2o", mimeType: "text/plain", buffer: await fixture("tinyGrid3D.g2o") });
+  await mapOf(page, "tinyGrid3D.g2o");
+  rows = await mapTable(page);
+  assert.match(rows.Poses, /\(3D\)$/);
+  assert.match(rows.Certificate, /^certified/);
+  assert.equal(await page.getAttribute("#sync-map", "role"), "application");
+  const before3d = await canvasStats(page, "#sync-map");
+  await page.focus("#sync-map");
+  await page.keyboard.press("ArrowLeft");
+  await page.keyboard.press("ArrowUp");
+  await page.waitForFunction((hash) => {
+    const canvas = document.querySelector("#sync-map");
+    const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
+    let h = 0;
+    for (let i = 0; i < data.length; i += 4) h = (h * 31 + data[i] + 7 * data[i + 1] + 13 * data[i + 2]) % 1000000007;
+    return h !== hash;
+  }, before3d.hash);
+  assert.equal(await page.textContent("#readout").then((text) => text.startsWith("t = 0.00")), true, "the keys turned the map, not the time");
+  // No NaN anywhere in the section's words.
+  assert.doesNotMatch(await page.textContent("#file-section"), /NaN|undefined|Infinity/);
   assert.deepEqual(problems, []);
   await context.close();
 });

@@ -7,7 +7,7 @@
 // first and answers `null` to any earlier one of its kind that has not started: a run's solve
 // that a newer run made pointless is never run.
 
-/** @typedef {{ target: string, call: string, args: any[], latest?: string, resolve: (value: any) => void, reject: (error: Error) => void }} Job */
+/** @typedef {{ target: string, call: string, args: any[], latest?: string, progress?: (words: string) => void, resolve: (value: any) => void, reject: (error: Error) => void }} Job */
 
 export class Offload {
   /**
@@ -44,14 +44,17 @@ export class Offload {
 
   /**
    * `glue[target][call](...args)`, off the page; with `latest`, before the calls waiting, and
-   * any earlier call of that kind not yet started answers `null`.
+   * any earlier call of that kind not yet started answers `null`. With `progress`, the call is
+   * given one more argument, a function it calls with words on how far it is (a pose graph's
+   * stages), which reach `progress` on the page while the call runs.
    * @param {string} target @param {string} call @param {any[]} args @param {string} [latest]
+   * @param {(words: string) => void} [progress]
    * @returns {Promise<any>}
    */
-  call(target, call, args, latest) {
+  call(target, call, args, latest, progress) {
     if (latest) this.dropWhere((job) => job.latest === latest);
     return new Promise((resolve, reject) => {
-      const job = { target, call, args, latest, resolve, reject };
+      const job = { target, call, args, latest, progress, resolve, reject };
       if (latest) this.queue.unshift(job);
       else this.queue.push(job);
       this.pump();
@@ -76,22 +79,25 @@ export class Offload {
     this.running = job;
     const id = ++this.id;
     if (this.worker) {
-      this.worker.postMessage({ id, module: this.address, target: job.target, call: job.call, args: job.args });
+      this.worker.postMessage({ id, module: this.address, target: job.target, call: job.call, args: job.args, progress: Boolean(job.progress) });
       return;
     }
     setTimeout(() => {
       try {
-        this.answered({ id, value: this.glue[job.target][job.call](...job.args) });
+        const args = job.progress ? [...job.args, job.progress] : job.args;
+        this.answered({ id, value: this.glue[job.target][job.call](...args) });
       } catch (error) {
         this.answered({ id, error: /** @type {any} */ (error) });
       }
     });
   }
 
-  /** @param {{ id: number, value?: any, error?: { message: string, argument?: string } }} answer */
+  /** @param {{ id: number, value?: any, error?: { message: string, argument?: string }, progress?: string }} answer */
   answered(answer) {
     const job = this.running;
     if (!job || answer.id !== this.id) return;
+    // Words on the way, not the answer.
+    if (answer.progress !== undefined) return job.progress?.(answer.progress);
     this.running = null;
     if (answer.error) job.reject(Object.assign(new Error(answer.error.message), { argument: answer.error.argument }));
     else job.resolve(answer.value);

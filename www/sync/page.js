@@ -1,13 +1,14 @@
 // @ts-check
 // The synchronisation page: a descriptor for the page runtime (runtime.js), the sweep over the
-// share of wrong edges, and a user's own pose graph (opened or dropped). The problem, the
-// solutions, the flow and all drawing are the module's (crates/kli-demo/src/sync/); each run is
-// built unsolved and its solutions, like the sweep's points, come from the page's worker
-// (runtime/offload.js).
+// share of wrong edges, and a pose graph's map: the built-in one, or a user's own (opened or
+// dropped). The problem, the solutions, the flow and all drawing are the module's
+// (crates/kli-demo/src/sync/); each run is built unsolved and its solutions, like the sweep's
+// points and a pose graph's optimum, come from the page's worker (runtime/offload.js).
 import * as sync from "../pkg/sync_demo.js";
-import { SyncDemo, SyncFile } from "../pkg/sync_demo.js";
+import { SyncDemo, SyncFile, SyncMap } from "../pkg/sync_demo.js";
 import { $ } from "../runtime/dom.js";
-import { timeTag } from "../runtime/exports.js";
+import { download, timeTag } from "../runtime/exports.js";
+import { wireDragging } from "../runtime/input.js";
 import { page as registered } from "../pages.js";
 import { Page } from "../runtime/runtime.js";
 import { Sweep } from "../runtime/sweep.js";
@@ -31,13 +32,18 @@ const sweep = new Sweep({
 /** The worker that solves each run and the sweep's points: started now, so it loads the module
  *  while the page does. */
 const offload = new Offload(sync, new URL("../pkg/sync_demo.js", import.meta.url));
-/** The user's own pose graph, once one is read. */
+/** The user's own pose graph's rotations alone, once one is read. */
 const own = { file: /** @type {SyncFile | null} */ (null), name: "" };
+/** The pose graph on the map: the built-in one until a file is opened; its text, its name, the
+ *  seconds its solve took (in the worker, reading included). */
+const shown = { map: /** @type {SyncMap | null} */ (null), text: "", name: "", file: false, seconds: "" };
 /** The views' names in file names. */
 const FILE_NAMES = /** @type {Record<string, string>} */ ({
   graph: "graph", hopf: "hopf", objects: "objects", plots: "plots", results: "residuals", sweep: "wrong-edge-sweep",
-  file: "your-graph-residuals",
+  file: "your-graph-residuals", map: "pose-graph-map",
 });
+/** A 3D map's turn a key press, radians. */
+const TURN = (5 * Math.PI) / 180;
 
 /** @type {Page<SyncState, SyncDemo>} */
 const page = new Page({
@@ -54,6 +60,13 @@ const page = new Page({
       svg: (frame) => {
         if (!own.file) throw new Error("open a pose graph first");
         return own.file.toSvg(frame);
+      },
+    },
+    map: {
+      draw: (ctx, frame) => shown.map?.draw(ctx, frame),
+      svg: (frame) => {
+        if (!shown.map) throw new Error("the map is still being solved");
+        return shown.map.toSvg(frame);
       },
     },
   },
@@ -76,7 +89,7 @@ const page = new Page({
       `Robust: ${s.robustErrorDegrees.toFixed(2)}°, ${robust}.`;
   },
   data: { file: (run, t) => `kli-sync-${run.summary.count}-nodes-${timeTag(t)}` },
-  file: (run, view, t) => `kli-sync-${FILE_NAMES[view]}-${run.summary.count}${["sweep", "results", "file"].includes(view) ? "" : `-${timeTag(t)}`}`,
+  file: (run, view, t) => `kli-sync-${FILE_NAMES[view]}-${run.summary.count}${["sweep", "results", "file", "map"].includes(view) ? "" : `-${timeTag(t)}`}`,
   video: {
     views: ["graph", "hopf"],
     title: (run) => `${run.summary.count} rotations synchronising on a graph: the Lohe flow`,
@@ -104,6 +117,7 @@ const page = new Page({
     $("#reseed", HTMLButtonElement).addEventListener("click", () => host.apply({ ...host.state, seed: (host.state.seed + 1) % 1e9 }));
     $("#sweep", HTMLButtonElement).addEventListener("click", () => runSweep(host));
     wireFile(host);
+    wireMap(host);
   },
 });
 
@@ -127,28 +141,176 @@ function runSweep(/** @type {Host} */ host) {
   sweep.run(SHARES, (share, k) => offload.call("SyncDemo", "sweepError", [{ count, graph, noise, seed }, share, METHODS[k]]).then((error) => [error]), METHODS.length);
 }
 
-/** Opening or dropping a pose graph: synchronised in the page's worker (a large graph takes
- *  seconds), then read on the page with its solutions. A file opened while one is being
- *  synchronised supersedes it. */
+/** The error's words. */
+const words = (/** @type {unknown} */ error) => (error instanceof Error ? error.message : String(error));
+
+/** A number for the tables, or a dash where there is none (a graph of one pose has no edge). */
+const figure = (/** @type {number} */ x, /** @type {(x: number) => string} */ format) => (Number.isFinite(x) ? format(x) : "—");
+
+/** The section's status line. */
+const status = () => $("#file-status", HTMLOutputElement);
+
+/** Which map solve is the latest: an older one that answers late is not shown. */
+let solving = 0;
+
+/** Solves pose graph `text` in the page's worker, its stages shown in the status as they begin
+ *  (the page stays free meanwhile: 10,000 poses take seconds), then shows its map. True once
+ *  shown; false when a newer graph superseded it, or it was refused (the status says why, with
+ *  the line at fault). */
+async function solveMap(/** @type {Host} */ host, /** @type {string} */ text, /** @type {string} */ name, /** @type {boolean} */ file) {
+  const mine = ++solving;
+  const start = performance.now();
+  const seconds = () => ((performance.now() - start) / 1000).toFixed(1);
+  status().textContent = `${name}: solving…`;
+  /** @type {SyncMap} */
+  let map;
+  try {
+    const answer = await offload.call("SyncMap", "solve", [text], "map", (stage) => {
+      if (mine === solving) status().textContent = `${name}: ${stage}… (${seconds()} s)`;
+    });
+    if (!answer || mine !== solving) return false;
+    map = SyncMap.solved(text, answer);
+  } catch (error) {
+    if (mine === solving) status().textContent = `${name}: ${words(error)}`;
+    return false;
+  }
+  shown.map?.free();
+  Object.assign(shown, { map, text, name, file, seconds: seconds() });
+  showMap(host);
+  return true;
+}
+
+/** The map on show: its table, its status, and a 3D map made turnable. */
+function showMap(/** @type {Host} */ host) {
+  if (!shown.map) return;
+  const s = shown.map.summary;
+  const exp = (/** @type {number} */ x) => x.toExponential(4);
+  const certificate = s.certified
+    ? `certified: λmin(S) = ${figure(s.lambdaMin, (x) => x.toExponential(1))} ≥ −${figure(s.tolerance, (x) => x.toExponential(1))}`
+    : `not certified: λmin(S) = ${figure(s.lambdaMin, (x) => x.toExponential(1))} < −${figure(s.tolerance, (x) => x.toExponential(1))}`;
+  fillTable("#map-table tbody", [
+    ["Poses", `${s.poses} (${s.dimension}D)`],
+    ["Edges", `${s.edges}, of which ${s.closures} ${s.closures === 1 ? "joins" : "join"} poses that are not consecutive (loop closures)`],
+    ["Initial estimate", s.fromFile ? "the file's own (its VERTEX lines)" : "the odometry chained from pose 0"],
+    ["Cost f: initial, optimum", `${figure(s.initialCost, exp)}, ${figure(s.cost, exp)}`],
+    ["Certificate", certificate],
+    ["Rank of the staircase", String(s.rank)],
+    ["Trust-region steps", String(s.iterations)],
+    ["Median edge misfit", figure(s.medianMisfit, (x) => `${x.toFixed(2)} σ`)],
+    ["Solved in", `${shown.seconds} s, in the page's worker (reading included)`],
+  ]);
+  const skipped = s.skipped ? ` (${s.skipped} other ${s.skipped === 1 ? "line" : "lines"} skipped: landmarks, priors)` : "";
+  status().textContent = `${shown.name}: ${s.poses} poses, ${s.edges} edges${skipped}; ` +
+    `${s.certified ? "the certified optimum" : "an optimum, not certified"}, solved in ${shown.seconds} s.`;
+  const canvas = $("#sync-map", HTMLCanvasElement);
+  const turnable = s.dimension === 3;
+  canvas.classList.toggle("turnable", turnable);
+  canvas.style.touchAction = turnable ? "none" : "";
+  if (turnable) {
+    canvas.tabIndex = 0;
+    canvas.setAttribute("role", "application");
+    canvas.setAttribute("aria-roledescription", "turnable map");
+    canvas.setAttribute("aria-label", "The pose graph's map in 3D: the initial estimate beside the optimum, each edge coloured by its misfit. Arrow keys turn it; dragging turns it too.");
+  } else {
+    canvas.removeAttribute("tabindex");
+    canvas.setAttribute("role", "img");
+    canvas.removeAttribute("aria-roledescription");
+    canvas.setAttribute("aria-label", "The pose graph's map seen from above: the initial estimate beside the optimum, each edge coloured by its misfit");
+  }
+  host.redraw(["map"]);
+}
+
+/** Rows of `[heading, value]` into a table's body. */
+function fillTable(/** @type {string} */ selector, /** @type {string[][]} */ rows) {
+  const body = $(selector, HTMLTableSectionElement);
+  body.replaceChildren();
+  for (const [name, value] of rows) {
+    const row = body.insertRow();
+    const head = document.createElement("th");
+    head.scope = "row";
+    head.textContent = name;
+    row.append(head);
+    row.insertCell().textContent = value;
+  }
+}
+
+/** The built-in pose graph as its form says, solved and shown (a refused value said in the
+ *  status, by the module's words). */
+function showWorld(/** @type {Host} */ host) {
+  const form = $("#world-inputs", HTMLFormElement);
+  const value = (/** @type {string} */ name) => Number(/** @type {HTMLInputElement} */ (form.elements.namedItem(name)).value);
+  for (const name of ["noise", "closures"]) $(`#world-${name}-value`, HTMLOutputElement).textContent = String(value(name));
+  own.file?.free();
+  own.file = null;
+  $("#file-figure", HTMLElement).hidden = true;
+  let text;
+  try {
+    text = SyncMap.example({ noise: value("noise"), closures: value("closures"), seed: value("seed") });
+  } catch (error) {
+    status().textContent = `The built-in pose graph: ${words(error)}`;
+    return;
+  }
+  solveMap(host, text, "The built-in robot's loop", false);
+}
+
+/** The map's own parts: the built-in graph's form, turning a 3D map, saving the optimum. */
+function wireMap(/** @type {Host} */ host) {
+  const form = $("#world-inputs", HTMLFormElement);
+  form.addEventListener("submit", (event) => event.preventDefault());
+  form.addEventListener("input", () => showWorld(host));
+  $("#world-show", HTMLButtonElement).addEventListener("click", () => showWorld(host));
+  const canvas = $("#sync-map", HTMLCanvasElement);
+  const turn = (/** @type {number} */ azimuth, /** @type {number} */ elevation) => {
+    if (!shown.map || shown.map.summary.dimension !== 3) return;
+    shown.map.turn(azimuth, elevation);
+    host.redraw(["map"]);
+  };
+  wireDragging(canvas, turn);
+  canvas.style.touchAction = "";
+  canvas.addEventListener("keydown", (event) => {
+    /** @type {Record<string, [number, number]>} */
+    const keys = { ArrowLeft: [TURN, 0], ArrowRight: [-TURN, 0], ArrowUp: [0, TURN], ArrowDown: [0, -TURN] };
+    const by = keys[event.key];
+    if (!by || !shown.map || shown.map.summary.dimension !== 3) return;
+    event.preventDefault();
+    event.stopPropagation();
+    turn(...by);
+  });
+  const base = () => (shown.file ? shown.name.replace(/\.[^.]*$/, "") : "kli-built-in-pose-graph");
+  $("#save-g2o", HTMLButtonElement).addEventListener("click", () => {
+    if (!shown.map) return;
+    try {
+      download(`${base()}-optimum.g2o`, "text/plain", sync.writeG2o(sync.readG2o(shown.text), shown.map.poses));
+    } catch (error) {
+      status().textContent = `Could not save: ${words(error)}`;
+    }
+  });
+  $("#save-poses-csv", HTMLButtonElement).addEventListener("click", () => {
+    if (shown.map) download(`${base()}-optimum.csv`, "text/csv", shown.map.csv());
+  });
+}
+
+/** Opening or dropping a pose graph: its map solved in the page's worker (a large graph takes
+ *  seconds), then its rotations alone synchronised both ways, as the page above does. A file
+ *  opened while one is being solved supersedes it. */
 function wireFile(/** @type {Host} */ host) {
   const input = $("#file-input", HTMLInputElement);
   const zone = $("#file-section", HTMLElement);
-  const status = $("#file-status", HTMLOutputElement);
   let opened = 0;
   const open = async (/** @type {File | undefined} */ file) => {
     if (!file) return;
     const mine = ++opened;
-    status.textContent = `Reading ${file.name}…`;
+    status().textContent = `${file.name}: reading…`;
     const text = await file.text();
-    if (mine !== opened) return;
-    status.textContent = `Synchronising ${file.name}…`;
+    if (mine !== opened || !(await solveMap(host, text, file.name, true)) || mine !== opened) return;
+    status().textContent += " Its rotations alone: synchronising both ways…";
     let read = null;
     try {
       const solutions = await offload.call("SyncFile", "solve", [text], "file");
       if (!solutions || mine !== opened) return;
       read = SyncFile.solved(text, solutions);
     } catch (error) {
-      if (mine === opened) status.textContent = `${file.name}: ${error instanceof Error ? error.message : String(error)}`;
+      if (mine === opened) status().textContent = `${file.name}: ${words(error)}`;
       return;
     }
     own.file?.free();
@@ -169,35 +331,34 @@ function wireFile(/** @type {Host} */ host) {
   });
 }
 
-/** The user's graph: its figures' numbers and its residuals, shown. */
+/** The user's graph's rotations alone: their figures' numbers and residuals, shown, and the
+ *  status saying both the map's and their verdict. */
 function showFile(/** @type {Host} */ host) {
   if (!own.file) return;
   const s = own.file.summary;
-  const rows = [
+  const lambda = figure(s.lambdaMin, (x) => x.toExponential(1));
+  fillTable("#file-table tbody", [
     ["Nodes", String(s.count)],
     ["Edges", String(s.edges)],
-    ["Chordal cost f", s.chordalCost.toPrecision(8)],
-    ["Certificate", s.certified ? `certified (λmin(S) = ${s.lambdaMin.toExponential(1)})` : `not proved optimal (λmin(S) = ${s.lambdaMin.toExponential(1)})`],
-    ["Median residual, chordal", `${s.chordalMedianResidualDegrees.toFixed(3)}°`],
-    ["Median residual, robust", `${s.robustMedianResidualDegrees.toFixed(3)}°`],
+    ["Chordal cost f", figure(s.chordalCost, (x) => x.toPrecision(8))],
+    ["Certificate", s.certified ? `certified (λmin(S) = ${lambda})` : `not proved optimal (λmin(S) = ${lambda})`],
+    ["Median residual, chordal", figure(s.chordalMedianResidualDegrees, (x) => `${x.toFixed(3)}°`)],
+    ["Median residual, robust", figure(s.robustMedianResidualDegrees, (x) => `${x.toFixed(3)}°`)],
     ["Edges the robust solution flags", String(s.flagged)],
-  ];
-  const body = $("#file-table tbody", HTMLTableSectionElement);
-  body.replaceChildren();
-  for (const [name, value] of rows) {
-    const row = body.insertRow();
-    const head = document.createElement("th");
-    head.scope = "row";
-    head.textContent = name;
-    row.append(head);
-    row.insertCell().textContent = value;
-  }
+  ]);
+  const map = shown.map?.summary;
   const skipped = s.skipped ? ` (${s.skipped} other ${s.skipped === 1 ? "line" : "lines"} skipped: landmarks, priors)` : "";
-  $("#file-status", HTMLOutputElement).textContent = `${own.name}: ${s.count} nodes, ${s.edges} edges${skipped}, ${s.certified ? "certified" : "not proved optimal"}.`;
+  const poses = map ? `the map ${map.certified ? "certified" : "not certified"} (solved in ${shown.seconds} s); ` : "";
+  status().textContent = `${own.name}: ${s.count} poses, ${s.edges} edges${skipped}; ${poses}` +
+    `its rotations alone ${s.certified ? "certified" : "not proved optimal"}.`;
   $("#file-figure", HTMLElement).hidden = false;
   host.redraw(["file"]);
 }
 
-// The sweep fills itself once the page is interactive (a point a task, as the button runs it):
-// no empty figure on screen or on paper.
-page.start().then((ready) => ready && setTimeout(() => runSweep(page.host)));
+// The built-in pose graph's map, then the sweep (a point a task, as the button runs it), once the
+// page is interactive: no empty figure on screen or on paper.
+page.start().then((ready) => {
+  if (!ready) return;
+  showWorld(page.host);
+  setTimeout(() => runSweep(page.host));
+});

@@ -1,8 +1,9 @@
 //! The synchronisation page's built-in pose graph: a robot drives a loop through a small world
 //! (a town of 3 × 2 square blocks, streets 8 m apart), one pose a metre, measuring each step by
 //! noisy odometry and, where it passes a place it has been before, a few loop closures. It is
-//! written as a g2o file (`VERTEX_SE2` lines with the odometry chained, dead reckoning, then
-//! `EDGE_SE2` lines with their information), so the page reads it like any file a user opens.
+//! written as a g2o file of `EDGE_SE2` lines with their information, so the page reads it like
+//! any file a user opens; with no `VERTEX` lines, its initial estimate is the odometry chained,
+//! the robot's own dead reckoning.
 //!
 //! The route, in blocks from the town's corner: round the outside, then up the first side
 //! street, along the middle street, and through the two cross streets,
@@ -77,7 +78,8 @@ pub struct World {
     pub edges: Vec<[usize; 2]>,
     /// Each edge's measured `(dx, dy, dθ)` in its first pose's frame.
     pub measured: Vec<Pose2>,
-    /// The odometry chained from the first pose: the robot's own (drifting) estimate.
+    /// The odometry chained from the first pose: the robot's own (drifting) estimate, computed
+    /// here by angles (the map chains quaternions).
     pub dead_reckoning: Vec<Pose2>,
     pub text: String,
 }
@@ -161,34 +163,31 @@ impl World {
         let floor = options.noise.max(FLOOR_DEGREES);
         let information =
             [1.0 / (floor * METRES_PER_DEGREE).powi(2), 1.0 / floor.to_radians().powi(2)];
-        let text = text(options, &dead_reckoning, &edges, &measured, information);
+        let text = text(options, n, &edges, &measured, information);
         World { truth, edges, measured, dead_reckoning, text }
     }
 }
 
-/// The g2o file: a comment, the vertices, the edges with the information
+/// The g2o file: a comment, then the edges with the information
 /// `diag(1/σ_t², 1/σ_t², 1/σ_θ²)` (g2o's `I11 I12 I13 I22 I23 I33`). Numbers are written as
 /// Rust writes an f64, the shortest text that reads back as the same number.
 fn text(
     options: &WorldOptions,
-    vertices: &[Pose2],
+    poses: usize,
     edges: &[[usize; 2]],
     measured: &[Pose2],
     [translation, rotation]: [f64; 2],
 ) -> String {
-    let mut out = String::with_capacity(100 * (vertices.len() + edges.len()));
+    let mut out = String::with_capacity(100 * edges.len());
     let _ = writeln!(
         out,
         "# kli's built-in pose graph: a robot's loop through a town of 3 x 2 blocks, {} poses, \
          {} loop closures, noise {} degrees, seed {}",
-        vertices.len(),
-        edges.len() - (vertices.len() - 1),
+        poses,
+        edges.len() - (poses - 1),
         options.noise,
         options.seed
     );
-    for (k, &(x, y, t)) in vertices.iter().enumerate() {
-        let _ = writeln!(out, "VERTEX_SE2 {k} {x} {y} {t}");
-    }
     for (&[i, j], &(x, y, t)) in edges.iter().zip(measured) {
         let _ = writeln!(
             out,
