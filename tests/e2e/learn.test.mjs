@@ -6,6 +6,7 @@
 // WCAG 2.2 AA and 390 px.
 import { test } from "node:test";
 import assert from "node:assert/strict";
+import { readFile } from "node:fs/promises";
 import { join } from "node:path";
 import { artifacts, axeViolations, canvasStats, open, painted, setup } from "./browser.mjs";
 import { FIGURE_DEFAULTS } from "../../www/keyframes/state.js";
@@ -255,6 +256,11 @@ test("the turning rate through the keyframes: drawn, quoted as the smoothness sl
   await slide(page, "[name=smoothness]", "0.05");
   const little = (await text(page, "#rates-out")).match(quoted(0.05));
   assert.ok(little && Number(little[1]) > Number(one[1]), `${little?.[1]} against ${one[1]}`);
+  // Saved from the Save section as SVG: the figure as it stands, its words in it.
+  const [download] = await Promise.all([page.waitForEvent("download"), page.click('button[data-save="rates"][data-format="svg"]')]);
+  assert.equal(download.suggestedFilename(), "kli-tour-rates.svg");
+  const svg = await readFile(await download.path(), "utf8");
+  assert.match(svg, /^<svg[^]*\|ω\(t\)\|, the turning rate[^]*KLI chain, smoothness 0\.05/);
   // The exercise: predict the jump at k2, where |ω| is the same on both sides; its link sets 0.
   const exercise = page.locator("details.exercise", { hasText: "Does ω jump at k2" });
   await exercise.locator("summary").click();
