@@ -309,6 +309,7 @@ test("the map: the built-in robot's loop solved before any file, a 2D and a 3D f
   assert.match(rows.Poses, /\(3D\)$/);
   assert.match(rows.Certificate, /^certified/);
   assert.equal(await page.getAttribute("#sync-map", "role"), "application");
+  assert.equal(await page.isHidden("#map-views"), false, "a 3D map's views are offered");
   const before3d = await canvasStats(page, "#sync-map");
   await page.focus("#sync-map");
   await page.keyboard.press("ArrowLeft");
@@ -321,6 +322,12 @@ test("the map: the built-in robot's loop solved before any file, a 2D and a 3D f
     return h !== hash;
   }, before3d.hash);
   assert.equal(await page.textContent("#readout").then((text) => text.startsWith("t = 0.00")), true, "the keys turned the map, not the time");
+  // From above: the grid's floor plan, a picture of its own; back to the oblique view it opened with.
+  await page.click("#map-above");
+  const above = await canvasStats(page, "#sync-map");
+  await page.click("#map-oblique");
+  const oblique = await canvasStats(page, "#sync-map");
+  assert.ok(above.hash !== oblique.hash && oblique.hash === before3d.hash, "the views differ, and oblique is the first one");
   // No NaN anywhere in the section's words.
   assert.doesNotMatch(await page.textContent("#file-section"), /NaN|undefined|Infinity/);
   assert.deepEqual(problems, []);

@@ -205,6 +205,7 @@ function showMap(/** @type {Host} */ host) {
   const canvas = $("#sync-map", HTMLCanvasElement);
   const turnable = s.dimension === 3;
   canvas.classList.toggle("turnable", turnable);
+  $("#map-views", HTMLElement).hidden = !turnable;
   canvas.style.touchAction = turnable ? "none" : "";
   if (turnable) {
     canvas.tabIndex = 0;
@@ -276,6 +277,13 @@ function wireMap(/** @type {Host} */ host) {
     event.stopPropagation();
     turn(...by);
   });
+  // From above with x to the right and y up; the oblique view the map opens with (map.rs).
+  const look = (/** @type {number} */ azimuth, /** @type {number} */ elevation) => {
+    shown.map?.look(azimuth, elevation);
+    host.redraw(["map"]);
+  };
+  $("#map-above", HTMLButtonElement).addEventListener("click", () => look(-Math.PI / 2, Math.PI / 2));
+  $("#map-oblique", HTMLButtonElement).addEventListener("click", () => look((-60 * Math.PI) / 180, (35 * Math.PI) / 180));
   const base = () => (shown.file ? shown.name.replace(/\.[^.]*$/, "") : "kli-built-in-pose-graph");
   $("#save-g2o", HTMLButtonElement).addEventListener("click", () => {
     if (!shown.map) return;

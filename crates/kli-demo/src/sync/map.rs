@@ -14,6 +14,7 @@
 //! `[cost, iterations, λ_min, tolerance, certified (1 or 0), rank]`, then `4n` rotations
 //! (`w, x, y, z`) and `3n` positions.
 
+use std::f64::consts::FRAC_PI_2;
 use std::fmt::Write;
 
 use glam::{DMat3, DQuat, DVec3};
@@ -40,7 +41,7 @@ use crate::pen::{Pen, svg_document};
 /// The numbers before the poses in the answer.
 const HEAD: usize = 6;
 
-/// Where a 3D map is first seen from: azimuth and elevation, degrees.
+/// Where a 3D map is first seen from: azimuth and elevation, degrees (the page's "oblique").
 const CAMERA: (f64, f64) = (-60.0, 35.0);
 
 /// What the solver found, as the answer's numbers carry it.
@@ -195,9 +196,17 @@ impl SyncMap {
     /// Turns a 3D map's camera by `azimuth` and `elevation` radians (a 2D map is seen from above
     /// and does not turn).
     pub fn turn(&mut self, azimuth: f64, elevation: f64) {
+        self.look(self.azimuth + azimuth, self.elevation + elevation);
+    }
+
+    /// Looks at a 3D map from `azimuth` (about z, from x) and `elevation` (above the xy plane),
+    /// radians; the elevation is held within ±90° (the camera's own limit is ±89.9°), and a
+    /// value that is not finite leaves the camera as it is. From above with x to the right and y
+    /// up is `look(−π/2, π/2)`.
+    pub fn look(&mut self, azimuth: f64, elevation: f64) {
         if azimuth.is_finite() && elevation.is_finite() {
-            self.azimuth += azimuth;
-            self.elevation = (self.elevation + elevation).clamp(-1.5, 1.5);
+            self.azimuth = azimuth;
+            self.elevation = elevation.clamp(-FRAC_PI_2, FRAC_PI_2);
         }
     }
 
