@@ -53,6 +53,47 @@ function slerpJumps() {
   return [1, 2].map((k) => Math.hypot(...rates[k].map((x, i) => x - rates[k - 1][i])));
 }
 
+/** Section 9's swarm computed here, apart from the page's module: its 200 starting rotations (seed 1,
+ *  uniform on S³) taken from the package, then q_i′ = K(m − (q_i·m) q_i), m the mean (MATH.md, "The
+ *  swarm", all-to-all), by plain RK4 at step 0.01, each q_i normalised after a step. Returns R = |m| at
+ *  the start and at time `t`, and the largest turn (degrees) of any rotation from its start. */
+async function swarm(coupling, t) {
+  const kli = await import("../../pkg/swarm.node.js");
+  await kli.default();
+  const start = new kli.LoheSwarm({ count: 200, coupling, seed: 1 });
+  const q0 = [...start.quaternions];
+  start.free();
+  const n = q0.length / 4;
+  const mean = (x) => [0, 1, 2, 3].map((k) => x.reduce((sum, _, i) => (i % 4 === k ? sum + x[i] : sum), 0) / n);
+  const field = (x) => {
+    const m = mean(x);
+    return x.map((_, i) => {
+      const j = i - (i % 4);
+      const dot = x[j] * m[0] + x[j + 1] * m[1] + x[j + 2] * m[2] + x[j + 3] * m[3];
+      return coupling * (m[i % 4] - dot * x[i]);
+    });
+  };
+  const h = 0.01;
+  let q = q0.slice();
+  for (let step = 0; step < Math.round(t / h); step++) {
+    const k1 = field(q);
+    const k2 = field(q.map((x, i) => x + (h / 2) * k1[i]));
+    const k3 = field(q.map((x, i) => x + (h / 2) * k2[i]));
+    const k4 = field(q.map((x, i) => x + h * k3[i]));
+    q = q.map((x, i) => x + (h / 6) * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]));
+    for (let j = 0; j < q.length; j += 4) {
+      const length = Math.hypot(q[j], q[j + 1], q[j + 2], q[j + 3]);
+      for (let k = 0; k < 4; k++) q[j + k] /= length;
+    }
+  }
+  let turn = 0;
+  for (let j = 0; j < q.length; j += 4) {
+    const dot = Math.abs(q[j] * q0[j] + q[j + 1] * q0[j + 1] + q[j + 2] * q0[j + 2] + q[j + 3] * q0[j + 3]);
+    turn = Math.max(turn, (2 * Math.acos(Math.min(1, dot)) * 180) / Math.PI);
+  }
+  return { start: Math.hypot(...mean(q0)), end: Math.hypot(...mean(q)), turn };
+}
+
 /** Moves a slider as a reader does: its value, then an input event. */
 const slide = (page, selector, value) => page.evaluate(([selector, value]) => {
   const input = /** @type {HTMLInputElement} */ (document.querySelector(selector));
@@ -277,6 +318,39 @@ test("the turning rate through the keyframes: drawn, quoted as the smoothness sl
   assert.ok((await painted(figure.page, "kli-figure", 3000)) > 3000, "the rates figure on its own");
   assert.deepEqual(figure.problems, []);
   await figure.context.close();
+});
+
+test("the swarm: 200 rotations gather at K = 1; its exercise's push, K = −1, barely moves them", async () => {
+  const [pull, push] = [await swarm(1, 8), await swarm(-1, 8)];
+  // The paragraph: one dot by t = 8 at K = 1. The answer: R = 0.034 at the start, 0.000 at t = 8,
+  // the farthest turn about 5°.
+  assert.ok(pull.end > 0.99, String(pull.end));
+  assert.equal(push.start.toFixed(3), "0.034");
+  assert.equal(push.end.toFixed(3), "0.000");
+  assert.equal(Math.round(push.turn), 5);
+  const { page, context, problems } = await open("learn.html", { reducedMotion: "reduce" });
+  await page.locator("#many-swarm").scrollIntoViewIfNeeded();
+  await page.waitForFunction(() => customElements.get("kli-figure") !== undefined, null, { timeout: 10000 });
+  // With reduced motion the figure stands at t = 8: its own R is the one computed here.
+  const figure = (coupling) => page.waitForFunction((coupling) => {
+    const f = /** @type {any} */ (document.querySelector("#fig-swarm"));
+    return f?.getAttribute("coupling") === coupling && f.run && Math.abs(f.t - 8) < 1e-9 && { order: f.run.summary.orderParameter };
+  }, coupling, { timeout: 30000 }).then((handle) => handle.jsonValue()).then((v) => v.order);
+  const gathered = await figure("1");
+  assert.ok(Math.abs(gathered - pull.end) < 2e-3, `${gathered} against ${pull.end}`);
+  const exercise = page.locator("details.exercise", { hasText: "Do they fly apart" });
+  await exercise.locator("summary").click();
+  await exercise.locator("button.set-figure").click();
+  const balanced = await figure("-1");
+  assert.ok(Math.abs(balanced - push.end) < 1e-3, `${balanced} against ${push.end}`);
+  assert.equal(await page.inputValue('input[data-figure="fig-swarm"]'), "-1");
+  assert.equal(await page.getAttribute('input[data-figure="fig-swarm"]', "aria-valuetext"), "K = -1");
+  const answer = await exercise.textContent();
+  assert.match(answer, new RegExp(`the farthest by a turn of about ${Math.round(push.turn)}°`));
+  assert.match(answer, new RegExp(`R = ${push.start.toFixed(3)} at the start`));
+  assert.match(answer, new RegExp(`R is ${push.end.toFixed(3)} by t = 8`));
+  assert.deepEqual(problems, []);
+  await context.close();
 });
 
 test("reduced motion: nothing plays by itself, not even as a moving figure is reached", async () => {

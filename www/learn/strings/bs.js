@@ -94,8 +94,8 @@ export const page = {
     data-state='{"axis":"diagonal","angle":120}'>postavi 120° oko dijagonale</a>.`,
   "turn.p7":
     `<strong>Odgovor.</strong> cos 60° = 0.5, sin 60° = 0.866, a svaka komponenta ose je 1/√3 = 0.577, pa svaka od
-    jedinica i, j, k dobija 0.866 × 0.577 = 0.5: <var>q</var> = 0.5 + 0.5 i + 0.5 j + 0.5 k, što je <var>r</var> iz
-    rada (odjeljak 7). Trećina punog okreta oko dijagonale kružno premješta ose: nos, osa <var>x</var>, ide u
+    jedinica i, j, k dobija 0.866 × 0.577 = 0.5: <var>q</var> = 0.5 + 0.5 i + 0.5 j + 0.5 k, što je rotacija <var>r</var>
+    iz primjera u radu, koju ponovo srećemo u odjeljku 4. Trećina punog okreta oko dijagonale kružno premješta ose: nos, osa <var>x</var>, ide u
     <var>y</var> (<var>q</var> i <var>q̄</var> = j), <var>y</var> ide u <var>z</var>, a <var>z</var> u
     <var>x</var>.`,
   "cover.title1": `<span class="number">3</span> S³ i dvostruko natkrivanje`,
@@ -110,15 +110,16 @@ export const page = {
     Budući da je (−<var>q</var>) <var>v</var> (−<var>q̄</var>) = <var>q</var> <var>v</var> <var>q̄</var>, kvaternioni
     <var>q</var> i −<var>q</var> su jedna ista rotacija: svaka rotacija je par suprotnih tačaka sfere S³. To je
     <dfn id="def-double-cover">dvostruko natkrivanje</dfn>, i metoda na rotacijama mora ili zanemariti predznak ili
-    reći koji uzima. KLI ga uzima kakav je dat: kad je <var>p</var>·<var>r</var> &lt; 0, teče dužim putem, pa prvo
-    promijeni predznak od <var>r</var> tako da bude <var>p</var>·<var>r</var> ≥ 0.`,
+    reći koji uzima.`,
   "cover.p3":
     `Ugao <var>φ</var> između dva jedinična kvaterniona, cos <var>φ</var> = <var>p</var>·<var>r</var> =
     <var>p</var>₁<var>r</var>₁ + <var>p</var>₂<var>r</var>₂ + <var>p</var>₃<var>r</var>₃ +
     <var>p</var>₄<var>r</var>₄, mjeri njihovu udaljenost: rotacija od <var>p</var> do <var>r</var> okreće za
     2<var>φ</var>. Najkraći put po sferi je luk velikog kruga (presjeka sfere i ravni kroz njen centar), <dfn id="def-geodesic">geodezijska linija</dfn>.
     Između dvije rotacije postoje dva takva luka, do <var>r</var> i do −<var>r</var>; „najkraći put” bira onaj za
-    koji je <var>p</var>·<var>r</var> ≥ 0.`,
+    koji je <var>p</var>·<var>r</var> ≥ 0. <a href="#kli">KLI</a>, metoda iz rada (odjeljak 7), ne bira: kad je
+    <var>p</var>·<var>r</var> &lt; 0, teče dužim putem, pa prvo promijeni predznak od <var>r</var> tako da bude
+    <var>p</var>·<var>r</var> ≥ 0.`,
   "cover.caption1":
     `Lijevo: kružnica na S³ kroz 1 i osu <var>u</var>, luk od 1 do <var>q</var> i −<var>q</var> nasuprot. Desno:
     avion zaokrenut za <var>q</var> i za −<var>q</var>.`,
@@ -173,10 +174,13 @@ export const page = {
     je nos usmjeren, i <var>h</var>(<var>q</var>) = <var>h</var>(−<var>q</var>). Za primjer iz rada je
     <var>h</var>(<var>p</var>) = (−1, 0, 0) i <var>h</var>(<var>r</var>) = (0, 1, 0).`,
   "hopf.p4":
-    `Ono što ne može pokazati je valjanje oko nosa. Ovdje je valjanje <var>ρ</var> novi okret, izveden nakon okreta
-    <var>q</var> iz odjeljka 2, oko vlastitog nosa aviona: ista vrsta okreta kao nagib iz odjeljka 1, ali dodan
-    okretu zadanom osom i uglom, a ne jedan od tri Eulerova ugla. Okreni avion oko nosa klizačem ispod: krilo se
-    okreće, tačka ostaje. Svaka rotacija <var>q</var> (cos(<var>ρ</var>/2) + sin(<var>ρ</var>/2) i) ima istu sliku, pa iznad
+    `Ono što ne može pokazati je valjanje oko nosa. Ovdje je valjanje <var>ρ</var> novi okret dodan okretu <var>q</var>
+    iz odjeljka 2: ista vrsta okreta kao nagib iz odjeljka 1, ali ne jedan od tri Eulerova ugla. Okreni avion oko
+    nosa klizačem ispod: krilo se okreće, tačka ostaje. Zaokrenuta rotacija je <var>q</var> (cos(<var>ρ</var>/2) +
+    sin(<var>ρ</var>/2) i), i može se čitati na dva načina. Po pravilu iz odjeljka 2 (desni činilac okreće prvi),
+    ona se prvo valja oko ose <var>x</var> svijeta, gdje nos počinje, pa okreće za <var>q</var>. Ili se prvo okreće
+    za <var>q</var>, pa valja oko vlastitog nosa aviona, gdje god ga je <var>q</var> postavio. Oba čitanja daju istu
+    rotaciju. Svaka rotacija ovog oblika ima istu sliku, pa iznad
     svake tačke sfere S² leži cijela kružnica sfere S³, njeno <dfn id="def-fibre">vlakno</dfn>. Sfera vjerno
     prikazuje kamo su stvari usmjerene, a slijepa je za to kako su zaokrenute oko tog pravca.`,
   "hopf.caption1":
@@ -214,14 +218,15 @@ export const page = {
     <strong>Pusti od t = 0</strong>.`,
   "kuramoto.caption1":
     `Faze na svojoj kružnici, strelica je njihova prosječna tačka; pored je <var>R</var>(<var>t</var>) do kraja trake
-    vremena (<var>t</var> = 12, kasnije kad je <var>ε</var> iz odjeljka 7 manji), s označenim prikazanim trenutkom.`,
+    vremena (<var>t</var> = 12; kasnije ako se tolerancija <var>ε</var> iz odjeljka 7, tamo definisana, smanji), s označenim prikazanim trenutkom.`,
   "kuramoto.legend1": "Kuramotove faze",
   "kuramoto.p4": `<output id="phases-out">Pri t = 0.00, R = 0.049.</output>`,
   "kuramoto.p5":
     `Sabiranju uglova redoslijed nije bitan, pa se ovaj model zove <em>abelov</em>. Rotacijama jeste bitan: na S³
     proizvod kvaterniona nije komutativan. M. A. Lohe, koji je Kuramotov model uopštio s faza na matrice (2009),
     nazvao je takve modele <em>neabelovim</em> Kuramotovim modelima. Na S³ oscilatori su jedinični kvaternioni
-    <var>q<sub>i</sub></var> (jednačina 1 u radu je opšti oblik). Kad svaki privlači svakog, bez vlastite rotacije,
+    <var>q<sub>i</sub></var> (jednačina 1 u radu je opšti oblik modela, u kojem se svaki oscilator može i sam okretati, kao
+    <var>ω<sub>i</sub></var> iznad). Kad svaki privlači svakog, bez vlastite rotacije,
     svaki slijedi`,
   "kuramoto.p6":
     `<var>q<sub>i</sub></var>′ = (<var>K</var>/(2<var>N</var>)) Σ<sub><var>j</var></sub> (<var>q<sub>j</sub></var> −
@@ -232,8 +237,9 @@ export const page = {
     2(<var>q<sub>i</sub></var>·<var>q<sub>j</sub></var>)<var>q<sub>i</sub></var> − <var>q<sub>j</sub></var> (odjeljak
     7 koristi isti identitet), pa je svaki sabirak 2(<var>q<sub>j</sub></var> −
     (<var>q<sub>i</sub></var>·<var>q<sub>j</sub></var>) <var>q<sub>i</sub></var>): privlačenje prema svakom drugom
-    oscilatoru bez dijela duž <var>q<sub>i</sub></var>. Fiksiraj jednog od njih u rotaciji <var>r</var> i ostali se
-    usklade, a zatim se smire na njemu. S jednim sljedbenikom, <var>N</var> = 2, sljedbenik zadovoljava
+    oscilatoru bez dijela duž <var>q<sub>i</sub></var>. Fiksiraj jednog od njih u rotaciji <var>r</var>,
+    tako da se nikad ne pomjera: to je <dfn id="def-leader">vođa</dfn>, a ostali, <em>sljedbenici</em>, se usklade,
+    a zatim se smire na njemu. S jednim sljedbenikom, <var>N</var> = 2, sljedbenik zadovoljava
     <var>q</var>′ = (<var>K</var>/2)(<var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>): metoda iz rada, u
     sljedećem odjeljku. Koliko se slažu, mjeri se kao na kružnici: parametar reda na S³ je dužina <var>R</var> =
     |(1/<var>N</var>) Σ<sub><var>j</var></sub> <var>q<sub>j</sub></var>| srednje vrijednosti kvaterniona
@@ -277,12 +283,16 @@ export const page = {
     `<output id="kli-out">Pri t = 0.00, φ = 60.00°, s = 0.000: q = 0.000 + 0.000 i + 0.000 j + 1.000 k.</output>`,
   "kli.p5":
     `<strong>Iskrivljenje vremena.</strong> Neka je <var>φ</var>(<var>t</var>) ugao između <var>q</var>(<var>t</var>) i <var>r</var>.
-    Tada je <var>φ</var>′ = −sin <var>φ</var>, čije je rješenje tan(<var>φ</var>(<var>t</var>)/2) =
+    Tada je cos <var>φ</var> = <var>q</var>·<var>r</var>, a njegova brzina
+    promjene je <var>q</var>′·<var>r</var> = 1 − (<var>q</var>·<var>r</var>)² = sin²<var>φ</var>. Ona je također
+    −sin <var>φ</var> · <var>φ</var>′, pa je <var>φ</var>′ = −sin <var>φ</var>, čije je rješenje tan(<var>φ</var>(<var>t</var>)/2) =
     tan(<var>φ</var>₀/2) e<sup>−<var>t</var></sup>. Dakle, <var>q</var>(<var>t</var>) je tačka SLERP-a za
     <var>s</var>(<var>t</var>) = 1 − <var>φ</var>(<var>t</var>)/<var>φ</var>₀: tačno isti put kao SLERP, ali drugim
     tempom. Ovo <var>s</var>(<var>t</var>) je KLI-jevo <em>iskrivljenje vremena</em>: koliko je KLI odmakao duž
     SLERP-ovog luka u trenutku <var>t</var> (traka vremena postavlja <var>t</var>, a iskrivljenje je ono što tok od njega napravi).
-    Počinje brzinom sin <var>φ</var>₀ i eksponencijalno usporava kako stiže.`,
+    Njegova brzina je <var>s</var>′ = −<var>φ</var>′/<var>φ</var>₀ = sin <var>φ</var>/<var>φ</var>₀: počinje sa sin
+    <var>φ</var>₀/<var>φ</var>₀ (0.827 za <var>φ</var>₀ = 60°) i eksponencijalno usporava kako stiže. (Sam sin
+    <var>φ</var>₀ je brzina kvaterniona <var>q</var> po sferi na početku, |<var>q</var>′|.)`,
   "kli.caption2":
     `Iskrivljenje vremena <var>s</var>(<var>t</var>) za <span class="kli">KLI</span> naspram <span class="slerp">SLERP</span>-a izvedenog
     za isto vrijeme, <var>t</var>/<var>T</var>.`,
@@ -341,8 +351,11 @@ export const page = {
     id="def-rk4">RK4</dfn>, klasična Runge–Kutta metoda četvrtog reda, računa izvod četiri puta u jednom koraku i
     uzima njihov ponderisani prosjek; njena greška opada kao <var>h</var>⁴, a tako i njeno odstupanje od sfere.
     <strong>Geodezijski</strong> korak uzima prirast metode RK4 kao okret duž velikog kruga, pa je |<var>q</var>| =
-    1 po konstrukciji. Blizu <var>r</var> ovaj tok vraća zalutali |<var>q</var>| prema 1, pa ovdje odstupanje ne
-    raste unedogled; kod drugih tokova može.`,
+    1 po konstrukciji. Ovaj tok vraća zalutali |<var>q</var>| prema 1: za svako
+    <var>q</var>, d|<var>q</var>|²/d<var>t</var> = 2 <var>q</var>·<var>q</var>′ = 2(<var>q</var>·<var>r</var>)(1 −
+    |<var>q</var>|²), što smanjuje |<var>q</var>| kad je veći od 1 i povećava ga kad je manji, sve dok je
+    <var>q</var>·<var>r</var> &gt; 0 (na putu od <var>p</var> do <var>r</var> uvijek jeste). Zato ovdje odstupanje
+    ne raste unedogled; kod drugih tokova može.`,
   "integrators.caption1":
     `| |<var>q</var>| − 1 | na primjeru iz rada za svaki integrator s korakom <var>h</var>, na logaritamskoj skali
     (ono što je ispod 10⁻¹⁷ crta se na 10⁻¹⁷); izabrani je podebljan.`,
@@ -374,8 +387,8 @@ export const page = {
   "many.heading1": "Ključni kadrovi: gladak okret kroz mnogo položaja",
   "many.p2":
     `Animator postavi zglobove lika u nekoliko trenutaka, ključnim kadrovima, a računar popuni ostalo. SLERP od
-    ključa do ključa okreće ujednačeno na svakom dijelu, ali trzne na svakom ključu, gdje se osa i brzina naglo
-    promijene: skok ugaone brzine, vidljiv trzaj na ekranu i udar momenta za motor ili kardan. KLI lanac na stranici
+    ključa do ključa okreće ujednačeno na svakom dijelu, ali naglo skrene na svakom ključu, gdje se osa i
+    brzina naglo promijene: skok ugaone brzine, vidljiv skok na ekranu i udar momenta za motor ili kardan. KLI lanac na stranici
     <a href="keyframes.html">Mnogo rotacija</a> gusto uzorkuje cijelu krivu na S³ i fiksira uzorke u ključevima
     (fiksirani vođe, odjeljak 6); svaki drugi uzorak slijedi Kuramoto–Loheov tok, privlače ga susjedi, a odbijaju
     drugi susjedi, i smiri se na krivoj kroz ključeve čija se brzina okretanja mijenja glatko. (Između samo dva
@@ -392,10 +405,12 @@ export const page = {
     <var>q</var>). SLERP od ključa do ključa okreće se oko jedne stalne ose jednolikom brzinom na svakom dijelu: dio
     koji se okrene za <var>θ</var> za vrijeme Δ<var>t</var> ima |<var>ω</var>| = <var>θ</var>/Δ<var>t</var>. U
     ključu preuzima sljedeći dio s drugom osom i brzinom, pa <var>ω</var> skoči: ugaono ubrzanje <var>ω̇</var>, brzina
-    kojom se <var>ω</var> mijenja, tu je neograničeno. U animaciji je to vidljiv trzaj u ključnom kadru; za kameru,
-    podrhtavanje slike; za motor ili zglob robota, nagli skok momenta sile (moment je moment inercije puta ugaono
-    ubrzanje), koji opterećuje zupčanike i izaziva vibracije ruke robota. Klizač glatkoće postavlja KLI lanac od 0, što je
-    sam SLERP po dijelovima, do 1, najglađeg, gdje se <var>ω</var>, pa čak i <var>ω̇</var>, mijenjaju bez skoka.
+    kojom se <var>ω</var> mijenja, tu je neograničeno, impuls: udar. U animaciji je to vidljiv skok u ključnom kadru; za kameru,
+    podrhtavanje slike; za motor ili zglob robota, nagli skok momenta sile (oko nepomične ose, moment je moment
+    inercije puta ugaono ubrzanje; u tri dimenzije, τ = <var>I</var><var>ω̇</var> + <var>ω</var> ×
+    <var>I</var><var>ω</var>), koji opterećuje zupčanike i izaziva vibracije ruke robota. Klizač glatkoće postavlja KLI lanac od 0, što je
+    sam SLERP po dijelovima, do 1, najglađeg; pri svakoj glatkoći većoj od 0, <var>ω</var>, pa čak i <var>ω̇</var>, mijenjaju se bez
+    skoka.
     Ispod je brzina okretanja duž lanca kroz ista četiri ključa, od k0 pri <var>t</var> = 0 do k3 pri
     <var>t</var> = 3: to je vlastito vrijeme ključnih kadrova, a ne vrijeme na traci vremena.`,
   "many.caption1":
@@ -410,8 +425,13 @@ export const page = {
     `Svaka glatkoća veća od 0 već uklanja skokove: kriva lanca je tada klase C² (rotacija ima dva neprekidna
     izvoda, pa ni <var>ω</var> ni <var>ω̇</var> ne skaču), a <var>ω</var> se blizu ključa može samo brzo mijenjati,
     nikad odjednom. Mala glatkoća ima cijenu u velikom, iako konačnom, |<var>ω̇</var>|
-    blizu ključeva; pri 1 promjena je raspoređena duž cijele krive, koja se savija najmanje (najmanji
-    ∫|<var>ω̇</var>|² d<var>t</var>) od svih krivih kroz ključeve. Pomjeri klizač od 1 do 0.05 i prati kako
+    blizu ključeva; pri 1 promjena je raspoređena duž cijele krive. Ono što lanac tada čini najmanjim jeste
+    koliko se kriva savija u R⁴: njegovi uzorci minimiziraju zbir koji predstavlja ∫|<var>q</var>″|²
+    d<var>t</var>, gdje je <var>q</var>″ drugi izvod od <var>q</var>(<var>t</var>). Budući da je
+    |<var>q</var>″|² = |<var>ω̇</var>|²/4 + |<var>ω</var>|⁴/16, taj zbir odmjerava ugaono ubrzanje naspram
+    neravnomjerne brzine. Zato kriva pri 1 nije ona s najmanjim ∫|<var>ω̇</var>|² d<var>t</var> kroz ključeve,
+    iako je na nasumičnim ključevima njen ∫|<var>ω̇</var>|² oko 0.84 Squadovog (<a
+    href="math.html#many-rotations-the-kuramotolohe-chain-the-papers-open-question">stranica o matematici</a>). Pomjeri klizač od 1 do 0.05 i prati kako
     navedeni |<var>ω̇</var>| raste, pa do 0, gdje više nije ograničen.`,
   "many.question2":
     `Predvidi, pa provjeri: pri glatkoći 0 oba dijela koja se sastaju u k2 okrenu se za 122.6° (2.14 rad) za
@@ -421,17 +441,34 @@ export const page = {
     0</a> i pogledaj k2 na oba grafika.`,
   "many.p14":
     `<strong>Odgovor.</strong> Da, za 2.53 rad po jedinici vremena. Brzina okretanja je vektor: dužina mu ostaje
-    2.14, ali mu se osa u trenu zakrene za 72.6°, od (−0.41, 0.73, 0.55) do (0.73, 0.41, 0.55), a skok je dužina
+    2.14, ali mu se osa u trenu zakrene za 72.6°, od (−0.410, 0.730, 0.547) do (0.730, 0.410, 0.547), a skok je dužina
     razlike, 2 × 2.14 × sin(72.6°/2) = 2.53. Zato grafik od |<var>ω</var>| u k2 nema stepenicu, dok komponente
-    <var>x</var> i <var>y</var> vektora <var>ω</var> skaču (<var>z</var> ostaje 1.17). Za trzaj nije potrebna promjena brzine, dovoljna je
+    <var>x</var> i <var>y</var> vektora <var>ω</var> skaču (<var>z</var> ostaje 1.17). Za udar nije potrebna promjena brzine, dovoljna je
     promjena smjera: automobil koji bez kočenja uđe u oštru krivinu ipak baci putnike u stranu. Najveći skok je u
     k1, 2.92, gdje se mijenjaju i osa i brzina.`,
   "many.heading2": "Roj: sinhronizacija ili njena suprotnost",
   "many.p3":
-    `Dronovi koji se usaglašavaju o smjeru leta, sateliti o orijentaciji, jato koje skreće kao jedno: mnogo rotacija
-    spregnutih neabelovskim Kuramotovim (Loheovim) modelom iz odjeljka 6, bez vođe. Na stranici <a href="swarm.html">Roj</a>, <var>K</var> &gt;
-    0 ih usklađuje (<dfn id="def-sync">sinhronizacija</dfn>, parametar reda teži ka 1), a <var>K</var> &lt; 0 ih
-    razmiče.`,
+    `Dronovi koji se usaglašavaju o smjeru leta, sateliti o položaju (orijentaciji letjelice u prostoru), jato koje
+    skreće kao jedno: mnogo rotacija spregnutih neabelovskim Kuramotovim (Loheovim) modelom iz odjeljka 6, gdje
+    svaka privlači svaku, bez vođe. Na slici, sa stranice <a href="swarm.html">Roj</a>, svaka od 200 tačaka je jedna
+    rotacija, nacrtana Hopfovim preslikavanjem tamo kamo usmjerava nos. Na početku su nasumično raspršene po S³.
+    Sprezanje <var>K</var> određuje privlačenje. Za <var>K</var> &gt; 0 svaku privlače ostale: pri <var>K</var> = 1
+    skupe se u jednu tačku do <var>t</var> = 8 (<dfn id="def-sync">sinhronizacija</dfn>, parametar reda
+    <var>R</var> teži ka 1). Za <var>K</var> &lt; 0 privlačenje postaje odbijanje. Fiksiraj jednu od njih, vođu kao
+    u odjeljku 6, i ostale se skupe na njoj; s jednim sljedbenikom to je KLI. Stranica Roj može fiksirati vođe, a
+    KLI ima kao gotovu postavku.`,
+  "many.question3":
+    `Predvidi, pa provjeri: pri K = 1 tačke se skupe u jednu. Pri K = −1 svaka odbija ostale. Hoće li se razletjeti?`,
+  "many.p15":
+    `Pogodi, pa <button type="button" class="set-figure" data-figure="fig-swarm" data-attribute="coupling"
+    data-value="-1">postavi K = −1</button> i prati tačke.`,
+  "many.p16":
+    `<strong>Odgovor.</strong> Ne: jedva se pomjere, najdalja za okret od oko 5°. Za jednake oscilatore gdje
+    svaki privlači svakog tok povećava <var>K</var>|<var>m</var>|², gdje je <var>m</var> = (1/<var>N</var>)
+    Σ<sub><var>j</var></sub> <var>q<sub>j</sub></var> njihova srednja vrijednost, a <var>R</var> = |<var>m</var>|.
+    Odbijanje (<var>K</var> &lt; 0) smanjuje |<var>m</var>| na 0, što se zove <em>uravnoteženje</em>. Ali 200
+    nasumično raspršenih rotacija već ima srednju vrijednost blizu 0, <var>R</var> = 0.034 na početku, pa ih mali
+    pomak uravnoteži: <var>R</var> je 0.000 do <var>t</var> = 8. Razmaknute su već bile.`,
   "many.heading3": "Usrednjavanje: jedna rotacija iz mnogo zašumljenih",
   "many.p4":
     `Kamera robota mnogo puta mjeri svoju orijentaciju, svaki put malo pogrešno, a nekoliko puta jako pogrešno: to su
@@ -441,15 +478,17 @@ export const page = {
     Σ(<var>q</var>·<var>r<sub>j</sub></var>)² (neosjetljivo na predznak svakog mjerenja). <em>Tetivna</em> znači da
     se udaljenost mjeri pravo, između matrica rotacije, a ne po sferi: ‖<var>R<sub>q</sub></var> −
     <var>R<sub>j</sub></var>‖² = 8(1 − (<var>q</var>·<var>r<sub>j</sub></var>)²), isto za <var>r<sub>j</sub></var>
-    i −<var>r<sub>j</sub></var>, pa kratkoj tetivi odgovara velik skalarni proizvod. (Tetiva između samih
-    kvaterniona, 2 − 2 <var>q</var>·<var>r<sub>j</sub></var>, daje kvaternionsku sredinu, koja zavisi od
-    predznaka.) <dfn id="def-karcher">Karcherova sredina</dfn> umjesto toga minimizira zbir
-    kvadrata uglova okreta do mjerenja. Izuzeci povlače obje sredine; medijan, na stranici <a
-    href="average.html">Usrednjavanje</a>, mnogo manje. Pomjeri udio izuzetaka. Na slici je svaka tačka mjesto kamo
+    i −<var>r<sub>j</sub></var>, pa kratkoj tetivi odgovara velik skalarni proizvod. (Kvadrat tetive između samih
+    kvaterniona, |<var>q</var> − <var>r<sub>j</sub></var>|² = 2 − 2 <var>q</var>·<var>r<sub>j</sub></var>, daje
+    umjesto toga <em>kvaternionsku sredinu</em>: četiri broja mjerenja usrednjena, pa podijeljena dužinom. Ona zavisi
+    od predznaka, pa se mjerenja prvo sva stave na istu stranu S³.) <dfn id="def-karcher">Karcherova sredina</dfn> umjesto toga minimizira zbir
+    kvadrata uglova okreta do mjerenja. Izuzeci povlače obje sredine. <dfn
+    id="def-median">Medijan</dfn>, rotacija s najmanjim zbirom uglova (ne kvadrata) do mjerenja, izuzeci povlače mnogo manje:
+    izuzetak
+    ga ne vuče jače od bliskog mjerenja. Stranica <a href="average.html">Usrednjavanje</a> računa sve četiri. Pomjeri udio izuzetaka. Na slici je svaka tačka mjesto kamo
     mjerenje usmjerava nos, njegova Hopfova slika <var>h</var>(<var>r<sub>j</sub></var>); izuzeci imaju svoju boju i
     dobiju prsten kad ih medijan izdvoji. ★ je istina, ● sljedbenik na putu od 1. Četiri sredine su bijeli krugovi
-    s prstenom u svojoj boji: tetivna sredina narandžasto, kvaternionska sredina zeleno (četiri broja usrednjena, svi
-    na istoj strani S³, pa podijeljena dužinom), Karcherova (geodezijska) sredina ljubičasto, medijan plavo.
+    s prstenom u svojoj boji: tetivna sredina narandžasto, kvaternionska sredina zeleno, Karcherova (geodezijska) sredina ljubičasto, medijan plavo.
     (Legenda slike imenuje svaku; stranica <a href="average.html">Usrednjavanje</a> ih prikazuje uz stupce istih
     boja.)`,
   "many.heading4": "Sinhronizacija rotacija na grafu",
@@ -469,7 +508,8 @@ export const page = {
     (Ako provjera ne uspije, ništa nije dokazano ni u jednom smjeru.) Pogrešne grane, izuzeci grafa, pronalaze se i
     izdvajaju.`,
   "many.p7":
-    `Na slici je <var>f</var> ispisan na vrhu dok ga tok smanjuje. Svaka grana je obojena prema tome koliko se njeno
+    `Na slici je <var>f</var> ispisan na vrhu dok ga tok smanjuje: model iz rada pokrenut na grafu, gdje svaki
+    čvor privlači mjesto na kojem bi, prema svakoj njegovoj grani, trebao biti. Svaka grana je obojena prema tome koliko se njeno
     mjerenje razlikuje od trenutnog rješenja: plavo ispod 2°, tirkizno 2–5°, zeleno 5–15°, narandžasto 15–45°,
     crveno 45° ili više; pogrešna grana je isprekidana. Svaki čvor nosi iglu: svoju grešku (okret od svoje prave
     rotacije do rotacije iz rješenja, nakon jednog zajedničkog okreta koji cijelo rješenje najbolje poravna s
@@ -492,7 +532,8 @@ export const page = {
   "glossary.term28": "ugaona brzina (brzina okretanja)",
   "glossary.definition28":
     `<var>ω</var>, vektor duž ose oko koje se rotacija okreće, čija je dužina brzina u radijanima po jedinici
-    vremena; <var>q</var>′ = ½ <var>ω</var> <var>q</var>. Skok u njoj je trzaj. <a href="#def-omega">Odjeljak 9</a>`,
+    vremena; <var>q</var>′ = ½ <var>ω</var> <var>q</var>. Skok u njoj je neograničeno ugaono ubrzanje,
+    impuls: udar. <a href="#def-omega">Odjeljak 9</a>`,
   "glossary.term2": "certifikat",
   "glossary.definition2":
     `Provjera da je izračunato rješenje najbolje od svih, a ne samo lokalno. <a href="#def-certificate">Odjeljak 9</a>`,

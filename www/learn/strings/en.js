@@ -96,8 +96,8 @@ export const page = {
     data-state='{"axis":"diagonal","angle":120}'>set 120° about the diagonal</a>.`,
   "turn.p7":
     `<strong>Answer.</strong> cos 60° = 0.5, sin 60° = 0.866, and each part of the axis is 1/√3 = 0.577, so each
-    of i, j, k gets 0.866 × 0.577 = 0.5: <var>q</var> = 0.5 + 0.5 i + 0.5 j + 0.5 k, the paper's <var>r</var>
-    (section 7). A third of a full turn about the diagonal takes the axes round in a cycle: the nose, the
+    of i, j, k gets 0.866 × 0.577 = 0.5: <var>q</var> = 0.5 + 0.5 i + 0.5 j + 0.5 k, the rotation <var>r</var>
+    of the paper's example, which we meet again in section 4. A third of a full turn about the diagonal takes the axes round in a cycle: the nose, the
     <var>x</var> axis, goes to <var>y</var> (<var>q</var> i <var>q̄</var> = j), <var>y</var> goes to <var>z</var>
     and <var>z</var> to <var>x</var>.`,
   "cover.title1": `<span class="number">3</span> S³ and the double cover`,
@@ -112,8 +112,7 @@ export const page = {
     Since (−<var>q</var>) <var>v</var> (−<var>q̄</var>) = <var>q</var> <var>v</var> <var>q̄</var>, the quaternions
     <var>q</var> and −<var>q</var> are one rotation: every rotation is a pair of opposite points of S³. This is the
     <dfn id="def-double-cover">double cover</dfn>, and a method on rotations must either ignore the sign or say which
-    one it takes. KLI takes it as given: from <var>p</var>·<var>r</var> &lt; 0 it flows the long way round, so first
-    flip <var>r</var> to make <var>p</var>·<var>r</var> ≥ 0.`,
+    one it takes.`,
   "cover.p3":
     `The angle <var>φ</var> between two unit quaternions, cos <var>φ</var> = <var>p</var>·<var>r</var> =
     <var>p</var>₁<var>r</var>₁ + <var>p</var>₂<var>r</var>₂ + <var>p</var>₃<var>r</var>₃ +
@@ -121,7 +120,9 @@ export const page = {
     2<var>φ</var>. The shortest way along the sphere is an arc of a great circle (where the sphere meets a plane through its
     centre), a <dfn
     id="def-geodesic">geodesic</dfn>. Between two rotations there are two such arcs, to <var>r</var> and to
-    −<var>r</var>; “the shortest path” takes the one with <var>p</var>·<var>r</var> ≥ 0.`,
+    −<var>r</var>; “the shortest path” takes the one with <var>p</var>·<var>r</var> ≥ 0. <a href="#kli">KLI</a>, the paper's
+    method (section 7), does not choose: from <var>p</var>·<var>r</var> &lt; 0 it flows the long way round, so first
+    flip <var>r</var> to make <var>p</var>·<var>r</var> ≥ 0.`,
   "cover.caption1":
     `Left: the circle of S³ through 1 and the axis <var>u</var>, the arc from 1 to <var>q</var>, and −<var>q</var>
     opposite. Right: the aircraft turned by <var>q</var> and by −<var>q</var>.`,
@@ -176,10 +177,13 @@ export const page = {
     on S² is where the nose points, and <var>h</var>(<var>q</var>) = <var>h</var>(−<var>q</var>). For the paper's
     example, <var>h</var>(<var>p</var>) = (−1, 0, 0) and <var>h</var>(<var>r</var>) = (0, 1, 0).`,
   "hopf.p4":
-    `What it cannot show is a roll about the nose. Here the roll <var>ρ</var> is a new turn, made after section 2's
-    turn <var>q</var>, about the aircraft's own nose: the same kind of turn as section 1's bank, but added to the
-    axis-and-angle turn, not one of three Euler angles. Roll the aircraft below: the wing goes round, the dot stays.
-    Every rotation <var>q</var> (cos(<var>ρ</var>/2) + sin(<var>ρ</var>/2) i) has the same image, so above each
+    `What it cannot show is a roll about the nose. Here the roll <var>ρ</var> is a new turn added to section 2's turn
+    <var>q</var>: the same kind of turn as section 1's bank, but not one of three Euler angles. Roll the aircraft
+    below: the wing goes round, the dot stays. The rolled rotation is <var>q</var> (cos(<var>ρ</var>/2) +
+    sin(<var>ρ</var>/2) i), and it reads two ways. By section 2's rule (the right-hand factor turns first), it rolls
+    about the world's <var>x</var> axis, where the nose starts, and then turns by <var>q</var>. Or it turns by
+    <var>q</var> first and then rolls about the aircraft's own nose, wherever <var>q</var> has put it. The two give
+    the same rotation. Every rotation of this form has the same image, so above each
     point of S² lies a whole circle of S³, its <dfn id="def-fibre">fibre</dfn>. The sphere is a faithful picture of
     where things point, and blind to how they are turned about that direction.`,
   "hopf.caption1":
@@ -217,14 +221,15 @@ export const page = {
     from t = 0</strong>.`,
   "kuramoto.caption1":
     `The phases on their circle, the arrow their average point; beside it <var>R</var>(<var>t</var>) up to the
-    end of the time bar (<var>t</var> = 12, later when section 7's <var>ε</var> is smaller), the time on show marked.`,
+    end of the time bar (<var>t</var> = 12; later if section 7's tolerance <var>ε</var>, defined there, is made smaller), the time on show marked.`,
   "kuramoto.legend1": "Kuramoto phases",
   "kuramoto.p4": `<output id="phases-out">At t = 0.00, R = 0.049.</output>`,
   "kuramoto.p5":
     `Adding angles does not care about order, so this model is called <em>abelian</em>. Rotations do care: on S³ the
     product of quaternions is not commutative. M. A. Lohe, who generalised Kuramoto's model from phases to matrices
     (2009), named such models <em>non-abelian</em> Kuramoto models. On S³ the oscillators are unit quaternions
-    <var>q<sub>i</sub></var> (the paper's eq. 1 is the general form). All pulled by all, with no natural rotation of
+    <var>q<sub>i</sub></var> (the paper's eq. 1 is the model's general form, which also lets each oscillator turn on its own, like the
+    <var>ω<sub>i</sub></var> above). All pulled by all, with no natural rotation of
     their own, each follows`,
   "kuramoto.p6":
     `<var>q<sub>i</sub></var>′ = (<var>K</var>/(2<var>N</var>)) Σ<sub><var>j</var></sub> (<var>q<sub>j</sub></var> −
@@ -235,8 +240,9 @@ export const page = {
     2(<var>q<sub>i</sub></var>·<var>q<sub>j</sub></var>)<var>q<sub>i</sub></var> − <var>q<sub>j</sub></var> (section
     7 uses the same identity), so each term is 2(<var>q<sub>j</sub></var> −
     (<var>q<sub>i</sub></var>·<var>q<sub>j</sub></var>) <var>q<sub>i</sub></var>): a pull towards each other
-    oscillator with the part along <var>q<sub>i</sub></var> taken away. Pin one of them at a rotation <var>r</var>
-    and the rest fall into step and then settle on it. With one follower, <var>N</var> = 2, the follower obeys
+    oscillator with the part along <var>q<sub>i</sub></var> taken away. Pin one of them at a rotation <var>r</var>,
+    so that it never moves: it is the <dfn id="def-leader">leader</dfn>, and the others, the <em>followers</em>,
+    fall into step and then settle on it. With one follower, <var>N</var> = 2, the follower obeys
     <var>q</var>′ = (<var>K</var>/2)(<var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>): the paper's method,
     next. How much they agree is measured as on the circle: the order parameter on S³ is the length <var>R</var> =
     |(1/<var>N</var>) Σ<sub><var>j</var></sub> <var>q<sub>j</sub></var>| of the mean of the <var>q<sub>j</sub></var>
@@ -278,11 +284,15 @@ export const page = {
     `<output id="kli-out">At t = 0.00, φ = 60.00°, s = 0.000: q = 0.000 + 0.000 i + 0.000 j + 1.000 k.</output>`,
   "kli.p5":
     `<strong>The time warp.</strong> Call <var>φ</var>(<var>t</var>) the angle between <var>q</var>(<var>t</var>) and
-    <var>r</var>. Then <var>φ</var>′ = −sin <var>φ</var>, whose solution is tan(<var>φ</var>(<var>t</var>)/2) =
+    <var>r</var>. Then cos <var>φ</var> = <var>q</var>·<var>r</var>, and its rate of change is
+    <var>q</var>′·<var>r</var> = 1 − (<var>q</var>·<var>r</var>)² = sin²<var>φ</var>. It is also −sin <var>φ</var>
+    · <var>φ</var>′, so <var>φ</var>′ = −sin <var>φ</var>, whose solution is tan(<var>φ</var>(<var>t</var>)/2) =
     tan(<var>φ</var>₀/2) e<sup>−<var>t</var></sup>. So <var>q</var>(<var>t</var>) is SLERP's point at
     <var>s</var>(<var>t</var>) = 1 − <var>φ</var>(<var>t</var>)/<var>φ</var>₀: the same path as SLERP, exactly, at
     another pace. This <var>s</var>(<var>t</var>) is KLI's <em>time warp</em>, how far along SLERP's arc it is at
-    time <var>t</var> (the time bar sets <var>t</var>; the warp is what the flow makes of it). It starts at speed sin <var>φ</var>₀ and slows down exponentially as it arrives.`,
+    time <var>t</var> (the time bar sets <var>t</var>; the warp is what the flow makes of it). Its speed is <var>s</var>′ = −<var>φ</var>′/<var>φ</var>₀ = sin <var>φ</var>/<var>φ</var>₀: it starts at sin
+    <var>φ</var>₀/<var>φ</var>₀ (0.827 for <var>φ</var>₀ = 60°) and slows down exponentially as it arrives. (sin
+    <var>φ</var>₀ itself is the speed of <var>q</var> on the sphere at the start, |<var>q</var>′|.)`,
   "kli.caption2":
     `<span class="kli">KLI</span>'s time warp <var>s</var>(<var>t</var>) against <span class="slerp">SLERP</span> run over the
     same time, <var>t</var>/<var>T</var>.`,
@@ -340,7 +350,10 @@ export const page = {
     <var>q</var>. <dfn id="def-rk4">RK4</dfn>, the classical fourth-order Runge–Kutta method, samples the slope four
     times in a step and averages them; its error shrinks like <var>h</var>⁴, and so does its drift off the sphere.
     The <strong>geodesic</strong> step takes RK4's increment as a turn along the great circle, so |<var>q</var>| = 1
-    by construction. Near <var>r</var> this flow pulls a stray |<var>q</var>| back towards 1, so here the drift does
+    by construction. This flow pulls a stray |<var>q</var>| back towards 1: for any
+    <var>q</var>, d|<var>q</var>|²/d<var>t</var> = 2 <var>q</var>·<var>q</var>′ = 2(<var>q</var>·<var>r</var>)(1 −
+    |<var>q</var>|²), which shrinks |<var>q</var>| when it is above 1 and grows it when below, as long as
+    <var>q</var>·<var>r</var> &gt; 0 (on the way from <var>p</var> to <var>r</var>, always). So here the drift does
     not grow for ever; in other flows it can.`,
   "integrators.caption1":
     `| |<var>q</var>| − 1 | on the paper's example for each integrator at step <var>h</var>, on a log scale (what is
@@ -373,7 +386,7 @@ export const page = {
   "many.heading1": "Keyframes: a smooth turn through many",
   "many.p2":
     `An animator sets a character's joints at a few moments, the keyframes, and the computer fills in the rest. SLERP
-    from key to key turns at a steady rate on each piece but jerks at every key, where the axis and speed change at
+    from key to key turns at a steady rate on each piece but snaps round at every key, where the axis and speed change at
     once: a jump in angular velocity, a visible snap on screen and a kick of torque for a motor or a gimbal. The KLI
     chain on <a href="keyframes.html">Many rotations</a> samples the whole curve densely on S³ and pins the samples at
     the keys (pinned leaders, section 6); every other sample follows a Kuramoto–Lohe flow, drawn by its neighbours and
@@ -391,11 +404,11 @@ export const page = {
     key to key turns about one fixed axis at one steady rate on each piece: a piece that turns by <var>θ</var> in a
     time Δ<var>t</var> has |<var>ω</var>| = <var>θ</var>/Δ<var>t</var>. At a key the next piece takes over with
     another axis and rate, so <var>ω</var> jumps: the angular acceleration <var>ω̇</var>, the rate at which
-    <var>ω</var> changes, is unbounded there. In an animation that is a visible jerk at the keyframe; for a camera, a shake in the picture;
-    for a motor or a robot's joint, a spike of torque (torque is the moment of inertia times the angular
-    acceleration), which strains the gears and sets the arm vibrating. The smoothness slider sets the KLI chain
-    from 0, piecewise SLERP itself, to 1, its smoothest, where <var>ω</var> and even <var>ω̇</var> change without a
-    jump. Below, the turning rate along the chain through the same four keys, k0 at <var>t</var> = 0 to k3 at
+    <var>ω</var> changes, is unbounded there, an impulse: a kick. In an animation that is a visible snap at the keyframe; for a camera, a shake in the picture;
+    for a motor or a robot's joint, a spike of torque (about a fixed axis, torque is the moment of inertia times the angular
+    acceleration; in three dimensions, τ = <var>I</var><var>ω̇</var> + <var>ω</var> × <var>I</var><var>ω</var>), which strains the gears and sets the arm vibrating. The smoothness slider sets the KLI chain
+    from 0, piecewise SLERP itself, to 1, its smoothest; at any smoothness above 0, <var>ω</var> and even <var>ω̇</var> change
+    without a jump. Below, the turning rate along the chain through the same four keys, k0 at <var>t</var> = 0 to k3 at
     <var>t</var> = 3: the keyframes' own time, not the time bar's.`,
   "many.caption1":
     `Left (above, on a narrow screen): |<var>ω</var>(<var>t</var>)| of the <span class="kli">KLI chain</span> at the
@@ -409,8 +422,13 @@ export const page = {
     `Any smoothness above 0 already takes the jumps away: the chain's curve is then C² (the rotation has two
     continuous derivatives, so neither <var>ω</var> nor <var>ω̇</var> jumps), and <var>ω</var> can only change
     quickly near a key, never at once. What a small smoothness costs is a large, though finite,
-    |<var>ω̇</var>| near the keys; at 1 the change is spread along the whole curve, which bends least (the smallest
-    ∫|<var>ω̇</var>|² d<var>t</var>) of all curves through the keys. Slide from 1 down to 0.05 and watch the
+    |<var>ω̇</var>| near the keys; at 1 the change is spread along the whole curve. What the chain makes smallest there is how
+    much the curve bends in R⁴: its samples minimise a sum that stands for ∫|<var>q</var>″|² d<var>t</var>, where
+    <var>q</var>″ is the second derivative of <var>q</var>(<var>t</var>). Since |<var>q</var>″|² =
+    |<var>ω̇</var>|²/4 + |<var>ω</var>|⁴/16, that sum trades angular acceleration against uneven speed. So the
+    curve at 1 is not the one with the least ∫|<var>ω̇</var>|² d<var>t</var> through the keys, though on random keys
+    its ∫|<var>ω̇</var>|² is about 0.84 of Squad's (<a
+    href="math.html#many-rotations-the-kuramotolohe-chain-the-papers-open-question">the mathematics page</a>). Slide from 1 down to 0.05 and watch the
     quoted |<var>ω̇</var>| grow, then to 0, where it has no bound at all.`,
   "many.question2":
     `Predict, then check: at smoothness 0, both pieces that meet at k2 turn by 122.6° (2.14 rad) in one unit of
@@ -420,17 +438,35 @@ export const page = {
     0</a> and look at k2 in both plots.`,
   "many.p14":
     `<strong>Answer.</strong> Yes, by 2.53 rad per unit time. The turning rate is a vector: its length stays 2.14,
-    but its axis swings in an instant through 72.6°, from (−0.41, 0.73, 0.55) to (0.73, 0.41, 0.55), and the jump
+    but its axis swings in an instant through 72.6°, from (−0.410, 0.730, 0.547) to (0.730, 0.410, 0.547), and the jump
     is the length of the difference, 2 × 2.14 × sin(72.6°/2) = 2.53. So the plot of |<var>ω</var>| has no step at k2,
     while the <var>x</var> and <var>y</var> parts of <var>ω</var> step (<var>z</var> stays at 1.17). A jolt needs no change of
     speed, only of direction: a car that takes a sharp corner without braking still throws its passengers sideways.
     The largest jump is at k1, 2.92, where the axis and the rate both change.`,
   "many.heading2": "The swarm: synchronisation, or its opposite",
   "many.p3":
-    `Drones agreeing on a heading, satellites on an attitude, a flock turning as one: many rotations coupled by the
-    non-abelian Kuramoto (Lohe) model of section 6, with no leader. On <a href="swarm.html">The swarm</a>, <var>K</var> &gt; 0 draws them
-    into step (<dfn id="def-sync">synchronisation</dfn>, the order parameter going to 1) and <var>K</var> &lt; 0
-    spreads them apart.`,
+    `Drones agreeing on a heading, satellites on an attitude (a craft's orientation in space), a flock turning as
+    one: many rotations coupled by the non-abelian Kuramoto (Lohe) model of section 6, all pulled by all, with no
+    leader. In the figure, from <a href="swarm.html">The swarm</a>, each of the 200 dots is one rotation, drawn by
+    the Hopf map where it points the nose. They start scattered at random over S³. The coupling <var>K</var> sets the
+    pull. With <var>K</var> &gt; 0 each is drawn towards the others: at <var>K</var> = 1 they gather into a single
+    dot by <var>t</var> = 8 (<dfn id="def-sync">synchronisation</dfn>, the order parameter <var>R</var> going to 1).
+    With <var>K</var> &lt; 0 the pull becomes a push. Pin one of them, a leader as in section 6, and the rest
+    gather on it instead; with a single follower, that is KLI. The swarm page can pin leaders, and has KLI as a
+    preset.`,
+  "many.question3":
+    `Predict, then check: at K = 1 the dots gather into one. At K = −1 each pushes the others away. Do they fly
+    apart?`,
+  "many.p15":
+    `Guess, then <button type="button" class="set-figure" data-figure="fig-swarm" data-attribute="coupling"
+    data-value="-1">set K = −1</button> and watch the dots.`,
+  "many.p16":
+    `<strong>Answer.</strong> No: they hardly move, the farthest by a turn of about 5°. For identical oscillators all pulled
+    by all, the flow raises <var>K</var>|<var>m</var>|², where <var>m</var> = (1/<var>N</var>)
+    Σ<sub><var>j</var></sub> <var>q<sub>j</sub></var> is their mean and <var>R</var> = |<var>m</var>|. A push
+    (<var>K</var> &lt; 0) lowers |<var>m</var>| to 0, which is called <em>balancing</em>. But 200 rotations
+    scattered at random already have a mean near 0, <var>R</var> = 0.034 at the start, so a small nudge balances
+    them: <var>R</var> is 0.000 by <var>t</var> = 8. Apart is where they already were.`,
   "many.heading3": "Averaging: one rotation from many noisy ones",
   "many.p4":
     `A robot's camera measures its orientation many times, each a little off, and a few badly off: those are <dfn
@@ -440,15 +476,17 @@ export const page = {
     Σ(<var>q</var>·<var>r<sub>j</sub></var>)² (blind to each sign). <em>Chordal</em> means that distance is measured
     straight through, between the rotation matrices, not along the sphere: ‖<var>R<sub>q</sub></var> −
     <var>R<sub>j</sub></var>‖² = 8(1 − (<var>q</var>·<var>r<sub>j</sub></var>)²), the same for <var>r<sub>j</sub></var>
-    and −<var>r<sub>j</sub></var>, so a short chord is a large dot product. (The chord between the quaternions
-    themselves, 2 − 2 <var>q</var>·<var>r<sub>j</sub></var>, gives the quaternion mean, which depends on the
-    signs.) The <dfn id="def-karcher">Karcher mean</dfn> instead minimises the sum of squared turning angles to the
-    measurements. Both are dragged by outliers; the median, on <a href="average.html">Averaging</a>, much less. Move
+    and −<var>r<sub>j</sub></var>, so a short chord is a large dot product. (The squared chord between the quaternions
+    themselves, |<var>q</var> − <var>r<sub>j</sub></var>|² = 2 − 2 <var>q</var>·<var>r<sub>j</sub></var>, gives
+    instead the <em>quaternion mean</em>: the four numbers of the measurements averaged, then divided by the length.
+    It depends on the signs, so they are first put all on one side of S³.) The <dfn id="def-karcher">Karcher mean</dfn> instead minimises the sum of squared turning angles to the
+    measurements. Both are dragged by outliers. The <dfn id="def-median">median</dfn>, the rotation with the least
+    summed angle (not squared) to the measurements, is dragged much less: a wild one pulls on it no harder than a near one. <a
+    href="average.html">Averaging</a> computes all four. Move
     the share of wild measurements. In the figure each dot is where a measurement points the nose, its Hopf image
     <var>h</var>(<var>r<sub>j</sub></var>); the wild ones have a colour of their own and are ringed once the median
     has set them aside. ★ is the truth, ● the follower on its way from 1. The four means are white discs ringed in
-    their colour: the chordal mean orange, the quaternion mean green (the four numbers averaged, all on one side of
-    S³, then divided by the length), the Karcher (geodesic) mean purple, the median blue. (The figure's key names
+    their colour: the chordal mean orange, the quaternion mean green, the Karcher (geodesic) mean purple, the median blue. (The figure's key names
     each; the <a href="average.html">Averaging</a> page sets them beside bars of the same colours.)`,
   "many.heading4": "Synchronising rotations on a graph",
   "many.p5":
@@ -466,7 +504,8 @@ export const page = {
     at all has a smaller <var>f</var>, so the answer is the best there is, not just the best nearby. (If the test
     fails, nothing is proved either way.) Wrong edges, the graph's outliers, are found and set aside.`,
   "many.p7":
-    `In the figure, <var>f</var> is printed at the top as the flow lowers it. Each edge is coloured by how far its
+    `In the figure, <var>f</var> is printed at the top as the flow lowers it: the paper's model run on the graph,
+    each node pulled towards where each of its edges says it should be. Each edge is coloured by how far its
     measurement disagrees with the current answer: blue under 2°, teal 2–5°, green 5–15°, orange 15–45°, red 45° or
     more; a wrong edge is dashed. Each node carries a needle: its error (the turn from its true rotation to the
     answer's, after the one common turn that best lines the whole answer up with the truth) applied to the body's
@@ -488,7 +527,8 @@ export const page = {
   "glossary.term28": "angular velocity (turning rate)",
   "glossary.definition28":
     `<var>ω</var>, the vector along the axis a rotation is turning about, its length the rate in radians per unit
-    time; <var>q</var>′ = ½ <var>ω</var> <var>q</var>. A jump in it is a jerk. <a href="#def-omega">Section 9</a>`,
+    time; <var>q</var>′ = ½ <var>ω</var> <var>q</var>. A jump in it is an unbounded angular acceleration, an
+    impulse: a kick. <a href="#def-omega">Section 9</a>`,
   "glossary.term2": "certificate",
   "glossary.definition2":
     `A check that a computed answer is the best of all, not just locally. <a href="#def-certificate">Section 9</a>`,
