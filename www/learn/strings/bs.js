@@ -291,8 +291,8 @@ export const page = {
     tempom. Ovo <var>s</var>(<var>t</var>) je KLI-jevo <em>iskrivljenje vremena</em>: koliko je KLI odmakao duž
     SLERP-ovog luka u trenutku <var>t</var> (traka vremena postavlja <var>t</var>, a iskrivljenje je ono što tok od njega napravi).
     Njegova brzina je <var>s</var>′ = −<var>φ</var>′/<var>φ</var>₀ = sin <var>φ</var>/<var>φ</var>₀: počinje sa sin
-    <var>φ</var>₀/<var>φ</var>₀ (0.827 za <var>φ</var>₀ = 60°) i eksponencijalno usporava kako stiže. (Sam sin
-    <var>φ</var>₀ je brzina kvaterniona <var>q</var> po sferi na početku, |<var>q</var>′|.)`,
+    <var>φ</var>₀/<var>φ</var>₀ (0.827 za <var>φ</var>₀ = 60°) i eksponencijalno usporava kako stiže. (Brzina
+    samog kvaterniona <var>q</var> po sferi na početku, |<var>q</var>′|, jednaka je sin <var>φ</var>₀.)`,
   "kli.caption2":
     `Iskrivljenje vremena <var>s</var>(<var>t</var>) za <span class="kli">KLI</span> naspram <span class="slerp">SLERP</span>-a izvedenog
     za isto vrijeme, <var>t</var>/<var>T</var>.`,

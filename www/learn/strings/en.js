@@ -291,8 +291,8 @@ export const page = {
     <var>s</var>(<var>t</var>) = 1 − <var>φ</var>(<var>t</var>)/<var>φ</var>₀: the same path as SLERP, exactly, at
     another pace. This <var>s</var>(<var>t</var>) is KLI's <em>time warp</em>, how far along SLERP's arc it is at
     time <var>t</var> (the time bar sets <var>t</var>; the warp is what the flow makes of it). Its speed is <var>s</var>′ = −<var>φ</var>′/<var>φ</var>₀ = sin <var>φ</var>/<var>φ</var>₀: it starts at sin
-    <var>φ</var>₀/<var>φ</var>₀ (0.827 for <var>φ</var>₀ = 60°) and slows down exponentially as it arrives. (sin
-    <var>φ</var>₀ itself is the speed of <var>q</var> on the sphere at the start, |<var>q</var>′|.)`,
+    <var>φ</var>₀/<var>φ</var>₀ (0.827 for <var>φ</var>₀ = 60°) and slows down exponentially as it arrives. (The speed
+    of <var>q</var> itself on the sphere at the start, |<var>q</var>′|, is sin <var>φ</var>₀.)`,
   "kli.caption2":
     `<span class="kli">KLI</span>'s time warp <var>s</var>(<var>t</var>) against <span class="slerp">SLERP</span> run over the
     same time, <var>t</var>/<var>T</var>.`,
