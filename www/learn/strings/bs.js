@@ -178,8 +178,8 @@ export const page = {
     iz odjeljka 2: ista vrsta okreta kao nagib iz odjeljka 1, ali ne jedan od tri Eulerova ugla. Okreni avion oko
     nosa klizačem ispod: krilo se okreće, tačka ostaje. Zaokrenuta rotacija je <var>q</var> (cos(<var>ρ</var>/2) +
     sin(<var>ρ</var>/2) i), i može se čitati na dva načina. Po pravilu iz odjeljka 2 (desni činilac okreće prvi),
-    ona se prvo valja oko ose <var>x</var> svijeta, gdje nos počinje, pa okreće za <var>q</var>. Ili se prvo okreće
-    za <var>q</var>, pa valja oko vlastitog nosa aviona, gdje god ga je <var>q</var> postavio. Oba čitanja daju istu
+    ona se prvo valja oko ose <var>x</var> svijeta, gdje nos počinje, pa se okreće za <var>q</var>. Ili se prvo okreće
+    za <var>q</var>, pa se valja oko vlastitog nosa aviona, gdje god ga je <var>q</var> postavio. Oba čitanja daju istu
     rotaciju. Svaka rotacija ovog oblika ima istu sliku, pa iznad
     svake tačke sfere S² leži cijela kružnica sfere S³, njeno <dfn id="def-fibre">vlakno</dfn>. Sfera vjerno
     prikazuje kamo su stvari usmjerene, a slijepa je za to kako su zaokrenute oko tog pravca.`,
@@ -463,8 +463,8 @@ export const page = {
     `Pogodi, pa <button type="button" class="set-figure" data-figure="fig-swarm" data-attribute="coupling"
     data-value="-1">postavi K = −1</button> i prati tačke.`,
   "many.p16":
-    `<strong>Odgovor.</strong> Ne: jedva se pomjere, najdalja za okret od oko 5°. Za jednake oscilatore gdje
-    svaki privlači svakog tok povećava <var>K</var>|<var>m</var>|², gdje je <var>m</var> = (1/<var>N</var>)
+    `<strong>Odgovor.</strong> Ne: jedva se pomjere, najdalja za okret od oko 5°. Za jednake oscilatore, gdje
+    svaki privlači svakog, tok povećava <var>K</var>|<var>m</var>|², gdje je <var>m</var> = (1/<var>N</var>)
     Σ<sub><var>j</var></sub> <var>q<sub>j</sub></var> njihova srednja vrijednost, a <var>R</var> = |<var>m</var>|.
     Odbijanje (<var>K</var> &lt; 0) smanjuje |<var>m</var>| na 0, što se zove <em>uravnoteženje</em>. Ali 200
     nasumično raspršenih rotacija već ima srednju vrijednost blizu 0, <var>R</var> = 0.034 na početku, pa ih mali
@@ -483,9 +483,8 @@ export const page = {
     umjesto toga <em>kvaternionsku sredinu</em>: četiri broja mjerenja usrednjena, pa podijeljena dužinom. Ona zavisi
     od predznaka, pa se mjerenja prvo sva stave na istu stranu S³.) <dfn id="def-karcher">Karcherova sredina</dfn> umjesto toga minimizira zbir
     kvadrata uglova okreta do mjerenja. Izuzeci povlače obje sredine. <dfn
-    id="def-median">Medijan</dfn>, rotacija s najmanjim zbirom uglova (ne kvadrata) do mjerenja, izuzeci povlače mnogo manje:
-    izuzetak
-    ga ne vuče jače od bliskog mjerenja. Stranica <a href="average.html">Usrednjavanje</a> računa sve četiri. Pomjeri udio izuzetaka. Na slici je svaka tačka mjesto kamo
+    id="def-median">Medijan</dfn>, rotaciju s najmanjim zbirom uglova (ne kvadrata) do mjerenja, izuzeci povlače mnogo manje:
+    izuzetak ga ne vuče jače od bliskog mjerenja. Stranica <a href="average.html">Usrednjavanje</a> računa sve četiri. Pomjeri udio izuzetaka. Na slici je svaka tačka mjesto kamo
     mjerenje usmjerava nos, njegova Hopfova slika <var>h</var>(<var>r<sub>j</sub></var>); izuzeci imaju svoju boju i
     dobiju prsten kad ih medijan izdvoji. ★ je istina, ● sljedbenik na putu od 1. Četiri sredine su bijeli krugovi
     s prstenom u svojoj boji: tetivna sredina narandžasto, kvaternionska sredina zeleno, Karcherova (geodezijska) sredina ljubičasto, medijan plavo.
@@ -508,8 +507,8 @@ export const page = {
     (Ako provjera ne uspije, ništa nije dokazano ni u jednom smjeru.) Pogrešne grane, izuzeci grafa, pronalaze se i
     izdvajaju.`,
   "many.p7":
-    `Na slici je <var>f</var> ispisan na vrhu dok ga tok smanjuje: model iz rada pokrenut na grafu, gdje svaki
-    čvor privlači mjesto na kojem bi, prema svakoj njegovoj grani, trebao biti. Svaka grana je obojena prema tome koliko se njeno
+    `Na slici je <var>f</var> ispisan na vrhu dok ga tok smanjuje: model iz rada pokrenut na grafu, u kojem svaka
+    grana vuče oba svoja čvora, svaki prema mjestu na kojem bi, prema njenom mjerenju, trebao biti. Svaka grana je obojena prema tome koliko se njeno
     mjerenje razlikuje od trenutnog rješenja: plavo ispod 2°, tirkizno 2–5°, zeleno 5–15°, narandžasto 15–45°,
     crveno 45° ili više; pogrešna grana je isprekidana. Svaki čvor nosi iglu: svoju grešku (okret od svoje prave
     rotacije do rotacije iz rješenja, nakon jednog zajedničkog okreta koji cijelo rješenje najbolje poravna s
@@ -633,7 +632,11 @@ export const page = {
   "glossary.term27": "fiksirani vođa",
   "glossary.definition27":
     `Oscilator Loheovog modela koji miruje, a ostali (sljedbenici) teku prema njemu; sa jednim sljedbenikom, to je KLI. <a
-    href="#kuramoto">Odjeljak 6</a>`,
+    href="#def-leader">Odjeljak 6</a>`,
+  "glossary.term29": "medijan",
+  "glossary.definition29":
+    `Rotacija s najmanjim zbirom uglova (ne kvadrata) do mjerenja, tako da je izuzetak ne vuče jače od bliskog
+    mjerenja. <a href="#def-median">Odjeljak 9</a>`,
   "paper.title1": "Literatura",
   "paper.item1":
     `Zinaid Kapić i Aladin Crnkić, <span lang="en">“Interpolating Rotations with Non-abelian Kuramoto Model on the

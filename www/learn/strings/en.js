@@ -629,7 +629,11 @@ export const page = {
   "glossary.term27": "pinned leader",
   "glossary.definition27":
     `An oscillator of the Lohe model held still, which the others (the followers) flow to; with one follower, KLI. <a
-    href="#kuramoto">Section 6</a>`,
+    href="#def-leader">Section 6</a>`,
+  "glossary.term29": "median",
+  "glossary.definition29":
+    `Of rotations: the one with the least summed angle (not squared) to the measurements, so that a wild one pulls on
+    it no harder than a near one. <a href="#def-median">Section 9</a>`,
   "paper.title1": "References",
   "paper.item1":
     `Zinaid Kapić and Aladin Crnkić, “Interpolating Rotations with Non-abelian Kuramoto Model on the 3-Sphere”,
