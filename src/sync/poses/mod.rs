@@ -105,6 +105,9 @@ pub enum PoseStage {
     Chordal,
     /// The trust region on the rank-`rank` relaxation, after `iterations` steps at lower ranks.
     Optimising { rank: usize, iterations: usize },
+    /// A trust-region step at rank `rank`, the `iterations`-th of the whole solve (each level's
+    /// and the last pass's counted together, as [`SynchronizedPoses::iterations`] counts them).
+    Step { rank: usize, iterations: usize },
     /// The certificate `λ_min(Q − Λ)` at rank `rank` (Lanczos).
     Certifying { rank: usize },
     /// Rounding a higher-rank solution to rotations and the last pass at the dimension's rank.
@@ -382,8 +385,15 @@ fn solve(
     let mut lower_bound = f64::NEG_INFINITY;
     let verdict = loop {
         observe(PoseStage::Optimising { rank, iterations });
-        let optimised =
-            trust::optimise(problem, &preconditioner, x, gradient, trust::MAX_ITERATIONS);
+        let before = iterations;
+        let optimised = trust::optimise(
+            problem,
+            &preconditioner,
+            x,
+            gradient,
+            trust::MAX_ITERATIONS,
+            &mut |k| observe(PoseStage::Step { rank, iterations: before + k }),
+        );
         iterations += optimised.iterations;
         x = optimised.x;
         observe(PoseStage::Certifying { rank });
@@ -405,8 +415,15 @@ fn solve(
         // Round, polish at rank d, and certify the rotations themselves.
         observe(PoseStage::Rounding);
         let rounded = stiefel::from_rotations(d, &stiefel::round(&x));
-        let polished =
-            trust::optimise(problem, &preconditioner, rounded, gradient, trust::MAX_ITERATIONS);
+        let before = iterations;
+        let polished = trust::optimise(
+            problem,
+            &preconditioner,
+            rounded,
+            gradient,
+            trust::MAX_ITERATIONS,
+            &mut |k| observe(PoseStage::Step { rank: d, iterations: before + k }),
+        );
         iterations += polished.iterations;
         let final_verdict = staircase::certify(problem, &polished.x, tolerance);
         if final_verdict.certified {

@@ -601,5 +601,27 @@ fn observing_a_solve_reports_its_stages_and_changes_nothing() {
         // A certificate a level, and one more of the rounded rotations.
         assert_eq!(certified.len(), levels.len() + usize::from(rounded), "{stages:?}");
         assert_eq!(observed.certificate.rank, levels.last().unwrap().0);
+        // Each trust-region step announced once, numbered 1, 2, … through the whole solve, at the
+        // rank of the level it belongs to (the last pass's at the dimension).
+        let steps: Vec<(usize, usize)> = stages
+            .iter()
+            .filter_map(|s| match *s {
+                PoseStage::Step { rank, iterations } => Some((rank, iterations)),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(
+            steps.iter().map(|s| s.1).collect::<Vec<_>>(),
+            (1..=observed.iterations).collect::<Vec<_>>()
+        );
+        let mut rank = d;
+        for stage in &stages {
+            match *stage {
+                PoseStage::Optimising { rank: r, .. } => rank = r,
+                PoseStage::Rounding => rank = d,
+                PoseStage::Step { rank: r, .. } => assert_eq!(r, rank, "{stages:?}"),
+                _ => {}
+            }
+        }
     }
 }

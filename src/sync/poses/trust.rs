@@ -149,13 +149,15 @@ fn truncated_cg(
 }
 
 /// The trust-region method from `x` until the gradient is below `tolerance`, stops shrinking, or
-/// `max_iterations` steps.
+/// `max_iterations` steps; `step_begins` is told each step's number (from 1) as it begins, for a
+/// caller's progress.
 pub(super) fn optimise(
     problem: &Reduced,
     preconditioner: &Preconditioner,
     x: Stack,
     tolerance: f64,
     max_iterations: usize,
+    step_begins: &mut dyn FnMut(usize),
 ) -> Optimised {
     let mut model = Model::at(problem, x);
     let first = model.gradient.norm();
@@ -177,6 +179,7 @@ pub(super) fn optimise(
             break;
         }
         iterations += 1;
+        step_begins(iterations);
         // F's rounding: each of its `dn r` products carries errors of `Q`'s scale.
         let noise = 1e-15 * (model.cost.abs() + model.x.data.len() as f64 * problem.scale);
         // Quadratic convergence down to a residual of 1e-6 of the gradient: below it conjugate

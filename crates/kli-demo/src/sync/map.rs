@@ -370,6 +370,9 @@ pub fn stage_words(stage: PoseStage) -> String {
         PoseStage::Optimising { rank, iterations } => {
             format!("trust region at rank {rank} ({iterations} steps so far)")
         }
+        PoseStage::Step { rank, iterations } => {
+            format!("trust region at rank {rank}, step {iterations}")
+        }
         PoseStage::Certifying { rank } => format!("the certificate at rank {rank}"),
         PoseStage::Rounding => "rounding to rotations".into(),
         PoseStage::Translations => "the translations".into(),
