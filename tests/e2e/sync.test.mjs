@@ -255,6 +255,15 @@ async function savedMap(page, selector) {
   const [download] = await Promise.all([page.waitForEvent("download"), page.click(selector)]);
   return { name: download.suggestedFilename(), text: (await readFile(await download.path())).toString("utf8") };
 }
+/** Waits until the map's picture (a hash of its pixels, as canvasStats makes it) passes
+ *  `which(hash, value)`, and returns that hash (or the last one, after 10 s). */
+const mapPicture = (page, which, value) => page.waitForFunction(([which, value]) => {
+  const canvas = document.querySelector("#sync-map");
+  const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
+  let hash = 0;
+  for (let i = 0; i < data.length; i += 4) hash = (hash * 31 + data[i] + 7 * data[i + 1] + 13 * data[i + 2]) % 1000000007;
+  return new Function(`return (${which})`)()(hash, value) && hash;
+}, [which.toString(), value], { timeout: 10000 }).then((handle) => handle.jsonValue(), () => NaN);
 const fixture = (name) => readFile(join(root, "tests/fixtures/posegraphs", name));
 
 test("the map: the built-in robot's loop solved before any file, a 2D and a 3D file, the certificate, the .g2o and CSV saves", async () => {
@@ -271,6 +280,13 @@ test("the map: the built-in robot's loop solved before any file, a 2D and a 3D f
   assert.equal(rows["Initial estimate"], "the odometry chained from pose 0");
   const [initial, optimum] = rows["Cost f: initial, optimum"].split(", ").map(Number);
   assert.ok(optimum > 0 && initial > 10 * optimum, rows["Cost f: initial, optimum"]);
+  // The map in the Save list: vector drawing with both panels and the key, named for its graph.
+  const svg = await savedMap(page, 'button[data-save="map"][data-format="svg"]');
+  assert.equal(svg.name, "kli-built-in-pose-graph-map.svg");
+  assert.match(svg.text, /^<svg[^]*initial: the odometry chained[^]*the certified optimum[^]*edge misfit/);
+  assert.ok((svg.text.match(/<path /g) ?? []).length >= 4 && !/NaN/.test(svg.text));
+  const png = await savedMap(page, 'button[data-save="map"][data-format="png"]');
+  assert.equal(png.name, "kli-built-in-pose-graph-map.png");
   // No loop closures: a chain, which the odometry fits exactly (cost 0 to rounding).
   await page.fill("#world-closures", "0");
   await page.waitForFunction(() => document.querySelector("#map-table").textContent.includes("191, of which 0"));
@@ -303,6 +319,7 @@ test("the map: the built-in robot's loop solved before any file, a 2D and a 3D f
   assert.equal(lines.length, 1046);
   assert.deepEqual(lines[1].split(",").map(Number), [0, 0, 0, 0, 0, 0, 0, 1]);
   // A 3D grid: turnable, by the keys too (the picture changes), certified.
+  const previous = await mapPicture(page, () => true, 0);
   await page.setInputFiles("#file-input", { name: "tinyGrid3D.g2o", mimeType: "text/plain", buffer: await fixture("tinyGrid3D.g2o") });
   await mapOf(page, "tinyGrid3D.g2o");
   rows = await mapTable(page);
@@ -310,24 +327,19 @@ test("the map: the built-in robot's loop solved before any file, a 2D and a 3D f
   assert.match(rows.Certificate, /^certified/);
   assert.equal(await page.getAttribute("#sync-map", "role"), "application");
   assert.equal(await page.isHidden("#map-views"), false, "a 3D map's views are offered");
-  const before3d = await canvasStats(page, "#sync-map");
+  // The grid's own first picture (not the graph's before it, still on the canvas for a frame).
+  const first = await mapPicture(page, (hash, previous) => hash !== previous, previous);
   await page.focus("#sync-map");
   await page.keyboard.press("ArrowLeft");
   await page.keyboard.press("ArrowUp");
-  await page.waitForFunction((hash) => {
-    const canvas = document.querySelector("#sync-map");
-    const data = canvas.getContext("2d").getImageData(0, 0, canvas.width, canvas.height).data;
-    let h = 0;
-    for (let i = 0; i < data.length; i += 4) h = (h * 31 + data[i] + 7 * data[i + 1] + 13 * data[i + 2]) % 1000000007;
-    return h !== hash;
-  }, before3d.hash);
+  const turned = await mapPicture(page, (hash, first) => hash !== first, first);
   assert.equal(await page.textContent("#readout").then((text) => text.startsWith("t = 0.00")), true, "the keys turned the map, not the time");
   // From above: the grid's floor plan, a picture of its own; back to the oblique view it opened with.
   await page.click("#map-above");
-  const above = await canvasStats(page, "#sync-map");
+  const above = await mapPicture(page, (hash, turned) => hash !== turned, turned);
   await page.click("#map-oblique");
-  const oblique = await canvasStats(page, "#sync-map");
-  assert.ok(above.hash !== oblique.hash && oblique.hash === before3d.hash, "the views differ, and oblique is the first one");
+  assert.ok(Number.isFinite(turned) && Number.isFinite(above), "the keys and 'From above' turned the map");
+  assert.equal(await mapPicture(page, (hash, first) => hash === first, first), first, "oblique is the first view again");
   // No NaN anywhere in the section's words.
   assert.doesNotMatch(await page.textContent("#file-section"), /NaN|undefined|Infinity/);
   assert.deepEqual(problems, []);

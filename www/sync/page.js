@@ -40,8 +40,11 @@ const shown = { map: /** @type {SyncMap | null} */ (null), text: "", name: "", f
 /** The views' names in file names. */
 const FILE_NAMES = /** @type {Record<string, string>} */ ({
   graph: "graph", hopf: "hopf", objects: "objects", plots: "plots", results: "residuals", sweep: "wrong-edge-sweep",
-  file: "your-graph-residuals", map: "pose-graph-map",
+  file: "your-graph-residuals",
 });
+/** The map's files' names begin with its graph's: the file's without its extension, or the
+ *  built-in one's. */
+const mapName = () => (shown.file ? shown.name.replace(/\.[^.]*$/, "") : "kli-built-in-pose-graph");
 /** A 3D map's turn a key press, radians. */
 const TURN = (5 * Math.PI) / 180;
 
@@ -89,7 +92,8 @@ const page = new Page({
       `Robust: ${s.robustErrorDegrees.toFixed(2)}°, ${robust}.`;
   },
   data: { file: (run, t) => `kli-sync-${run.summary.count}-nodes-${timeTag(t)}` },
-  file: (run, view, t) => `kli-sync-${FILE_NAMES[view]}-${run.summary.count}${["sweep", "results", "file", "map"].includes(view) ? "" : `-${timeTag(t)}`}`,
+  file: (run, view, t) => view === "map" ? `${mapName()}-map` :
+    `kli-sync-${FILE_NAMES[view]}-${run.summary.count}${["sweep", "results", "file"].includes(view) ? "" : `-${timeTag(t)}`}`,
   video: {
     views: ["graph", "hopf"],
     title: (run) => `${run.summary.count} rotations synchronising on a graph: the Lohe flow`,
@@ -284,17 +288,16 @@ function wireMap(/** @type {Host} */ host) {
   };
   $("#map-above", HTMLButtonElement).addEventListener("click", () => look(-Math.PI / 2, Math.PI / 2));
   $("#map-oblique", HTMLButtonElement).addEventListener("click", () => look((-60 * Math.PI) / 180, (35 * Math.PI) / 180));
-  const base = () => (shown.file ? shown.name.replace(/\.[^.]*$/, "") : "kli-built-in-pose-graph");
   $("#save-g2o", HTMLButtonElement).addEventListener("click", () => {
     if (!shown.map) return;
     try {
-      download(`${base()}-optimum.g2o`, "text/plain", sync.writeG2o(sync.readG2o(shown.text), shown.map.poses));
+      download(`${mapName()}-optimum.g2o`, "text/plain", sync.writeG2o(sync.readG2o(shown.text), shown.map.poses));
     } catch (error) {
       status().textContent = `Could not save: ${words(error)}`;
     }
   });
   $("#save-poses-csv", HTMLButtonElement).addEventListener("click", () => {
-    if (shown.map) download(`${base()}-optimum.csv`, "text/csv", shown.map.csv());
+    if (shown.map) download(`${mapName()}-optimum.csv`, "text/csv", shown.map.csv());
   });
 }
 
