@@ -268,6 +268,8 @@ const fixture = (name) => readFile(join(root, "tests/fixtures/posegraphs", name)
 
 test("the map: the built-in robot's loop solved before any file, a 2D and a 3D file, the certificate, the .g2o and CSV saves", async () => {
   const { page, context, problems } = await open("sync.html", { reducedMotion: "reduce" });
+  // Never an empty figure: the words saying it is solving, or the map.
+  assert.ok(await painted(page, "#sync-map", 50), "the map's canvas says something from the start");
   // Before any file: the built-in pose graph, solved in the worker, drawn, certified. Its size
   // is its route's (24 blocks of 8 m, a pose a metre: 192 poses, 191 odometry edges) and the
   // loop closures asked for (8).

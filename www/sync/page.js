@@ -66,7 +66,7 @@ const page = new Page({
       },
     },
     map: {
-      draw: (ctx, frame) => shown.map?.draw(ctx, frame),
+      draw: (ctx, frame) => (shown.map ? shown.map.draw(ctx, frame) : SyncMap.drawWaiting(ctx, frame, "Solving the built-in robot's loop…")),
       svg: (frame) => {
         if (!shown.map) throw new Error("the map is still being solved");
         return shown.map.toSvg(frame);

@@ -35,7 +35,7 @@ use super::world::{MAX_CLOSURES, MAX_NOISE, World, WorldOptions};
 use crate::camera::Camera;
 use crate::figure::{Frame, Record};
 use crate::format::exponential;
-use crate::palette::BACKGROUND;
+use crate::palette::{BACKGROUND, MUTED};
 use crate::pen::{Pen, svg_document};
 
 /// The numbers before the poses in the answer.
@@ -220,6 +220,20 @@ impl SyncMap {
         let pen = Pen::begin(ctx, frame.width, frame.height, frame.pixel_ratio, BACKGROUND);
         pen.scale_text(frame.text_scale);
         self.paint(&pen, (frame.width, frame.height));
+    }
+
+    /// The map's place on a canvas while its graph is being solved: `words`, centred, so that
+    /// the figure is never empty.
+    #[wasm_bindgen(js_name = drawWaiting)]
+    pub fn draw_waiting(
+        ctx: &CanvasRenderingContext2d,
+        #[wasm_bindgen(unchecked_param_type = "Frame")] frame: &JsValue,
+        words: &str,
+    ) {
+        let frame = Frame::read(frame);
+        let pen = Pen::begin(ctx, frame.width, frame.height, frame.pixel_ratio, BACKGROUND);
+        pen.scale_text(frame.text_scale);
+        pen.text(words, (0.5 * frame.width, 0.5 * frame.height), MUTED, 13.0, "center");
     }
 
     /// The same as an SVG document.
