@@ -282,6 +282,9 @@ test("the map: the built-in robot's loop solved before any file, a 2D and a 3D f
   assert.equal(rows["Initial estimate"], "the odometry chained from pose 0");
   const [initial, optimum] = rows["Cost f: initial, optimum"].split(", ").map(Number);
   assert.ok(optimum > 0 && initial > 10 * optimum, rows["Cost f: initial, optimum"]);
+  // The built-in graph's truth is known: the loop closures bring the map nearer it.
+  const [far, near] = rows["Distance from the true path (RMS): initial, optimum"].split(", ").map(parseFloat);
+  assert.ok(near < far, rows["Distance from the true path (RMS): initial, optimum"]);
   // The map in the Save list: vector drawing with both panels and the key, named for its graph.
   const svg = await savedMap(page, 'button[data-save="map"][data-format="svg"]');
   assert.equal(svg.name, "kli-built-in-pose-graph-map.svg");
@@ -299,6 +302,7 @@ test("the map: the built-in robot's loop solved before any file, a 2D and a 3D f
   await mapOf(page, "CSAIL.g2o");
   rows = await mapTable(page);
   assert.equal(rows.Poses, "1045 (2D)");
+  assert.equal(rows["Distance from the true path (RMS): initial, optimum"], undefined, "a file's truth is not known");
   assert.equal(rows["Initial estimate"], "the odometry chained from pose 0", "CSAIL.g2o has no VERTEX lines");
   const csail = Number(rows["Cost f: initial, optimum"].split(", ")[1]);
   assert.ok(Math.abs(csail - 31.70372) < 1e-3, rows["Cost f: initial, optimum"]);

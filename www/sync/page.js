@@ -174,6 +174,7 @@ async function solveMap(/** @type {Host} */ host, /** @type {string} */ text, /*
     });
     if (!answer || mine !== solving) return false;
     map = SyncMap.solved(text, answer);
+    if (!file) map.withTruth();
   } catch (error) {
     if (mine === solving) status().textContent = `${name}: ${words(error)}`;
     return false;
@@ -201,6 +202,9 @@ function showMap(/** @type {Host} */ host) {
     ["Rank of the staircase", String(s.rank)],
     ["Trust-region steps", String(s.iterations)],
     ["Median edge misfit", figure(s.medianMisfit, (x) => `${x.toFixed(2)} σ`)],
+    ...(Number.isFinite(s.truthErrorOptimum)
+      ? [["Distance from the true path (RMS): initial, optimum", `${s.truthErrorInitial.toFixed(2)} m, ${s.truthErrorOptimum.toFixed(2)} m`]]
+      : []),
     ["Solved in", `${shown.seconds} s, in the page's worker (reading included)`],
   ]);
   const skipped = s.skipped ? ` (${s.skipped} other ${s.skipped === 1 ? "line" : "lines"} skipped: landmarks, priors)` : "";

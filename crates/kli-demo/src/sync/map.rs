@@ -31,7 +31,7 @@ use web_sys::CanvasRenderingContext2d;
 
 use super::initial::{Poses, initial};
 use super::map_view::{Look, MapPanel, draw_map};
-use super::world::{MAX_CLOSURES, MAX_NOISE, World, WorldOptions};
+use super::world::{MAX_CLOSURES, MAX_NOISE, World, WorldOptions, route};
 use crate::camera::Camera;
 use crate::figure::{Frame, Record};
 use crate::format::exponential;
@@ -67,6 +67,8 @@ pub struct SyncMap {
     initial_misfits: Vec<f64>,
     optimum_misfits: Vec<f64>,
     initial_cost: f64,
+    /// Each pose's true position, where it is known (the built-in graph's route).
+    truth: Option<Vec<DVec3>>,
     /// The 3D camera, radians.
     azimuth: f64,
     elevation: f64,
@@ -104,6 +106,10 @@ export interface SyncMapSummary {
   medianMisfit: number;
   /** Lines of other kinds (landmarks, priors, parameters), skipped. */
   skipped: number;
+  /** The root mean square distance of the poses from their truth, metres, in the initial
+   *  estimate and in the optimum: NaN unless the truth is known (`withTruth`). */
+  truthErrorInitial: number;
+  truthErrorOptimum: number;
 }
 "#;
 
@@ -171,7 +177,28 @@ impl SyncMap {
             .set("iterations", a.iterations as f64)
             .set("medianMisfit", super::model::median(self.optimum_misfits.clone()))
             .set("skipped", skipped as f64)
+            .set("truthErrorInitial", self.truth_error(&self.initial))
+            .set("truthErrorOptimum", self.truth_error(&self.optimum))
             .end()
+    }
+
+    /// Takes the built-in graph's true poses (its route, the same for every noise and seed) as
+    /// this map's truth: drawn dashed under both panels, and each estimate's distance from it in
+    /// the summary. An Error naming `truth` when the graph is not the built-in one's size.
+    #[wasm_bindgen(js_name = withTruth)]
+    pub fn with_truth(&mut self) -> JsResult<()> {
+        let truth: Vec<DVec3> = route().iter().map(|&(x, y, _)| DVec3::new(x, y, 0.0)).collect();
+        if self.graph.dimension != 2 || truth.len() != self.graph.count {
+            let problem = format!(
+                "is the built-in graph's ({} planar poses); this graph has {} poses in {}D",
+                truth.len(),
+                self.graph.count,
+                self.graph.dimension
+            );
+            return Err(KliError::invalid("truth", problem).into());
+        }
+        self.truth = Some(truth);
+        Ok(())
     }
 
     /// The optimum's poses for `writeG2o`: `{ rotations, translations }` (`w, x, y, z` and
@@ -294,9 +321,24 @@ impl SyncMap {
             initial_misfits,
             optimum_misfits,
             initial_cost,
+            truth: None,
             azimuth: CAMERA.0.to_radians(),
             elevation: CAMERA.1.to_radians(),
         })
+    }
+
+    /// The root mean square distance of `poses`' positions from the truth (NaN without one).
+    /// Both are in the gauge of pose 0, which the built-in route starts at: the origin, heading
+    /// along x.
+    pub fn truth_error(&self, poses: &Poses) -> f64 {
+        let Some(truth) = &self.truth else { return f64::NAN };
+        let sum: f64 =
+            truth.iter().zip(&poses.positions).map(|(t, p)| (*t - *p).length_squared()).sum();
+        (sum / truth.len().max(1) as f64).sqrt()
+    }
+
+    pub fn set_truth(&mut self, truth: Vec<DVec3>) {
+        self.truth = Some(truth);
     }
 
     pub fn initial_poses(&self) -> &Poses {
@@ -339,7 +381,8 @@ impl SyncMap {
         } else {
             Look::Orbit(Camera::orbit(self.azimuth, self.elevation))
         };
-        draw_map(pen, &self.graph.edges, &[initial, optimum], &look, size);
+        let truth = self.truth.as_deref();
+        draw_map(pen, &self.graph.edges, &[initial, optimum], truth, &look, size);
     }
 }
 

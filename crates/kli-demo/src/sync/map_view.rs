@@ -1,7 +1,8 @@
 //! The map of a pose graph: two panels at one scale, the initial estimate and the optimum, each
 //! pose's position joined in order (the trajectory) and every other edge (a loop closure) drawn
 //! thin, each edge in the colour of its misfit in that panel's poses; seen from above in 2D, by
-//! an orbiting camera in 3D. A key at the bottom says the colours.
+//! an orbiting camera in 3D. Where the truth is known (the built-in graph), it is drawn dashed
+//! under both panels. A key at the bottom says the colours.
 
 use glam::DVec3;
 
@@ -49,16 +50,21 @@ impl Look {
 const HEADING: f64 = 13.0;
 const LINE: f64 = 11.0;
 
-/// Draws the panels side by side (stacked when the figure is taller than wide).
+/// The truth's dash, `[on, off]` pixels.
+const TRUTH_DASH: &[f64] = &[3.0, 3.0];
+
+/// Draws the panels side by side (stacked when the figure is taller than wide), over `truth`
+/// (each pose's true position, in the panels' gauge) where it is known.
 pub fn draw_map(
     pen: &Pen,
     edges: &[[usize; 2]],
     panels: &[MapPanel],
+    truth: Option<&[DVec3]>,
     look: &Look,
     (width, height): (f64, f64),
 ) {
     let s = pen.text_scale();
-    let key = key_entries();
+    let key = key_entries(truth.is_some());
     let key_height = draw_key(pen, &key, (8.0, 0.0), width - 16.0, false);
     let body = (height - key_height - 8.0 * s).max(10.0);
     let wide = width >= height;
@@ -77,7 +83,8 @@ pub fn draw_map(
     // One scale for both: the box of every panel's points, fitted in the smallest map area.
     let flat: Vec<Vec<(f64, f64)>> =
         panels.iter().map(|p| p.positions.iter().map(|&v| look.flat(v)).collect()).collect();
-    let points = flat.iter().flatten().filter(|p| p.0.is_finite() && p.1.is_finite());
+    let truth: Vec<(f64, f64)> = truth.unwrap_or_default().iter().map(|&v| look.flat(v)).collect();
+    let points = flat.iter().flatten().chain(&truth).filter(|p| p.0.is_finite() && p.1.is_finite());
     let (mut low, mut high) =
         ((f64::INFINITY, f64::INFINITY), (f64::NEG_INFINITY, f64::NEG_INFINITY));
     for &(x, y) in points {
@@ -101,6 +108,8 @@ pub fn draw_map(
         pen.text(&panel.line, (left + 10.0, top + 28.0 * s), MUTED, LINE, "left");
         let (cx, cy) = (left + 0.5 * w, top + head + 0.5 * (h - head));
         let at = |(x, y): (f64, f64)| (cx + scale * (x - centre.0), cy - scale * (y - centre.1));
+        let line: Vec<(f64, f64)> = truth.iter().map(|&p| at(p)).collect();
+        pen.polyline(&line, MUTED, 1.0, TRUTH_DASH);
         draw_edges(pen, edges, panel.misfits, &|i| at(points[i]));
         if let Some(&first) = points.first() {
             pen.disc(at(first), 4.0, Some("#ffffff"), Some((INK, 2.0)));
@@ -139,27 +148,28 @@ fn draw_edges(pen: &Pen, edges: &[[usize; 2]], misfits: &[f64], at: &dyn Fn(usiz
     }
 }
 
-/// A key's entry: a swatch (a line of a colour and width, or the first pose's ring) and a label.
+/// A key's entry: a swatch (a line of a colour, width and dash, or the first pose's ring) and a
+/// label.
 struct KeyEntry {
     colour: &'static str,
     width: f64,
+    dash: &'static [f64],
     ring: bool,
     label: &'static str,
 }
 
-fn key_entries() -> Vec<KeyEntry> {
-    let mut entries =
-        vec![KeyEntry { colour: INK, width: 0.0, ring: false, label: "edge misfit:" }];
+/// The key: the misfit classes, the loop closures, pose 0, and the truth where it is drawn.
+fn key_entries(truth: bool) -> Vec<KeyEntry> {
+    let entry = |colour, width, label| KeyEntry { colour, width, dash: &[], ring: false, label };
+    let mut entries = vec![entry(INK, 0.0, "edge misfit:")];
     for (c, &(_, label)) in CLASSES.iter().enumerate() {
-        entries.push(KeyEntry {
-            colour: MISFIT[c],
-            width: 1.4 + 0.4 * c as f64,
-            ring: false,
-            label,
-        });
+        entries.push(entry(MISFIT[c], 1.4 + 0.4 * c as f64, label));
     }
-    entries.push(KeyEntry { colour: MUTED, width: 0.8, ring: false, label: "thin: loop closure" });
-    entries.push(KeyEntry { colour: INK, width: 2.0, ring: true, label: "pose 0 (held fixed)" });
+    entries.push(entry(MUTED, 0.8, "thin: loop closure"));
+    entries.push(KeyEntry { ring: true, ..entry(INK, 2.0, "pose 0 (held fixed)") });
+    if truth {
+        entries.push(KeyEntry { dash: TRUTH_DASH, ..entry(MUTED, 1.0, "the true path") });
+    }
     entries
 }
 
@@ -191,7 +201,7 @@ fn draw_key(
                     Some((entry.colour, entry.width)),
                 );
             } else if entry.width > 0.0 {
-                pen.line((x, y), (x + swatch - 4.0, y), entry.colour, entry.width, &[]);
+                pen.line((x, y), (x + swatch - 4.0, y), entry.colour, entry.width, entry.dash);
             }
             pen.text(entry.label, (x + swatch, y), INK, LINE, "left");
         }

@@ -342,6 +342,24 @@ fn the_misfits_sum_to_the_solvers_cost_and_the_noisy_loop_is_straightened() {
     };
     let drift = end(map.initial_poses());
     assert!(drift > 1.0 && end(&optimum) < 0.5 * drift, "{drift} {}", end(&optimum));
+    // Against the route (the truth), by the map's own measure: the optimum nearer than the dead
+    // reckoning, by the world's numbers as above.
+    let mut map = map;
+    map.set_truth(w.truth.iter().map(|&(x, y, _)| glam::DVec3::new(x, y, 0.0)).collect());
+    let rms = |poses: &Poses| {
+        let sum: f64 = (0..192)
+            .map(|k| {
+                let (x, y, _) = planar(poses, k);
+                (x - w.truth[k].0).powi(2) + (y - w.truth[k].1).powi(2)
+            })
+            .sum();
+        (sum / 192.0).sqrt()
+    };
+    let (before, after) = (map.truth_error(map.initial_poses()), map.truth_error(&optimum));
+    assert!(
+        (before - rms(map.initial_poses())).abs() < 1e-12 && (after - rms(&optimum)).abs() < 1e-12
+    );
+    assert!(after < 0.5 * before, "{after} against {before}");
     // The initial cost (the dead reckoning's) is far above the optimum's.
     let initial: f64 = edge_costs(&graph, map.initial_poses()).iter().sum();
     assert!(initial > 10.0 * answer[0]);
