@@ -282,6 +282,9 @@ test("the map: the built-in robot's loop solved before any file, a 2D and a 3D f
   assert.equal(rows["Initial estimate"], "the odometry chained from pose 0");
   const [initial, optimum] = rows["Cost f: initial, optimum"].split(", ").map(Number);
   assert.ok(optimum > 0 && initial > 10 * optimum, rows["Cost f: initial, optimum"]);
+  // Certified: the proven lower bound is the cost, to the certificate's tolerance.
+  const bound = Number(rows["Proven lower bound on the least cost"]);
+  assert.ok(bound <= optimum && bound > 0.99 * optimum, `${bound} against ${optimum}`);
   // The built-in graph's truth is known: the loop closures bring the map nearer it.
   const [far, near] = rows["Distance from the true path (RMS): initial, optimum"].split(", ").map(parseFloat);
   assert.ok(near < far, rows["Distance from the true path (RMS): initial, optimum"]);

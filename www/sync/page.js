@@ -199,6 +199,9 @@ function showMap(/** @type {Host} */ host) {
     ["Initial estimate", s.fromFile ? "the file's own (its VERTEX lines)" : "the odometry chained from pose 0"],
     ["Cost f: initial, optimum", `${figure(s.initialCost, exp)}, ${figure(s.cost, exp)}`],
     ["Certificate", certificate],
+    ["Proven lower bound on the least cost", s.certified
+      ? figure(s.lowerBound, exp)
+      : `${figure(s.lowerBound, exp)}: this map is within ${figure(s.cost - s.lowerBound, exp)} of the best there is`],
     ["Rank of the staircase", String(s.rank)],
     ["Trust-region steps", String(s.iterations)],
     ["Median edge misfit", figure(s.medianMisfit, (x) => `${x.toFixed(2)} σ`)],

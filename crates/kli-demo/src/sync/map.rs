@@ -11,7 +11,8 @@
 //!
 //! The solve runs in the page's worker (`SyncMap.solve`, telling its stages as it goes); the
 //! page then reads the file again with the answer (`SyncMap.solved`). The answer's numbers:
-//! `[cost, iterations, λ_min, tolerance, certified (1 or 0), rank]`, then `4n` rotations
+//! `[cost, iterations, λ_min, tolerance, certified (1 or 0), rank, lower bound]`, then `4n`
+//! rotations
 //! (`w, x, y, z`) and `3n` positions.
 
 use std::f64::consts::FRAC_PI_2;
@@ -39,7 +40,7 @@ use crate::palette::{BACKGROUND, MUTED};
 use crate::pen::{Pen, svg_document};
 
 /// The numbers before the poses in the answer.
-const HEAD: usize = 6;
+pub const HEAD: usize = 7;
 
 /// Where a 3D map is first seen from: azimuth and elevation, degrees (the page's "oblique").
 const CAMERA: (f64, f64) = (-60.0, 35.0);
@@ -53,6 +54,8 @@ pub struct Answer {
     pub tolerance: f64,
     pub certified: bool,
     pub rank: usize,
+    /// A proven lower bound on the global minimum ([`kli::sync::PoseCertificate::lower_bound`]).
+    pub lower_bound: f64,
 }
 
 /// A pose graph, its initial estimate and its certified optimum, and how the map is turned.
@@ -101,6 +104,9 @@ export interface SyncMapSummary {
   lambdaMin: number;
   tolerance: number;
   rank: number;
+  /** A proven lower bound on the global minimum of the cost: the optimum found is within
+   *  cost − lowerBound of it (where the relaxation is not tight, SE-Sync's suboptimality bound). */
+  lowerBound: number;
   iterations: number;
   /** The median edge misfit in the optimum, standard deviations. */
   medianMisfit: number;
@@ -174,6 +180,7 @@ impl SyncMap {
             .set("lambdaMin", a.lambda_min)
             .set("tolerance", a.tolerance)
             .set("rank", a.rank as f64)
+            .set("lowerBound", a.lower_bound)
             .set("iterations", a.iterations as f64)
             .set("medianMisfit", super::model::median(self.optimum_misfits.clone()))
             .set("skipped", skipped as f64)
@@ -299,6 +306,7 @@ impl SyncMap {
             tolerance: data[3],
             certified: data[4] == 1.0,
             rank: data[5] as usize,
+            lower_bound: data[6],
         };
         let rotations = data[HEAD..HEAD + 4 * n]
             .chunks_exact(4)
@@ -413,6 +421,7 @@ pub fn solve_text(text: &str, observe: &mut dyn FnMut(PoseStage)) -> Result<Vec<
         c.tolerance,
         f64::from(u8::from(c.certified)),
         c.rank as f64,
+        c.lower_bound,
     ]);
     solved.rotations.iter().for_each(|&q| out.extend(to_wxyz(q)));
     solved.translations.iter().for_each(|t| out.extend(t.to_array()));

@@ -198,7 +198,7 @@ fn numbers_that_are_not_this_problems_solutions_are_refused_by_name() {
 // ---- The map: the built-in pose graph, the initial estimate, the optimum ---------------------
 
 use super::initial::{Poses, chained, initial};
-use super::map::{SyncMap, csv, edge_costs, read, solve_text};
+use super::map::{HEAD, SyncMap, csv, edge_costs, read, solve_text};
 use super::map_view::class as misfit_class;
 use super::world::{World, WorldOptions, between, revisits, route};
 
@@ -297,11 +297,11 @@ fn the_noise_free_world_solves_to_the_truth_at_cost_zero_certified() {
     assert!(answer[0] < 1e-12, "cost {}", answer[0]);
     assert_eq!(answer[4], 1.0, "certified");
     let optimum = Poses {
-        rotations: answer[6..6 + 4 * 192]
+        rotations: answer[HEAD..HEAD + 4 * 192]
             .chunks(4)
             .map(|c| kli::from_wxyz([c[0], c[1], c[2], c[3]]))
             .collect(),
-        positions: answer[6 + 4 * 192..]
+        positions: answer[HEAD + 4 * 192..]
             .chunks(3)
             .map(|c| glam::DVec3::new(c[0], c[1], c[2]))
             .collect(),
@@ -322,16 +322,18 @@ fn the_misfits_sum_to_the_solvers_cost_and_the_noisy_loop_is_straightened() {
     let answer = solve_text(&w.text, &mut |_| {}).unwrap();
     let map = SyncMap::of(graph.clone(), &answer).unwrap();
     let optimum = Poses {
-        rotations: answer[6..6 + 4 * 192]
+        rotations: answer[HEAD..HEAD + 4 * 192]
             .chunks(4)
             .map(|c| kli::from_wxyz([c[0], c[1], c[2], c[3]]))
             .collect(),
-        positions: answer[6 + 4 * 192..]
+        positions: answer[HEAD + 4 * 192..]
             .chunks(3)
             .map(|c| glam::DVec3::new(c[0], c[1], c[2]))
             .collect(),
     };
     let total: f64 = edge_costs(&graph, &optimum).iter().sum();
+    // Certified, the proven lower bound is the cost less the tolerance's share, below it.
+    assert!(answer[6] <= answer[0] && answer[6] > 0.99 * answer[0], "{} {}", answer[6], answer[0]);
     assert!((total - answer[0]).abs() <= 1e-9 * answer[0], "{total} against {}", answer[0]);
     assert_eq!(answer[4], 1.0);
     // Dead reckoning drifts; the optimum with its loop closures is nearer the truth at the
@@ -372,11 +374,11 @@ fn the_csv_reads_back_as_the_optimum() {
     let answer = solve_text(text, &mut |_| {}).unwrap();
     let n = graph.count;
     let optimum = Poses {
-        rotations: answer[6..6 + 4 * n]
+        rotations: answer[HEAD..HEAD + 4 * n]
             .chunks(4)
             .map(|c| kli::from_wxyz([c[0], c[1], c[2], c[3]]))
             .collect(),
-        positions: answer[6 + 4 * n..]
+        positions: answer[HEAD + 4 * n..]
             .chunks(3)
             .map(|c| glam::DVec3::new(c[0], c[1], c[2]))
             .collect(),
@@ -388,6 +390,7 @@ fn the_csv_reads_back_as_the_optimum() {
         tolerance: answer[3],
         certified: answer[4] == 1.0,
         rank: answer[5] as usize,
+        lower_bound: answer[6],
     };
     let text = csv(&graph, &optimum, &answer);
     let mut rows = text.lines().filter(|l| !l.starts_with('#'));
