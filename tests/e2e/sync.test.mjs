@@ -91,6 +91,12 @@ test("until its solutions come, the first run's results view keeps its first pic
       return canvas.getContext("2d")?.getImageData(0, 0, canvas.width, canvas.height).data.some((value, i) => i % 4 === 3 && value > 0);
     });
     assert.equal(covered, false, "nothing drawn over it");
+    // Printed meanwhile, the map's place says that it is being solved (it threw before).
+    await page.emulateMedia({ media: "print" });
+    const titles = await page.evaluate(() => Array.from(document.querySelectorAll(".print-figure svg title"), (title) => title.textContent));
+    assert.ok(titles.includes("Solving the built-in robot's loop…"), titles.join(" | "));
+    await page.emulateMedia({ media: "screen" });
+    assert.deepEqual(problems, []);
     release();
     await solved(page);
     await page.waitForFunction(() => !document.querySelector("#sync-results-first"));

@@ -45,6 +45,8 @@ const FILE_NAMES = /** @type {Record<string, string>} */ ({
 /** The map's files' names begin with its graph's: the file's without its extension, or the
  *  built-in one's. */
 const mapName = () => (shown.file ? shown.name.replace(/\.[^.]*$/, "") : "kli-built-in-pose-graph");
+/** What the map's place says until the built-in graph's answer comes from the worker. */
+const SOLVING = "Solving the built-in robot's loop…";
 /** A 3D map's turn a key press, radians. */
 const TURN = (5 * Math.PI) / 180;
 
@@ -66,11 +68,9 @@ const page = new Page({
       },
     },
     map: {
-      draw: (ctx, frame) => (shown.map ? shown.map.draw(ctx, frame) : SyncMap.drawWaiting(ctx, frame, "Solving the built-in robot's loop…")),
-      svg: (frame) => {
-        if (!shown.map) throw new Error("the map is still being solved");
-        return shown.map.toSvg(frame);
-      },
+      draw: (ctx, frame) => (shown.map ? shown.map.draw(ctx, frame) : SyncMap.drawWaiting(ctx, frame, SOLVING)),
+      // Printed (or saved) before the worker answers: the words the canvas shows, not an Error.
+      svg: (frame) => (shown.map ? shown.map.toSvg(frame) : SyncMap.waitingSvg(frame, SOLVING)),
     },
   },
   form: "#sync-inputs",

@@ -270,6 +270,19 @@ impl SyncMap {
         pen.text(words, (0.5 * frame.width, 0.5 * frame.height), MUTED, 13.0, "center");
     }
 
+    /// The same as an SVG document: what the page prints (and saves) before the answer comes.
+    #[wasm_bindgen(js_name = waitingSvg)]
+    pub fn waiting_svg(
+        #[wasm_bindgen(unchecked_param_type = "Frame")] frame: &JsValue,
+        words: &str,
+    ) -> String {
+        let frame = Frame::read(frame);
+        svg_document(frame.width, frame.height, words, &|pen| {
+            pen.scale_text(frame.text_scale);
+            pen.text(words, (0.5 * frame.width, 0.5 * frame.height), MUTED, 13.0, "center");
+        })
+    }
+
     /// The same as an SVG document.
     #[wasm_bindgen(js_name = toSvg)]
     pub fn to_svg(
