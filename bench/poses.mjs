@@ -128,7 +128,7 @@ for (const c of ran) {
   console.log(`| ${c.name}${c.converted ? " ‡" : ""} | ${c.graph.dimension} | ${c.graph.count.toLocaleString("en")} | ${(c.graph.edges.length / 2).toLocaleString("en")} | ${ms(c.run.seconds)}; ${ms(c.run.fastest)} | ${r.cost.toFixed(4)} | ${r.certificate.certified ? "yes" : "no"}, ${r.certificate.rank} | ${gtsam} |`);
   if (Math.abs(kliCost - r.cost) > 1e-9 * r.cost) console.log(`(${c.name}: the reference reads kli's answer as ${kliCost}: its reader and kli's differ here)`);
 }
-console.log("‡ a TORO file (EDGE3, EDGE2): kli reads it; GTSAM, g2o and the reference read it as kli's writeG2o wrote it (the same κ and τ), as the reference reads g2o lines only.");
+console.log("‡ a TORO file (EDGE3, EDGE2): kli reads it; GTSAM, g2o and the reference read it as kli's writeG2o wrote it (its information in g2o's units: the same κ and τ), as the reference reads g2o lines only.");
 for (const line of notRun) console.log(`not run: ${line}`);
 console.log("not run: GTSAM w20000.txt (20,061 poses: 66 s, not certified at rank 3, cost 518.63; its relaxation is not tight: lowerBound 518.6126, docs/performance.md)");
 console.log("Costs: + the share above the best of the three; Ceres (pyceres) is not a peer (bench/poses_peers.py).");
