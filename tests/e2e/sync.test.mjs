@@ -93,6 +93,8 @@ test("until its solutions come, the first run's results view keeps its first pic
     assert.equal(covered, false, "nothing drawn over it");
     // Printed meanwhile, the map's place says that it is being solved (it threw before).
     await page.emulateMedia({ media: "print" });
+    // The figures' SVGs come in the print query's change event, a task after the switch.
+    await page.waitForFunction(() => document.querySelectorAll(".print-figure svg").length > 0);
     const titles = await page.evaluate(() => Array.from(document.querySelectorAll(".print-figure svg title"), (title) => title.textContent));
     assert.ok(titles.includes("Solving the built-in robot's loop…"), titles.join(" | "));
     await page.emulateMedia({ media: "screen" });
@@ -409,11 +411,15 @@ test("a 10,000-pose graph solves in the worker, its stages in the status, the pa
   // Every word the status says, and the frames' longest gap while the worker solves.
   await page.evaluate(() => {
     const status = document.querySelector("#file-status");
-    Object.assign(window, { __said: [], __gap: 0, __done: false });
+    Object.assign(window, { __said: [], __gap: 0, __done: false, __from: 0, __to: 0 });
     new MutationObserver(() => {
       window.__said.push(status.textContent);
+      if (!window.__from) window.__from = performance.now();
       // The worker's last stage: from here the page reads the answer and draws the map.
-      if (/the translations|solved in/.test(status.textContent)) window.__done = true;
+      if (!window.__done && /the translations|solved in/.test(status.textContent)) {
+        window.__done = true;
+        window.__to = performance.now();
+      }
     }).observe(status, { childList: true, characterData: true, subtree: true });
     let last = performance.now();
     const tick = (now) => {
@@ -426,14 +432,15 @@ test("a 10,000-pose graph solves in the worker, its stages in the status, the pa
   });
   await page.setInputFiles("#file-input", { name: "field.g2o", mimeType: "text/plain", buffer: Buffer.from(field.text) });
   await mapOf(page, "field.g2o");
-  const { said, gap } = await page.evaluate(() => ({ said: window.__said, gap: window.__gap }));
+  const { said, gap, solve } = await page.evaluate(() => ({ said: window.__said, gap: window.__gap, solve: window.__to - window.__from }));
   for (const stage of [/: reading…/, /: the chordal start/, /: trust region at rank 2, step 1…/, /: the certificate at rank 2…/]) {
     assert.ok(said.some((words) => stage.test(words)), `${stage} in ${JSON.stringify(said)}`);
   }
-  // The page draws frames while the worker solves: no frame waits half a second (the page's own
-  // reading of the answer and drawing of the map, after, are not counted; solved on the page
-  // instead, the longest wait was the whole solve).
-  assert.ok(gap < 500, `the longest frame gap while solving: ${gap} ms`);
+  // The page draws frames while the worker solves: no frame waits half as long as the solve
+  // (solved on the page instead, the longest wait was the whole solve). Not a fixed budget: on
+  // a busy machine a frame waited 667 ms while the solve took seconds (the page's own reading of
+  // the answer and drawing of the map, after, are not counted).
+  assert.ok(solve > 0 && gap < solve / 2, `the longest frame gap while solving: ${gap} ms of ${solve} ms`);
   const rows = await mapTable(page);
   assert.equal(rows.Poses, "10000 (2D)");
   assert.match(rows.Edges, /^10989, of which 990 join/);
