@@ -42,8 +42,8 @@ pub use flow::{MAX_STEPS, SyncFlow};
 pub use g2o::{OtherLines, PoseGraph, read_g2o};
 pub use graph::Graph;
 pub use poses::{
-    MAX_RANK, PoseCertificate, PoseOptions, PoseStage, SynchronizedPoses, synchronize_poses,
-    synchronize_poses_observed,
+    MAX_RANK, PoseCertificate, PoseOptions, PoseStage, SynchronizedPoses, anchor_poses,
+    synchronize_poses, synchronize_poses_observed,
 };
 
 use glam::DQuat;

@@ -302,19 +302,8 @@ pub fn synchronize_poses_observed(
     let x = stiefel::from_rotations(d, &solved.rotations);
     let z = problem.translations(&x);
     let t = |k: usize| DVec3::new(z[k], z[n + k], if d == 3 { z[2 * n + k] } else { 0.0 });
-    let gauge = solved.rotations[anchor].conjugate();
-    let origin = t(anchor);
-    let mut rotations: Vec<DQuat> = solved
-        .rotations
-        .iter()
-        .map(|&q| {
-            let q = (gauge * q).normalize();
-            if q.w < 0.0 { -q } else { q }
-        })
-        .collect();
-    rotations[anchor] = DQuat::IDENTITY;
-    let mut translations: Vec<DVec3> = (0..n).map(|k| gauge * (t(k) - origin)).collect();
-    translations[anchor] = DVec3::ZERO;
+    let positions: Vec<DVec3> = (0..n).map(t).collect();
+    let (rotations, mut translations) = anchor_poses(&solved.rotations, &positions, anchor);
     if d == 2 {
         translations.iter_mut().for_each(|t| t.z = 0.0);
     }
@@ -336,6 +325,32 @@ pub fn synchronize_poses_observed(
         iterations: solved.iterations,
         certificate,
     })
+}
+
+/// Poses in the gauge that puts pose `anchor` at the identity and the origin: each rotation
+/// `q̄_a q_i` (normalised, `w ≥ 0`) and each position `q̄_a (t_i − t_a)`, the anchor's exactly
+/// `(1, 0)`. The solver's answer is in this gauge; a page puts an initial estimate in it too, to
+/// draw the two alike. An `anchor` beyond the poses leaves them as they are.
+pub fn anchor_poses(
+    rotations: &[DQuat],
+    positions: &[DVec3],
+    anchor: usize,
+) -> (Vec<DQuat>, Vec<DVec3>) {
+    let (Some(&r), Some(&origin)) = (rotations.get(anchor), positions.get(anchor)) else {
+        return (rotations.to_vec(), positions.to_vec());
+    };
+    let gauge = r.conjugate();
+    let mut rotations: Vec<DQuat> = rotations
+        .iter()
+        .map(|&q| {
+            let q = (gauge * q).normalize();
+            if q.w < 0.0 { -q } else { q }
+        })
+        .collect();
+    rotations[anchor] = DQuat::IDENTITY;
+    let mut positions: Vec<DVec3> = positions.iter().map(|&p| gauge * (p - origin)).collect();
+    positions[anchor] = DVec3::ZERO;
+    (rotations, positions)
 }
 
 /// `f = Σ κ ‖R_j − R_i R̃_ij‖²_F + τ ‖t_j − t_i − R_i t̃_ij‖²` of the poses, directly (in 2D the

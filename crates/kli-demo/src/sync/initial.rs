@@ -8,7 +8,7 @@
 use std::collections::VecDeque;
 
 use glam::{DQuat, DVec3};
-use kli::sync::PoseGraph;
+use kli::sync::{PoseGraph, anchor_poses};
 
 /// Poses: each one's rotation and position.
 #[derive(Debug, Clone, PartialEq)]
@@ -74,19 +74,9 @@ pub fn chained(graph: &PoseGraph) -> Poses {
     Poses { rotations, positions }
 }
 
-/// `poses` in the gauge that puts pose `anchor` at the identity and the origin, each rotation
-/// with `w ≥ 0` (as the solver returns its own).
+/// `poses` in the gauge that puts pose `anchor` at the identity and the origin, as the solver
+/// returns its own ([`anchor_poses`]).
 pub fn anchored(poses: Poses, anchor: usize) -> Poses {
-    let Some(&r) = poses.rotations.get(anchor) else { return poses };
-    let (gauge, origin) = (r.conjugate(), poses.positions[anchor]);
-    let rotations = poses
-        .rotations
-        .iter()
-        .map(|&q| {
-            let q = (gauge * q).normalize();
-            if q.w < 0.0 { -q } else { q }
-        })
-        .collect();
-    let positions = poses.positions.iter().map(|&p| gauge * (p - origin)).collect();
+    let (rotations, positions) = anchor_poses(&poses.rotations, &poses.positions, anchor);
     Poses { rotations, positions }
 }
