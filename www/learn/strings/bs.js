@@ -38,15 +38,15 @@ export const page = {
     <var>I</var>, det <var>R</var> = 1. To je devet brojeva povezanih sa šest jednačina, za samo tri stepena slobode.
     Pomnoži ih nekoliko hiljada u aritmetici s pokretnim zarezom i zaokruživanje polako narušava jednačine; uzmi
     prosjek dvije takve matrice element po element i rezultat uopšte nije rotacija: na pola puta između <var>I</var>
-    i poluokreta oko <var>z</var> je diag(0, 0, 1), koja spljošti ravan.`,
+    i poluokreta oko <var>z</var> je diag(0, 0, 1), koja cijeli prostor spljošti na osu <var>z</var> (determinanta joj je 0).`,
   "care.p2":
     `Onda tri broja? <dfn id="def-euler">Eulerovi uglovi</dfn> okreću oko <var>z</var> za skretanje, zatim oko nove
     ose <var>y</var> za propinjanje, pa oko nove ose <var>x</var> (nosa) za nagib (piloti ovaj ugao zovu i valjanje;
-    ovaj vodič svuda kaže nagib): <var>R</var> = <var>R<sub>z</sub></var>(skretanje)
+    ovaj vodič ga zove nagib, a „valjanje” čuva za dodatni okret oko nosa u odjeljku 5): <var>R</var> = <var>R<sub>z</sub></var>(skretanje)
     <var>R<sub>y</sub></var>(propinjanje) <var>R<sub>x</sub></var>(nagib). Pomjeri klizač propinjanja ispod prema 90° i
     gledaj kako se osa skretanja i osa nagiba približavaju. Na 90° one su jedna prava: skretanje i nagib sada rade
     isto i jedan stepen slobode je izgubljen. To je <dfn id="def-gimbal">blokada kardana</dfn> (engl. gimbal lock), i
-    nijedan izbor tri ugla je ne izbjegava svuda.`,
+    svaki izbor tri ugla negdje naiđe na nju.`,
   "care.legend1": "Eulerovi uglovi",
   "care.p3":
     `Sada su osa skretanja i osa nagiba razmaknute <output id="lock-out">50.0°</output> (ugao je 90° − |propinjanje|).`,
@@ -60,7 +60,8 @@ export const page = {
     i pomjeraj klizače skretanja i nagiba jedan za drugim.`,
   "care.p6":
     `<strong>Odgovor.</strong> Oba okreću avion oko iste vertikalne prave, a tekst pokazuje razmak od 0°. S nosom
-    usmjerenim pravo dolje (propinjanje od 90° prevodi <var>x</var> u −<var>z</var>), osa nagiba je osa skretanja,
+    usmjerenim pravo dolje (propinjanje od 90° prevodi <var>x</var> u −<var>z</var>; kad je <var>z</var> gore, pozitivno propinjanje
+    ovdje spušta nos), osa nagiba je osa skretanja,
     pa se ta dva ugla računaju samo zajedno: bitna je razlika skretanja i nagiba. Nijedna mala promjena tri ugla ne
     okreće nos u stranu.`,
   "turn.title1": `<span class="number">2</span> Osa, ugao, četiri broja`,
@@ -80,7 +81,8 @@ export const page = {
     `i on okreće vektor <var>v</var>, zapisan kao <var>v<sub>x</sub></var> i + <var>v<sub>y</sub></var> j +
     <var>v<sub>z</sub></var> k, u <var>q</var> <var>v</var> <var>q̄</var>. Ugao je prepolovljen jer <var>q</var>
     djeluje dvaput, po jednom sa svake strane. Jedan okret za drugim je proizvod: <var>q</var>₂<var>q</var>₁ prvo
-    okreće za <var>q</var>₁. Četiri broja i jedan uslov, |<var>q</var>| = 1, koji se popravi jednim dijeljenjem.`,
+    okreće za <var>q</var>₁. Četiri broja i jedan uslov, |<var>q</var>| = 1, a ako ga zaokruživanje pokvari, dijeljenje <var>q</var> sa
+    |<var>q</var>| ga vraća.`,
   "turn.caption1":
     `Avion zaokrenut za <var>q</var>, osa isprekidano. Njegove ose tijela: <span class="x">x</span> (nos), <span
     class="y">y</span> (krilo), <span class="z">z</span> (vertikalni stabilizator).`,
@@ -121,8 +123,8 @@ export const page = {
     <var>p</var>·<var>r</var> &lt; 0, teče dužim putem, pa prvo promijeni predznak od <var>r</var> tako da bude
     <var>p</var>·<var>r</var> ≥ 0.`,
   "cover.caption1":
-    `Lijevo: kružnica na S³ kroz 1 i osu <var>u</var>, luk od 1 do <var>q</var> i −<var>q</var> nasuprot. Desno:
-    avion zaokrenut za <var>q</var> i za −<var>q</var>.`,
+    `Lijevo (gore, na uskom ekranu): kružnica na S³ kroz 1 i osu <var>u</var>, luk od 1 do <var>q</var> i
+    −<var>q</var> nasuprot. Desno (dolje): avion zaokrenut za <var>q</var> i za −<var>q</var>.`,
   "cover.p4":
     `Pri <output id="cover-out">θ = 90°, q = 0.707 + 0.000 i + 0.000 j + 0.707 k</output> (pomjera ga i klizač ugla
     iz odjeljka 2).`,
@@ -187,7 +189,7 @@ export const page = {
     `Tačka nosa <var>h</var>(<var>q</var>) (narandžasto) i tačka krila (zeleno) na kružnici pravaca okomitih na nos
     (okomit znači pod pravim uglom; za vektore, skalarni proizvod jednak 0). Povuci mišem ili koristi tipke sa
     strelicama da okreneš sferu.`,
-  "hopf.caption2": "Okret iz odjeljka 2, zatim okret oko nosa.",
+  "hopf.caption2": "Okret iz odjeljka 2, zatim valjanje oko nosa.",
   "hopf.legend1": "Valjanje",
   "hopf.p5":
     `<output id="hopf-out">Nos pokazuje prema (0.000, 1.000, 0.000); krilo prema (−1.000, 0.000, 0.000).</output>`,
@@ -214,7 +216,9 @@ export const page = {
     kvaternioni. Ispod, 20 faza
     ima frekvencije ravnomjerno raspoređene od −0.5 do 0.5 (narandžaste se okreću naprijed, ljubičaste unazad). Za
     mnogo oscilatora s takvom raspodjelom privlačenje pobjeđuje čim <var>K</var> pređe 2/(π<var>g</var>(0)) ≈ 0.64,
-    gdje je <var>g</var>(0) = 1 gustina frekvencija u njihovom središtu. Postavi <var>K</var> i pritisni
+    gdje je <var>g</var>(0) = 1 gustina frekvencija u njihovom središtu. Blizu te vrijednosti okupljanje je sporo:
+    na ovoj slici, u 12 jedinica vremena i s 20 faza koje počinju gotovo raštrkane, jasno se vidi tek od otprilike
+    <var>K</var> = 1.2. Postavi <var>K</var> i pritisni
     <strong>Pusti od t = 0</strong>.`,
   "kuramoto.caption1":
     `Faze na svojoj kružnici, strelica je njihova prosječna tačka; pored je <var>R</var>(<var>t</var>) do kraja trake
@@ -240,7 +244,8 @@ export const page = {
     oscilatoru bez dijela duž <var>q<sub>i</sub></var>. Fiksiraj jednog od njih u rotaciji <var>r</var>,
     tako da se nikad ne pomjera: to je <dfn id="def-leader">vođa</dfn>, a ostali, <em>sljedbenici</em>, se usklade,
     a zatim se smire na njemu. S jednim sljedbenikom, <var>N</var> = 2, sljedbenik zadovoljava
-    <var>q</var>′ = (<var>K</var>/2)(<var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>): metoda iz rada, u
+    <var>q</var>′ = (<var>K</var>/2)(<var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>): metoda iz rada
+    (tačno pri <var>K</var> = 2; drugi <var>K</var> prolazi isti put po satu koji je <var>K</var>/2 puta brži), u
     sljedećem odjeljku. Koliko se slažu, mjeri se kao na kružnici: parametar reda na S³ je dužina <var>R</var> =
     |(1/<var>N</var>) Σ<sub><var>j</var></sub> <var>q<sub>j</sub></var>| srednje vrijednosti kvaterniona
     <var>q<sub>j</sub></var> kao tačaka u R⁴ (računajući i vođu), 1 kad su svi u jednoj tački, mali kad su
@@ -254,7 +259,7 @@ export const page = {
     `<output id="lohe-out">Pri t = 0.00, R = 0.396; najdalji sljedbenik je okret od 174.5° od r.</output>`,
   "kuramoto.question1": "Predvidi, pa provjeri: bez sprezanja, K = 0, šta radi R?",
   "kuramoto.p9":
-    `Pogodi, pa <a class="set" href="?K=0#kuramoto" data-state='{"coupling":0}' data-play="phases">postavi K = 0 i
+    `Pogodi, pa <a class="set" href="?K=0&amp;K3=0#kuramoto" data-state='{"coupling":0,"lohe":0}' data-play="phases">postavi K = 0 i
     pusti</a>.`,
   "kuramoto.p10":
     `<strong>Odgovor.</strong> Svaka faza se okreće svojom brzinom, <var>θ<sub>i</sub></var>(<var>t</var>) =
@@ -314,7 +319,7 @@ export const page = {
     logaritamskoj skali, <var>ε</var> isprekidano, zaustavljanje <var>T</var> i <var>T</var>* tačkasto.`,
   "kli.legend1": "Algoritam 1",
   "kli.p9":
-    `<output id="steps-out">Korak n = 0 pri t = 0.00: ‖r − q‖ = 1.00e+0. Uz ε = 1e-5 i δ = 0.01 petlja staje nakon
+    `<output id="steps-out">Korak n = 0 pri t = 0.00: ‖r − q‖ = 1.00e+0. Uz ε = 10⁻⁵ i δ = 0.01 petlja staje nakon
     1166 koraka, pri T = 11.66; T* = 11.6568.</output>`,
   "kli.question1": "Predvidi, pa provjeri: u kojem je trenutku KLI na pola luka?",
   "kli.p10":
@@ -349,9 +354,11 @@ export const page = {
     <var>h</var> <var>q</var>′, ide duž tangente, a korak po tangenti uvijek napušta sferu: |<var>q</var> +
     <var>h</var><var>v</var>|² = 1 + <var>h</var>²|<var>v</var>|² kad je <var>v</var> okomit na <var>q</var>. <dfn
     id="def-rk4">RK4</dfn>, klasična Runge–Kutta metoda četvrtog reda, računa izvod četiri puta u jednom koraku i
-    uzima njihov ponderisani prosjek; njena greška opada kao <var>h</var>⁴, a tako i njeno odstupanje od sfere.
+    uzima njihov ponderisani prosjek, (<var>k</var>₁ + 2<var>k</var>₂ + 2<var>k</var>₃ + <var>k</var>₄)/6; njena greška opada kao <var>h</var>⁴, a tako i njeno odstupanje od sfere.
     <strong>Geodezijski</strong> korak uzima prirast metode RK4 kao okret duž velikog kruga, pa je |<var>q</var>| =
-    1 po konstrukciji. Ovaj tok vraća zalutali |<var>q</var>| prema 1: za svako
+    1 po konstrukciji. Ovaj tok, zapisan kao <var>q</var>′ = <var>r</var> − (<var>q</var>·<var>r</var>)<var>q</var>
+    (oblik koji ova stranica integrira; izvan sfere razlikuje se od −½(<var>q</var> <var>r̄</var> <var>q</var> −
+    <var>r</var>) iz jednačine 3), vraća zalutali |<var>q</var>| prema 1: za svako
     <var>q</var>, d|<var>q</var>|²/d<var>t</var> = 2 <var>q</var>·<var>q</var>′ = 2(<var>q</var>·<var>r</var>)(1 −
     |<var>q</var>|²), što smanjuje |<var>q</var>| kad je veći od 1 i povećava ga kad je manji, sve dok je
     <var>q</var>·<var>r</var> &gt; 0 (na putu od <var>p</var> do <var>r</var> uvijek jeste). Zato ovdje odstupanje
@@ -388,7 +395,9 @@ export const page = {
   "many.p2":
     `Animator postavi zglobove lika u nekoliko trenutaka, ključnim kadrovima, a računar popuni ostalo. SLERP od
     ključa do ključa okreće ujednačeno na svakom dijelu, ali naglo skrene na svakom ključu, gdje se osa i
-    brzina naglo promijene: skok ugaone brzine, vidljiv skok na ekranu i udar momenta za motor ili kardan. KLI lanac na stranici
+    brzina naglo promijene: skok ugaone brzine (brzine okretanja, vektora duž ose; <a href="#def-omega">definisana niže</a>), vidljiv skok
+    na ekranu i udar momenta sile (uvrtanja koje motor mora dati) za motor ili kardan. KLI lanac (legenda slike ga
+    zove Kuramoto–Lohe chain) na stranici
     <a href="keyframes.html">Mnogo rotacija</a> gusto uzorkuje cijelu krivu na S³ i fiksira uzorke u ključevima
     (fiksirani vođe, odjeljak 6); svaki drugi uzorak slijedi Kuramoto–Loheov tok, privlače ga susjedi, a odbijaju
     drugi susjedi, i smiri se na krivoj kroz ključeve čija se brzina okretanja mijenja glatko. (Između samo dva
@@ -396,11 +405,13 @@ export const page = {
     nos (Hopfovo preslikavanje iz odjeljka 5) duž tri krive kroz iste ključeve: KLI lanac (narandžasto, puna linija),
     <dfn id="def-squad">Squad</dfn> (Shoemakeov splajn kvaterniona, uobičajena glatka kriva u softveru za animaciju,
     sastavljena od SLERP-ova između dodatnih kontrolnih tačaka; ljubičasto, isprekidano) i SLERP po dijelovima
-    (tamno, tačkasto). Bijele tačke k0, k1, … su ključevi.`,
+    (tamno, tačkasto). Bijele tačke k0, k1, … su ključevi; k0 i k1 dijele jednu tačku, jer je prvi dio čisti okret oko nosa, koji
+    Hopfovo preslikavanje ne može pokazati (odjeljak 5).`,
   "many.p10":
     `Slika iznad prikazuje kamo je okrenut nos, a ne koliko se brzo tijelo okreće, a gledalac vidi upravo prelom u toj
     brzini. Tijelo koje se okreće u svakom trenutku se okreće oko neke ose nekom brzinom. Njegova <dfn id="def-omega">brzina
-    okretanja</dfn>, ugaona brzina <var>ω</var>(<var>t</var>), jeste vektor duž te ose čija je dužina
+    okretanja</dfn>, ugaona brzina <var>ω</var>(<var>t</var>) (ne vlastite frekvencije <var>ω<sub>i</sub></var> iz odjeljka 6),
+    jeste vektor duž te ose čija je dužina
     |<var>ω</var>| ta brzina, u radijanima po jedinici vremena (s kvaternionima, <var>q</var>′ = ½ <var>ω</var>
     <var>q</var>). SLERP od ključa do ključa okreće se oko jedne stalne ose jednolikom brzinom na svakom dijelu: dio
     koji se okrene za <var>θ</var> za vrijeme Δ<var>t</var> ima |<var>ω</var>| = <var>θ</var>/Δ<var>t</var>. U
@@ -408,7 +419,7 @@ export const page = {
     kojom se <var>ω</var> mijenja, tu je neograničeno, impuls: udar. U animaciji je to vidljiv skok u ključnom kadru; za kameru,
     podrhtavanje slike; za motor ili zglob robota, nagli skok momenta sile (oko nepomične ose, moment je moment
     inercije puta ugaono ubrzanje; u tri dimenzije, τ = <var>I</var><var>ω̇</var> + <var>ω</var> ×
-    <var>I</var><var>ω</var>), koji opterećuje zupčanike i izaziva vibracije ruke robota. Klizač glatkoće postavlja KLI lanac od 0, što je
+    <var>I</var><var>ω</var>, gdje je <var>I</var> sada matrica inercije, a ne jedinična matrica iz odjeljka 1), koji opterećuje zupčanike i izaziva vibracije ruke robota. Klizač glatkoće postavlja KLI lanac od 0, što je
     sam SLERP po dijelovima, do 1, najglađeg; pri svakoj glatkoći većoj od 0, <var>ω</var>, pa čak i <var>ω̇</var>, mijenjaju se bez
     skoka.
     Ispod je brzina okretanja duž lanca kroz ista četiri ključa, od k0 pri <var>t</var> = 0 do k3 pri
@@ -430,7 +441,7 @@ export const page = {
     d<var>t</var>, gdje je <var>q</var>″ drugi izvod od <var>q</var>(<var>t</var>). Budući da je
     |<var>q</var>″|² = |<var>ω̇</var>|²/4 + |<var>ω</var>|⁴/16, taj zbir odmjerava ugaono ubrzanje naspram
     neravnomjerne brzine. Zato kriva pri 1 nije ona s najmanjim ∫|<var>ω̇</var>|² d<var>t</var> kroz ključeve,
-    iako je na nasumičnim ključevima njen ∫|<var>ω̇</var>|² oko 0.84 Squadovog (<a
+    iako je na nasumičnim ključevima njen ∫|<var>ω̇</var>|² oko 0.8 Squadovog (0.78–0.84 u mjerenjima projekta; <a
     href="math.html#many-rotations-the-kuramotolohe-chain-the-papers-open-question">stranica o matematici</a>). Pomjeri klizač od 1 do 0.05 i prati kako
     navedeni |<var>ω̇</var>| raste, pa do 0, gdje više nije ograničen.`,
   "many.question2":
@@ -449,13 +460,14 @@ export const page = {
   "many.heading2": "Roj: sinhronizacija ili njena suprotnost",
   "many.p3":
     `Dronovi koji se usaglašavaju o smjeru leta, sateliti o položaju (orijentaciji letjelice u prostoru), jato koje
-    skreće kao jedno: mnogo rotacija spregnutih neabelovskim Kuramotovim (Loheovim) modelom iz odjeljka 6, gdje
+    skreće kao jedno: mnogo rotacija spregnutih neabelovim Kuramotovim (Loheovim) modelom iz odjeljka 6, gdje
     svaka privlači svaku, bez vođe. Na slici, sa stranice <a href="swarm.html">Roj</a>, svaka od 200 tačaka je jedna
     rotacija, nacrtana Hopfovim preslikavanjem tamo kamo usmjerava nos. Na početku su nasumično raspršene po S³.
     Sprezanje <var>K</var> određuje privlačenje. Za <var>K</var> &gt; 0 svaku privlače ostale: pri <var>K</var> = 1
-    skupe se u jednu tačku do <var>t</var> = 8 (<dfn id="def-sync">sinhronizacija</dfn>, parametar reda
+    skupe se u jednu tačku do <var>t</var> = 8 po vlastitom satu slike, a ne po traci vremena (<dfn id="def-sync">sinhronizacija</dfn>, parametar reda
     <var>R</var> teži ka 1). Za <var>K</var> &lt; 0 privlačenje postaje odbijanje. Fiksiraj jednu od njih, vođu kao
-    u odjeljku 6, i ostale se skupe na njoj; s jednim sljedbenikom to je KLI. Stranica Roj može fiksirati vođe, a
+    u odjeljku 6, i ostale se skupe na njoj; s jednim sljedbenikom to je KLI (tačno pri <var>K</var> = 2; drugi <var>K</var> prolazi isti put po
+    satu koji je <var>K</var>/2 puta brži). Stranica Roj može fiksirati vođe, a
     KLI ima kao gotovu postavku.`,
   "many.question3":
     `Predvidi, pa provjeri: pri K = 1 tačke se skupe u jednu. Pri K = −1 svaka odbija ostale. Hoće li se razletjeti?`,
@@ -520,9 +532,10 @@ export const page = {
     `Pogodi, pa <button type="button" class="set-figure" data-figure="fig-average" data-attribute="outliers"
     data-value="0.5">neka pola mjerenja budu izuzeci</button>.`,
   "many.p9":
-    `<strong>Odgovor.</strong> Tetivna i Karcherova sredina se odmiču, jer svako mjerenje ulazi s kvadratom svoje
-    udaljenosti; medijan računa svako mjerenje samo njegovom udaljenošću i ostaje bliže, kako pokazuje tabela na
-    stranici <a href="average.html">Usrednjavanje</a>.`,
+    `<strong>Odgovor.</strong> Kvaternionsku sredinu (zeleno) i Karcherovu sredinu (ljubičasto) izuzeci odvuku
+    najdalje, za oko 11° i 12°; tetivnu sredinu (narandžasto) manje, za oko 6°, jer kvadrat tetive do izuzetka nikad
+    ne prelazi 8; medijan (plavo), koji svako mjerenje računa samo njegovom udaljenošću, ostaje unutar oko 2°, kako
+    pokazuje tabela na stranici <a href="average.html">Usrednjavanje</a>.`,
   "glossary.title1": "Pojmovnik",
   "glossary.term1": "Algoritam 1",
   "glossary.definition1":
@@ -627,7 +640,7 @@ export const page = {
     href="#many">Odjeljak 9</a>`,
   "glossary.term26": "Loheov model",
   "glossary.definition26":
-    `Kuramotov model proširen sa faza na kružnici na rotacije na S³ (neabelovski Kuramotov model): svaki jedinični
+    `Kuramotov model proširen sa faza na kružnici na rotacije na S³ (neabelov Kuramotov model): svaki jedinični
     kvaternion vučen po sferi prema ostalima. <a href="#kuramoto">Odjeljak 6</a>`,
   "glossary.term27": "fiksirani vođa",
   "glossary.definition27":

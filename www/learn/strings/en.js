@@ -40,15 +40,15 @@ export const page = {
     <var>R</var>ᵀ<var>R</var> = <var>I</var>, det <var>R</var> = 1. That is nine numbers held together by six
     equations, for only three freedoms. Multiply a few thousand of them in floating point and rounding slowly breaks
     the equations; average two of them entry by entry and the result is no rotation at all: halfway between
-    <var>I</var> and a half turn about <var>z</var> is diag(0, 0, 1), which squashes the plane flat.`,
+    <var>I</var> and a half turn about <var>z</var> is diag(0, 0, 1), which flattens all of space onto the <var>z</var> axis (its determinant is 0).`,
   "care.p2":
     `Three numbers then? <dfn id="def-euler">Euler angles</dfn> turn about <var>z</var> by the yaw, then about the
     new <var>y</var> by the pitch, then about the new <var>x</var> (the nose) by the bank (pilots also call this
-    angle the roll; this tour says bank throughout): <var>R</var> = <var>R<sub>z</sub></var>(yaw)
+    angle the roll; this tour calls it bank, and keeps “roll” for the extra turn about the nose in section 5): <var>R</var> = <var>R<sub>z</sub></var>(yaw)
     <var>R<sub>y</sub></var>(pitch) <var>R<sub>x</sub></var>(bank). Move the pitch towards 90° below and watch the
     yaw axis and the bank axis close in on each other. At 90° they are one line: yaw and bank now do the same thing
-    and one freedom is gone. That is <dfn id="def-gimbal">gimbal lock</dfn>, and no choice of three angles avoids it
-    somewhere.`,
+    and one freedom is gone. That is <dfn id="def-gimbal">gimbal lock</dfn>, and every choice of three angles runs into
+    it somewhere.`,
   "care.legend1": "Euler angles",
   "care.p3":
     `Now the yaw axis and the bank axis are <output id="lock-out">50.0°</output> apart (the angle is 90° − |pitch|).`,
@@ -62,7 +62,8 @@ export const page = {
     90°</a> and move the yaw and the bank sliders in turn.`,
   "care.p6":
     `<strong>Answer.</strong> Both turn the aircraft about the same vertical line, and the text reads 0° apart. With
-    the nose pointing straight down (pitch 90° turns <var>x</var> to −<var>z</var>), the bank axis is the yaw axis,
+    the nose pointing straight down (pitch 90° turns <var>x</var> to −<var>z</var>; with <var>z</var> up, positive pitch here tips the nose
+    down), the bank axis is the yaw axis,
     so the two angles only count together: what matters is yaw minus bank. No small change of the three angles turns
     the nose sideways.`,
   "turn.title1": `<span class="number">2</span> An axis, an angle, four numbers`,
@@ -81,7 +82,8 @@ export const page = {
     `and it turns a vector <var>v</var>, written as <var>v<sub>x</sub></var> i + <var>v<sub>y</sub></var> j +
     <var>v<sub>z</sub></var> k, into <var>q</var> <var>v</var> <var>q̄</var>. The angle is halved because
     <var>q</var> acts twice, once on each side. One turn after another is a product: <var>q</var>₂<var>q</var>₁
-    turns by <var>q</var>₁ first. Four numbers and one condition, |<var>q</var>| = 1, which a division puts right.`,
+    turns by <var>q</var>₁ first. Four numbers and one condition, |<var>q</var>| = 1, and if rounding spoils it, dividing <var>q</var> by
+    |<var>q</var>| restores it.`,
   "turn.caption1":
     `The aircraft turned by <var>q</var>, the axis dashed. Its body axes: <span class="x">x</span> (the nose), <span
     class="y">y</span> (a wing), <span class="z">z</span> (the fin).`,
@@ -124,8 +126,8 @@ export const page = {
     method (section 7), does not choose: from <var>p</var>·<var>r</var> &lt; 0 it flows the long way round, so first
     flip <var>r</var> to make <var>p</var>·<var>r</var> ≥ 0.`,
   "cover.caption1":
-    `Left: the circle of S³ through 1 and the axis <var>u</var>, the arc from 1 to <var>q</var>, and −<var>q</var>
-    opposite. Right: the aircraft turned by <var>q</var> and by −<var>q</var>.`,
+    `Left (above, on a narrow screen): the circle of S³ through 1 and the axis <var>u</var>, the arc from 1 to
+    <var>q</var>, and −<var>q</var> opposite. Right (below): the aircraft turned by <var>q</var> and by −<var>q</var>.`,
   "cover.p4":
     `At <output id="cover-out">θ = 90°, q = 0.707 + 0.000 i + 0.000 j + 0.707 k</output> (the angle slider of section
     2 moves it too).`,
@@ -217,7 +219,9 @@ export const page = {
     themselves.
     Below, 20 phases have frequencies spread evenly from −0.5 to 0.5 (orange turn forwards, purple backwards). For
     many oscillators with such a spread, the pull wins once <var>K</var> passes 2/(π<var>g</var>(0)) ≈ 0.64, where
-    <var>g</var>(0) = 1 is how densely the frequencies lie at their centre. Set <var>K</var> and press <strong>Play
+    <var>g</var>(0) = 1 is how densely the frequencies lie at their centre. Near that value the gathering is slow: on this figure's 12
+    units of time, with 20 phases that start almost scattered, it shows clearly only from about <var>K</var> = 1.2.
+    Set <var>K</var> and press <strong>Play
     from t = 0</strong>.`,
   "kuramoto.caption1":
     `The phases on their circle, the arrow their average point; beside it <var>R</var>(<var>t</var>) up to the
@@ -243,7 +247,8 @@ export const page = {
     oscillator with the part along <var>q<sub>i</sub></var> taken away. Pin one of them at a rotation <var>r</var>,
     so that it never moves: it is the <dfn id="def-leader">leader</dfn>, and the others, the <em>followers</em>,
     fall into step and then settle on it. With one follower, <var>N</var> = 2, the follower obeys
-    <var>q</var>′ = (<var>K</var>/2)(<var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>): the paper's method,
+    <var>q</var>′ = (<var>K</var>/2)(<var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>): the paper's method
+    (exactly at <var>K</var> = 2; another <var>K</var> runs the same path on a clock <var>K</var>/2 times as fast),
     next. How much they agree is measured as on the circle: the order parameter on S³ is the length <var>R</var> =
     |(1/<var>N</var>) Σ<sub><var>j</var></sub> <var>q<sub>j</sub></var>| of the mean of the <var>q<sub>j</sub></var>
     as points of R⁴ (the leader counted too), 1 when all are at one point, small when they are spread over S³. It is not blind to the sign: <var>q</var> and
@@ -256,7 +261,7 @@ export const page = {
     `<output id="lohe-out">At t = 0.00, R = 0.396; the farthest follower is a 174.5° turn from r.</output>`,
   "kuramoto.question1": "Predict, then check: with no coupling, K = 0, what does R do?",
   "kuramoto.p9":
-    `Guess, then <a class="set" href="?K=0#kuramoto" data-state='{"coupling":0}' data-play="phases">set K = 0 and
+    `Guess, then <a class="set" href="?K=0&amp;K3=0#kuramoto" data-state='{"coupling":0,"lohe":0}' data-play="phases">set K = 0 and
     play</a>.`,
   "kuramoto.p10":
     `<strong>Answer.</strong> Each phase turns at its own speed, <var>θ<sub>i</sub></var>(<var>t</var>) =
@@ -313,7 +318,7 @@ export const page = {
     <var>ε</var> dashed, the stop <var>T</var>, and <var>T</var>* dotted.`,
   "kli.legend1": "Algorithm 1",
   "kli.p9":
-    `<output id="steps-out">Step n = 0 at t = 0.00: ‖r − q‖ = 1.00e+0. With ε = 1e-5 and δ = 0.01 the loop stops
+    `<output id="steps-out">Step n = 0 at t = 0.00: ‖r − q‖ = 1.00e+0. With ε = 10⁻⁵ and δ = 0.01 the loop stops
     after 1166 steps, at T = 11.66; T* = 11.6568.</output>`,
   "kli.question1": "Predict, then check: at what time is KLI halfway along the arc?",
   "kli.p10":
@@ -348,9 +353,12 @@ export const page = {
     <var>q</var> + <var>h</var> <var>q</var>′, moves along the tangent, and a tangent step always leaves the sphere:
     |<var>q</var> + <var>h</var><var>v</var>|² = 1 + <var>h</var>²|<var>v</var>|² when <var>v</var> is square to
     <var>q</var>. <dfn id="def-rk4">RK4</dfn>, the classical fourth-order Runge–Kutta method, samples the slope four
-    times in a step and averages them; its error shrinks like <var>h</var>⁴, and so does its drift off the sphere.
+    times in a step and takes their weighted average, (<var>k</var>₁ + 2<var>k</var>₂ + 2<var>k</var>₃ +
+    <var>k</var>₄)/6; its error shrinks like <var>h</var>⁴, and so does its drift off the sphere.
     The <strong>geodesic</strong> step takes RK4's increment as a turn along the great circle, so |<var>q</var>| = 1
-    by construction. This flow pulls a stray |<var>q</var>| back towards 1: for any
+    by construction. This flow, written <var>q</var>′ = <var>r</var> − (<var>q</var>·<var>r</var>)<var>q</var> (the
+    form this page integrates; off the sphere it differs from eq. 3's −½(<var>q</var> <var>r̄</var> <var>q</var> −
+    <var>r</var>)), pulls a stray |<var>q</var>| back towards 1: for any
     <var>q</var>, d|<var>q</var>|²/d<var>t</var> = 2 <var>q</var>·<var>q</var>′ = 2(<var>q</var>·<var>r</var>)(1 −
     |<var>q</var>|²), which shrinks |<var>q</var>| when it is above 1 and grows it when below, as long as
     <var>q</var>·<var>r</var> &gt; 0 (on the way from <var>p</var> to <var>r</var>, always). So here the drift does
@@ -387,26 +395,30 @@ export const page = {
   "many.p2":
     `An animator sets a character's joints at a few moments, the keyframes, and the computer fills in the rest. SLERP
     from key to key turns at a steady rate on each piece but snaps round at every key, where the axis and speed change at
-    once: a jump in angular velocity, a visible snap on screen and a kick of torque for a motor or a gimbal. The KLI
-    chain on <a href="keyframes.html">Many rotations</a> samples the whole curve densely on S³ and pins the samples at
+    once: a jump in angular velocity (the turning rate, a vector along the axis; <a href="#def-omega">defined below</a>), a visible snap on
+    screen and a kick of torque (the twist a motor must apply) for a motor or a gimbal. The KLI chain (the figure's
+    key calls it the Kuramoto–Lohe chain) on <a href="keyframes.html">Many rotations</a> samples the whole curve densely on S³ and pins the samples at
     the keys (pinned leaders, section 6); every other sample follows a Kuramoto–Lohe flow, drawn by its neighbours and
     pushed off by its second neighbours, and settles on a curve through the keys whose turning rate changes smoothly.
     (Between two keys alone it is SLERP's arc, as KLI is.) Move <em>smoothness</em> from 0 (piecewise SLERP) to 1. The figure draws where the nose
     points (the Hopf map of section 5) along three curves through the same keys: the KLI chain (orange, solid), <dfn
     id="def-squad">Squad</dfn> (Shoemake's spline of quaternions, the usual smooth curve of animation software,
     built from SLERPs between extra control points; purple, dashed) and piecewise SLERP (dark, dotted). The white
-    dots k0, k1, … are the keys.`,
+    dots k0, k1, … are the keys; k0 and k1 share one dot, since the first piece is a pure turn about the nose, which
+    the Hopf map cannot show (section 5).`,
   "many.p10":
     `The figure above shows where the nose points, not how fast the object turns, and a kink in how fast is what a
     viewer sees. At each moment a turning object turns about some axis at some rate. Its <dfn id="def-omega">turning rate</dfn>, the
-    angular velocity <var>ω</var>(<var>t</var>), is the vector along that axis whose length |<var>ω</var>| is the
+    angular velocity <var>ω</var>(<var>t</var>) (not the natural frequencies <var>ω<sub>i</sub></var> of section 6),
+    is the vector along that axis whose length |<var>ω</var>| is the
     rate, in radians per unit of time (with quaternions, <var>q</var>′ = ½ <var>ω</var> <var>q</var>). SLERP from
     key to key turns about one fixed axis at one steady rate on each piece: a piece that turns by <var>θ</var> in a
     time Δ<var>t</var> has |<var>ω</var>| = <var>θ</var>/Δ<var>t</var>. At a key the next piece takes over with
     another axis and rate, so <var>ω</var> jumps: the angular acceleration <var>ω̇</var>, the rate at which
     <var>ω</var> changes, is unbounded there, an impulse: a kick. In an animation that is a visible snap at the keyframe; for a camera, a shake in the picture;
     for a motor or a robot's joint, a spike of torque (about a fixed axis, torque is the moment of inertia times the angular
-    acceleration; in three dimensions, τ = <var>I</var><var>ω̇</var> + <var>ω</var> × <var>I</var><var>ω</var>), which strains the gears and sets the arm vibrating. The smoothness slider sets the KLI chain
+    acceleration; in three dimensions, τ = <var>I</var><var>ω̇</var> + <var>ω</var> × <var>I</var><var>ω</var>,
+    where <var>I</var> is now the inertia matrix, not the identity of section 1), which strains the gears and sets the arm vibrating. The smoothness slider sets the KLI chain
     from 0, piecewise SLERP itself, to 1, its smoothest; at any smoothness above 0, <var>ω</var> and even <var>ω̇</var> change
     without a jump. Below, the turning rate along the chain through the same four keys, k0 at <var>t</var> = 0 to k3 at
     <var>t</var> = 3: the keyframes' own time, not the time bar's.`,
@@ -427,7 +439,7 @@ export const page = {
     <var>q</var>″ is the second derivative of <var>q</var>(<var>t</var>). Since |<var>q</var>″|² =
     |<var>ω̇</var>|²/4 + |<var>ω</var>|⁴/16, that sum trades angular acceleration against uneven speed. So the
     curve at 1 is not the one with the least ∫|<var>ω̇</var>|² d<var>t</var> through the keys, though on random keys
-    its ∫|<var>ω̇</var>|² is about 0.84 of Squad's (<a
+    its ∫|<var>ω̇</var>|² is about 0.8 of Squad's (0.78–0.84 in the project's measurements; <a
     href="math.html#many-rotations-the-kuramotolohe-chain-the-papers-open-question">the mathematics page</a>). Slide from 1 down to 0.05 and watch the
     quoted |<var>ω̇</var>| grow, then to 0, where it has no bound at all.`,
   "many.question2":
@@ -450,9 +462,10 @@ export const page = {
     leader. In the figure, from <a href="swarm.html">The swarm</a>, each of the 200 dots is one rotation, drawn by
     the Hopf map where it points the nose. They start scattered at random over S³. The coupling <var>K</var> sets the
     pull. With <var>K</var> &gt; 0 each is drawn towards the others: at <var>K</var> = 1 they gather into a single
-    dot by <var>t</var> = 8 (<dfn id="def-sync">synchronisation</dfn>, the order parameter <var>R</var> going to 1).
+    dot by <var>t</var> = 8 on the figure's own clock, not the time bar's (<dfn id="def-sync">synchronisation</dfn>, the order parameter <var>R</var> going to 1).
     With <var>K</var> &lt; 0 the pull becomes a push. Pin one of them, a leader as in section 6, and the rest
-    gather on it instead; with a single follower, that is KLI. The swarm page can pin leaders, and has KLI as a
+    gather on it instead; with a single follower, that is KLI (exactly at <var>K</var> = 2; another <var>K</var>
+    runs the same path on a clock <var>K</var>/2 times as fast). The swarm page can pin leaders, and has KLI as a
     preset.`,
   "many.question3":
     `Predict, then check: at K = 1 the dots gather into one. At K = −1 each pushes the others away. Do they fly
@@ -516,8 +529,9 @@ export const page = {
     `Guess, then <button type="button" class="set-figure" data-figure="fig-average" data-attribute="outliers"
     data-value="0.5">set half of them wild</button>.`,
   "many.p9":
-    `<strong>Answer.</strong> The chordal and Karcher means are pulled away, since every measurement counts with its
-    squared distance; the median counts each by its distance alone and stays closer, as the table on <a
+    `<strong>Answer.</strong> The quaternion mean (green) and the Karcher mean (purple) are pulled farthest, about
+    11° and 12°; the chordal mean (orange) less, about 6°, since a wild one's squared chord can never exceed 8; the
+    median (blue), which counts each by its distance alone, stays within about 2°, as the table on <a
     href="average.html">Averaging</a> shows.`,
   "glossary.title1": "Glossary",
   "glossary.term1": "Algorithm 1",
