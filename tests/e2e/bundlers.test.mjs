@@ -94,16 +94,32 @@ import wasm from "kli/kli_bg.wasm";
 import swarmWasm from "kli/swarm_bg.wasm";
 import splineWasm from "kli/spline_bg.wasm";
 await Promise.all([init({ module_or_path: wasm }), initSwarm({ module_or_path: swarmWasm }), initSpline({ module_or_path: splineWasm })]);`));
-  execFileSync(bin("esbuild"), [join(dir, "main.js"), "--bundle", "--format=esm", "--platform=browser", "--splitting", "--loader:.wasm=file",
-    `--outdir=${join(dir, "dist")}`, "--log-level=warning"], { cwd: project, stdio: "pipe" });
+  const args = (out) => [join(dir, "main.js"), "--bundle", "--format=esm", "--platform=browser", "--splitting",
+    "--loader:.wasm=file", `--outdir=${out}`, "--log-level=warning"];
+  execFileSync(bin("esbuild"), args(join(dir, "dist")), { cwd: project, stdio: "pipe" });
   writeFileSync(join(dir, "dist/index.html"), page);
   const { result, problems, loaded: files } = await runApp(join(dir, "dist"));
   assert.deepEqual(problems, []);
   assert.deepEqual(result, expected);
-  // The inlined copies are chunks of their own, in dist but never downloaded.
+  // Without the condition the inlined copies are chunks of their own, in dist but never
+  // downloaded; with `--conditions=production` (the glue without them) they are not built at all.
   assert.ok(wasmFiles(files), files.join(", "));
-  assert.equal(readdirSync(join(dir, "dist")).filter((n) => n.includes(".inline")).length, 3);
+  assert.equal(inlined(join(dir, "dist")).length, 3);
+  const lean = join(dir, "production");
+  execFileSync(bin("esbuild"), [...args(lean), "--conditions=production"], { cwd: project, stdio: "pipe" });
+  writeFileSync(join(lean, "index.html"), page);
+  const production = await runApp(lean);
+  assert.deepEqual(production.problems, []);
+  assert.deepEqual(production.result, expected);
+  assert.deepEqual(inlined(lean), []);
 });
+
+/** The files of a build's output that hold an inlined .wasm: each entry's `_bg.inline` chunk, or
+ *  any script with a long base64 run (a bundler may rename or merge the chunk). */
+function inlined(dir) {
+  return readdirSync(dir, { recursive: true }).map(String)
+    .filter((n) => n.includes(".inline") || (/\.m?js$/.test(n) && /[A-Za-z0-9+\/]{20000}/.test(readFileSync(join(dir, n), "utf8"))));
+}
 
 test("Vite 8: the README's code unchanged (vite build)", async () => {
   const dir = join(project, "vite-app");
@@ -115,6 +131,8 @@ test("Vite 8: the README's code unchanged (vite build)", async () => {
   assert.deepEqual(problems, []);
   assert.deepEqual(result, expected);
   assert.ok(wasmFiles(files), files.join(", "));
+  // The export condition `production`: the glue without the inlined copies, none in dist.
+  assert.deepEqual(inlined(join(dir, "dist")), []);
 });
 
 test("webpack 5: the README's code unchanged (webpack --mode production)", async () => {
@@ -128,6 +146,7 @@ test("webpack 5: the README's code unchanged (webpack --mode production)", async
   assert.deepEqual(problems, []);
   assert.deepEqual(result, expected);
   assert.ok(wasmFiles(files), files.join(", "));
+  assert.deepEqual(inlined(join(dir, "dist")), []);
 });
 
 /** Runs an app under a Vite dev server (the version given by its module), as `npm run dev` does. */

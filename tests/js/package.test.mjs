@@ -27,7 +27,7 @@ before(() => {
 
 test("the tarball holds every file the package needs, and only those", () => {
   const installed = readdirSync(join(project, "node_modules/kli")).sort();
-  const entry = (m) => [`${m}.d.ts`, `${m}.js`, `${m}.node.js`, `${m}_bg.inline.js`, `${m}_bg.wasm`, `${m}_bg.wasm.d.ts`];
+  const entry = (m) => [`${m}.d.ts`, `${m}.js`, `${m}.node.js`, `${m}.production.js`, `${m}_bg.inline.js`, `${m}_bg.wasm`, `${m}_bg.wasm.d.ts`];
   assert.deepEqual(installed, ["LICENSE", "README.md", ...entry("kli"), "package.json", ...entry("spline"), ...entry("swarm"), ...entry("average"), ...entry("sync"), "three.d.ts", "three.js", "gltf.d.ts", "gltf.js", "resample.js"].sort());
   const manifest = JSON.parse(readFileSync(join(project, "node_modules/kli/package.json"), "utf8"));
   const cargo = readFileSync(join(root, "Cargo.toml"), "utf8");
@@ -58,6 +58,34 @@ test("each entry's inlined copy is its .wasm byte for byte, and init() uses it w
     console.log(JSON.stringify([kli([0, 0, 0, 1], [0.5, 0.5, 0.5, 0.5]).finalTime, kliSpline([[1, 0, 0, 0], [0, 1, 0, 0]]).at(1)[1]]));
   `);
   assert.deepEqual(JSON.parse(execFileSync("node", ["fallback.mjs"], { cwd: project, encoding: "utf8" })), [11.66, 1]);
+});
+
+test("the production glue has no inlined copy: where the .wasm cannot be fetched, init() names the entry, the file and the way out", async () => {
+  const dir = join(project, "node_modules/kli");
+  const manifest = JSON.parse(readFileSync(join(dir, "package.json"), "utf8"));
+  for (const m of ["kli", "swarm", "spline", "average", "sync"]) {
+    const name = m === "kli" ? "kli" : `kli/${m}`;
+    const conditions = manifest.exports[m === "kli" ? "." : `./${m}`];
+    // Node keeps its own entry first; a production bundle gets the glue without the copy.
+    assert.deepEqual(Object.keys(conditions), ["types", "node", "production", "default"], name);
+    assert.equal(conditions.production, `./${m}.production.js`);
+    const glue = readFileSync(join(dir, `${m}.production.js`), "utf8");
+    assert.ok(!/import\(['"][^'"]*inline/.test(glue), `${m}.production.js imports an inlined copy`);
+    // The same module otherwise: every export of the full glue, byte for byte but the fallback line.
+    const full = readFileSync(join(dir, `${m}.js`), "utf8").split("\n");
+    const lean = glue.split("\n").slice(2);
+    assert.equal(lean.length, full.length, m);
+    assert.equal(lean.filter((line, i) => line !== full[i]).length, 1, m);
+    // In Node fetch cannot read file: URLs: the browser's production glue refuses, by name.
+    const { default: init } = await import(join(dir, `${m}.production.js`));
+    await assert.rejects(init(), (error) => {
+      assert.equal(error.kind, "not-initialised");
+      assert.equal(error.argument, name);
+      assert.ok(error.message.startsWith(`${name} could not load its WebAssembly from file://`), error.message);
+      assert.match(error.message, new RegExp(`${m}_bg\\.wasm.*init\\(\\{ module_or_path \\}\\)`));
+      return true;
+    }, name);
+  }
 });
 
 test("imports by name in Node with initSync and gives T = 11.66", () => {
