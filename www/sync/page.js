@@ -6,7 +6,7 @@
 // points and a pose graph's optimum, come from the page's worker (runtime/offload.js).
 import * as sync from "../pkg/sync_demo.js";
 import { SyncDemo, SyncFile, SyncMap } from "../pkg/sync_demo.js";
-import { $ } from "../runtime/dom.js";
+import { $, whenNear } from "../runtime/dom.js";
 import { download, timeTag } from "../runtime/exports.js";
 import { wireDragging } from "../runtime/input.js";
 import { page as registered } from "../pages.js";
@@ -373,10 +373,13 @@ function showFile(/** @type {Host} */ host) {
   host.redraw(["file"]);
 }
 
-// The built-in pose graph's map, then the sweep (a point a task, as the button runs it), once the
-// page is interactive: no empty figure on screen or on paper.
+// Once the page is interactive, the sweep (a point a task, as the button runs it); the built-in
+// pose graph's map as its section nears the screen or the page is printed (made, read and drawn
+// at load it was the longest work of the page's start, for a section below the fold): no empty
+// figure on screen or on paper.
 page.start().then((ready) => {
   if (!ready) return;
-  showWorld(page.host);
   setTimeout(() => runSweep(page.host));
+  // Unless a file was opened first: its map is the one to keep.
+  whenNear($("#file-section", HTMLElement), () => solving === 0 && showWorld(page.host));
 });
