@@ -14,7 +14,11 @@ import { join, relative, resolve } from "node:path";
 import { pathToFileURL } from "node:url";
 import { EXAMPLES, MORE_LINKS, PAGES, bundle, script } from "../www/pages.js";
 import { LAYOUTS, pictureLinks, pictureSheet } from "./first-pictures.mjs";
-import { DOCUMENTS, documentPage } from "./documents.mjs";
+
+const command = process.argv[2];
+// marked (documents.mjs) and esbuild only for `write` and `check`: `names` runs when the
+// Makefile is read, before npm has installed them on a fresh clone.
+const { DOCUMENTS, documentPage } = command === "names" ? { DOCUMENTS: [], documentPage: undefined } : await import("./documents.mjs");
 
 const www = new URL("../www/", import.meta.url).pathname;
 
@@ -166,8 +170,6 @@ const sharedModules = {
   },
 };
 
-const command = process.argv[2];
-// esbuild only for `write`: `names` runs when the Makefile is read, before npm has installed it.
 const { build } = command === "write" ? await import("esbuild") : { build: undefined };
 if (command === "names") {
   console.log(PAGES.map((page) => page.name).join(" "));
