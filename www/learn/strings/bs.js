@@ -480,7 +480,7 @@ export const page = {
     Σ<sub><var>j</var></sub> <var>q<sub>j</sub></var> njihova srednja vrijednost, a <var>R</var> = |<var>m</var>|.
     Odbijanje (<var>K</var> &lt; 0) smanjuje |<var>m</var>| na 0, što se zove <em>uravnoteženje</em>. Ali 200
     nasumično raspršenih rotacija već ima srednju vrijednost blizu 0, <var>R</var> = 0.034 na početku, pa ih mali
-    pomak uravnoteži: <var>R</var> je 0.000 do <var>t</var> = 8. Razmaknute su već bile.`,
+    pomak uravnoteži: <var>R</var> je 0.000 do <var>t</var> = 8 na vlastitom satu slike. Razmaknute su već bile.`,
   "many.heading3": "Usrednjavanje: jedna rotacija iz mnogo zašumljenih",
   "many.p4":
     `Kamera robota mnogo puta mjeri svoju orijentaciju, svaki put malo pogrešno, a nekoliko puta jako pogrešno: to su

@@ -479,7 +479,7 @@ export const page = {
     Σ<sub><var>j</var></sub> <var>q<sub>j</sub></var> is their mean and <var>R</var> = |<var>m</var>|. A push
     (<var>K</var> &lt; 0) lowers |<var>m</var>| to 0, which is called <em>balancing</em>. But 200 rotations
     scattered at random already have a mean near 0, <var>R</var> = 0.034 at the start, so a small nudge balances
-    them: <var>R</var> is 0.000 by <var>t</var> = 8. Apart is where they already were.`,
+    them: <var>R</var> is 0.000 by <var>t</var> = 8 on the figure's own clock. Apart is where they already were.`,
   "many.heading3": "Averaging: one rotation from many noisy ones",
   "many.p4":
     `A robot's camera measures its orientation many times, each a little off, and a few badly off: those are <dfn
