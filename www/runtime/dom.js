@@ -26,19 +26,23 @@ export function say(words, english, values = {}) {
 }
 
 /**
- * Calls `start` once, when `element` comes within `margin` of the screen or the page is printed,
- * whichever is first: work a reader far from the element never sees waits until they near it
- * (a page's load stays short), and paper never gets a figure that was not started.
+ * Calls `start` once, when `element` comes within `margin` of the screen, the page is printed, or
+ * `after` milliseconds have passed, whichever is first: work for a part of the page far from the
+ * reader waits until they near it or the page has long finished loading (its load stays short),
+ * and a page printed later holds the finished figure.
  * @param {Element} element
  * @param {() => void} start
- * @param {string} [margin] how far off screen counts as near (CSS, as IntersectionObserver's rootMargin)
+ * @param {{ margin?: string, after?: number }} [when] how far off screen counts as near (CSS, as
+ *   IntersectionObserver's rootMargin; 600px), and the time after which to start anyway (none)
  */
-export function whenNear(element, start, margin = "600px") {
+export function whenNear(element, start, { margin = "600px", after = Infinity } = {}) {
   const print = matchMedia("print");
   let started = false;
+  const timer = Number.isFinite(after) ? setTimeout(() => go(), after) : undefined;
   const go = () => {
     if (started) return;
     started = true;
+    clearTimeout(timer);
     observer.disconnect();
     removeEventListener("beforeprint", go);
     print.removeEventListener("change", onPrint);

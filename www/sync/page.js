@@ -374,12 +374,12 @@ function showFile(/** @type {Host} */ host) {
 }
 
 // Once the page is interactive, the sweep (a point a task, as the button runs it); the built-in
-// pose graph's map as its section nears the screen or the page is printed (made, read and drawn
-// at load it was the longest work of the page's start, for a section below the fold): no empty
-// figure on screen or on paper.
+// pose graph's map as its section nears the screen, the page is printed, or 10 s have passed
+// (made, read and drawn at load it was the longest work of the page's start, for a section below
+// the fold; started later anyway, a page printed then holds the map, not "Solving…").
 page.start().then((ready) => {
   if (!ready) return;
   setTimeout(() => runSweep(page.host));
   // Unless a file was opened first: its map is the one to keep.
-  whenNear($("#file-section", HTMLElement), () => solving === 0 && showWorld(page.host));
+  whenNear($("#file-section", HTMLElement), () => solving === 0 && showWorld(page.host), { after: 10000 });
 });
