@@ -292,6 +292,8 @@ test("the turning rate through the keyframes: drawn, quoted as the smoothness sl
   assert.equal(await page.getAttribute("[name=smoothness]", "aria-valuetext"), "smoothness 0");
   await page.waitForURL(/smooth=0/);
   assert.ok((await painted(page, "#learn-rates", 3000)) > 3000);
+  // A still view is drawn in a task of its own after the frame: wait for it (up to 5 s).
+  await page.waitForFunction((before) => document.querySelector("#learn-rates").toDataURL() !== before, smooth, { timeout: 5000 }).catch(() => {});
   assert.notEqual(await picture(), smooth, "the figure follows the slider");
   // Less smoothness, more angular acceleration near the keys.
   await slide(page, "[name=smoothness]", "0.05");

@@ -224,7 +224,8 @@ export class Figures {
     this.later.add(name);
     if (this.later.size > 1) return;
     const next = () => {
-      const [view] = this.later;
+      // The view nearest the screen first: the one the reader just moved comes before the rest.
+      const [view] = [...this.later].sort((a, b) => offScreen(this.canvases[a]) - offScreen(this.canvases[b]));
       if (view === undefined) return;
       this.later.delete(view);
       const frame = this.frame(view, t);
@@ -293,7 +294,13 @@ export class Figures {
 }
 
 /** The 2D context of a canvas (a page whose canvases cannot draw has nothing to show). */
-export /** Whether `canvas` is more than a screen's height above or below the screen. */
+export /** How far `canvas` is above or below the screen, in CSS pixels (0 on it). */
+function offScreen(/** @type {HTMLCanvasElement} */ canvas) {
+  const box = canvas.getBoundingClientRect();
+  return Math.max(0, box.top - innerHeight, -box.bottom);
+}
+
+/** Whether `canvas` is more than a screen's height above or below the screen. */
 function far(/** @type {HTMLCanvasElement} */ canvas) {
   const box = canvas.getBoundingClientRect();
   return box.top > 2 * innerHeight || box.bottom < -innerHeight;
