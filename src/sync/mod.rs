@@ -127,7 +127,7 @@ pub struct Synchronized {
 }
 
 /// Every rotation moved by the gauge that puts `anchor` at the identity, signs `w ≥ 0`.
-fn anchored(q: &[DQuat], anchor: usize) -> Vec<DQuat> {
+pub(crate) fn anchored(q: &[DQuat], anchor: usize) -> Vec<DQuat> {
     let gauge = q[anchor].conjugate();
     let mut out: Vec<DQuat> = q
         .iter()

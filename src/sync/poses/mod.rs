@@ -340,14 +340,7 @@ pub fn anchor_poses(
         return (rotations.to_vec(), positions.to_vec());
     };
     let gauge = r.conjugate();
-    let mut rotations: Vec<DQuat> = rotations
-        .iter()
-        .map(|&q| {
-            let q = (gauge * q).normalize();
-            if q.w < 0.0 { -q } else { q }
-        })
-        .collect();
-    rotations[anchor] = DQuat::IDENTITY;
+    let rotations = super::anchored(rotations, anchor);
     let mut positions: Vec<DVec3> = positions.iter().map(|&p| gauge * (p - origin)).collect();
     positions[anchor] = DVec3::ZERO;
     (rotations, positions)
