@@ -195,10 +195,10 @@ export class Figures {
       if (!this.stale.has(name) && this.shown.get(name) === t) continue;
       const ctx = context(this.canvases[name]);
       const kind = this.kind(name);
-      // A still view, and while paused one far from the screen, is drawn in a task of its own
+      // A still view, and while paused one more than a screen away, is drawn in a task of its own
       // after this frame: at load every view is due at once, and drawing them all in one task
       // was the pages' longest task (keyframes: 300 ms on Lighthouse's phone).
-      if (kind === "still" || (!playing && this.stale.has(name) && far(this.canvases[name]))) {
+      if (kind === "still" || (!playing && this.stale.has(name) && offScreen(this.canvases[name]) > innerHeight)) {
         if (this.stale.has(name)) this.paintLater(name, t);
         continue;
       }
@@ -293,20 +293,14 @@ export class Figures {
   }
 }
 
-/** The 2D context of a canvas (a page whose canvases cannot draw has nothing to show). */
-export /** How far `canvas` is above or below the screen, in CSS pixels (0 on it). */
+/** How far `canvas` is above or below the screen, in CSS pixels (0 on it). */
 function offScreen(/** @type {HTMLCanvasElement} */ canvas) {
   const box = canvas.getBoundingClientRect();
   return Math.max(0, box.top - innerHeight, -box.bottom);
 }
 
-/** Whether `canvas` is more than a screen's height above or below the screen. */
-function far(/** @type {HTMLCanvasElement} */ canvas) {
-  const box = canvas.getBoundingClientRect();
-  return box.top > 2 * innerHeight || box.bottom < -innerHeight;
-}
-
-function context(/** @type {HTMLCanvasElement} */ canvas) {
+/** The 2D context of a canvas (a page whose canvases cannot draw has nothing to show). */
+export function context(/** @type {HTMLCanvasElement} */ canvas) {
   const ctx = canvas.getContext("2d");
   if (!ctx) throw new Error("this browser cannot draw on a canvas");
   return ctx;
