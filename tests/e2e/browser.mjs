@@ -33,6 +33,12 @@ export function setup() {
  *  `init` runs in the page before any of its scripts; `prepare(context)` before it loads. */
 export async function open(query = "", { still = false, ...options } = {}) {
   const { page, context, problems } = await blank(options);
+  await visit(page, query, { still });
+  return { page, context, problems };
+}
+
+/** Loads `query` into `page` (from `blank` or `open`) and waits until it is ready, as `open`. */
+export async function visit(page, query, { still = false } = {}) {
   await page.goto(`${origin}/${query}`);
   // A page moves once its reader is there (runtime.js, waitForReader): the pointer moving over
   // it, as a reader's would, before the module is ready; `still` leaves the page as Lighthouse
@@ -43,7 +49,6 @@ export async function open(query = "", { still = false, ...options } = {}) {
   // The canvases are sized (a ResizeObserver's callback) and drawn in the frames after that:
   // a cold machine once read a canvas still at its default 300 × 150, blank.
   await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
-  return { page, context, problems };
 }
 
 /** The reader arrives: the pointer moves over the page (a page's motion waits for it). */

@@ -9,7 +9,6 @@ import assert from "node:assert/strict";
 import { readFile } from "node:fs/promises";
 import { join } from "node:path";
 import { artifacts, axeViolations, canvasStats, open, painted, setup } from "./browser.mjs";
-import { FIGURE_DEFAULTS } from "../../www/keyframes/state.js";
 
 setup();
 
@@ -36,15 +35,15 @@ function kuramotoOrder(coupling, t) {
   return Math.hypot(s, c) / n;
 }
 
-/** The turning rate of piecewise SLERP through the keyframes figure's keys (www/keyframes/state.js,
- *  the ones <kli-figure view="keyframes"> draws, at times 0, 1, 2, 3), from the keys alone: the piece
- *  from a to b turns by θ = 2 acos w about u, where b ā = cos(θ/2) + sin(θ/2) u (w ≥ 0), so its
- *  ω = θ u per unit time; the jump at key k is |ω_k − ω_(k−1)|. Returns [jump at k1, jump at k2]. */
-function slerpJumps() {
+/** The turning rate of piecewise SLERP through `keys` (the tour's keyframes figure's, at times 0,
+ *  1, 2, 3), from the keys alone: the piece from a to b turns by θ = 2 acos w about u, where
+ *  b ā = cos(θ/2) + sin(θ/2) u (w ≥ 0), so its ω = θ u per unit time; the jump at key k is
+ *  |ω_k − ω_(k−1)|. Returns [jump at k1, jump at k2]. */
+function slerpJumps(keys) {
   const mul = ([a, b, c, d], [e, f, g, h]) =>
     [a * e - b * f - c * g - d * h, a * f + b * e + c * h - d * g, a * g - b * h + c * e + d * f, a * h + b * g - c * f + d * e];
-  const rates = FIGURE_DEFAULTS.keys.slice(1).map((b, i) => {
-    const [a0, ...av] = FIGURE_DEFAULTS.keys[i];
+  const rates = keys.slice(1).map((b, i) => {
+    const [a0, ...av] = keys[i];
     let d = mul(b, [a0, ...av.map((x) => -x)]);
     if (d[0] < 0) d = d.map((x) => -x);
     const angle = 2 * Math.acos(Math.min(1, d[0]));
@@ -269,7 +268,10 @@ test("an exercise opens, sets its figure, and its answer is the one the figure t
 
 test("the turning rate through the keyframes: drawn, quoted as the smoothness slider moves, and its exercise", async () => {
   const { page, context, problems } = await open("learn.html", { reducedMotion: "reduce" });
-  const [k1, k2] = slerpJumps();
+  // The keys the figure beside the plot draws: the module gives it those its rate is computed
+  // through (were they another's, the jumps quoted below would not be these keys').
+  const shown = (await page.getAttribute("#fig-keyframes", "keys")).split(";").map((key) => key.split(",").map(Number));
+  const [k1, k2] = slerpJumps(shown);
   // The keys' own numbers: a 73.7° turn about x, then 122.6° turns whose axes are 72.6° apart.
   assert.equal(k1.toFixed(2), "2.92");
   assert.equal(k2.toFixed(2), "2.53");

@@ -89,8 +89,12 @@ const page = new Page({
     showValues(host);
     quoteSummary(run, state);
     quoteTime(run, host.t);
-    // The keyframes figure beside the turning rate shows the same smoothness.
-    document.getElementById("fig-keyframes")?.setAttribute("smoothness", String(state.smoothness));
+    // The keyframes figure beside the turning rate shows the keys that rate is computed through
+    // (the module's) at the same smoothness.
+    const figure = document.getElementById("fig-keyframes");
+    const keys = run.summary.rates.keys;
+    const attributes = { keys: [0, 4, 8, 12].map((i) => keys.slice(i, i + 4).join(",")).join(";"), smoothness: String(state.smoothness) };
+    for (const [name, value] of Object.entries(attributes)) if (figure?.getAttribute(name) !== value) figure?.setAttribute(name, value);
   },
   // The other pages' figures' sliders (section 9, no name) are theirs: the tour's run is not rebuilt.
   input: (host, name) => {

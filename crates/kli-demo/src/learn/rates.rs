@@ -13,6 +13,7 @@ use kli::{KliError, from_wxyz};
 use crate::turning;
 
 /// The four keyframes, `[w, x, y, z]`: a 74° turn about x, then two of 123° about other axes.
+/// The tour's keyframes figure beside the plot is given them (`rates.keys` of the summary).
 pub const KEYS: [[f64; 4]; 4] =
     [[1.0, 0.0, 0.0, 0.0], [0.8, 0.6, 0.0, 0.0], [0.6, 0.0, 0.8, 0.0], [0.0, 0.0, 0.6, 0.8]];
 
