@@ -11,6 +11,14 @@ export PATH := $(CURDIR)/node_modules/.bin:$(CARGO_BIN):$(PATH)
 # The wasm-bindgen CLI must be exactly the version the crate is pinned to (Cargo.lock).
 WASM_BINDGEN_VERSION = $(shell awk '/^name = "wasm-bindgen"$$/ {getline; gsub(/version = |"/, ""); print}' Cargo.lock)
 # Features the Rust wasm32 target emits; wasm-opt must accept them.
+# wasm-opt: -O3 for the npm package's entries, whose sizes have a budget (at -O2 kli/swarm,
+# kli/average and kli were 1.1–1.6% larger gzipped); -O2 (wasm-pack's default) for the pages'
+# modules, where -O3 took 60–70% longer on the largest (the tour's 12.3 s against 7.4 s, kli/sync's
+# 23.7 s against 14.1 s, binaryen's npm build here) for sizes within 0.5% either way and speeds
+# the bench cannot tell apart (synchronizePoses on sphere2500 and city10000, the batch calls on
+# 10⁵ pairs: docs/performance.md).
+PKG_WASM_OPT := wasm-opt -O3
+PAGE_WASM_OPT := wasm-opt -O2
 WASM_FEATURES := --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
                  --enable-mutable-globals --enable-reference-types --enable-multivalue --enable-simd
 # The release builds of the package's entries and the pages' modules: one target directory for
@@ -85,7 +93,7 @@ pkg/.built: $(PKG_SOURCES)
 	done
 	node scripts/glue.mjs pkg/kli.js $(foreach entry,$(ENTRIES),pkg/$(entry).js)
 	@# Two at a time: wasm-opt (binaryen's npm build) keeps one core busy.
-	printf '%s\n' kli $(ENTRIES) | xargs -P 2 -I '{}' wasm-opt -O3 $(WASM_FEATURES) pkg/{}_bg.wasm -o pkg/{}_bg.wasm
+	printf '%s\n' kli $(ENTRIES) | xargs -P 2 -I '{}' $(PKG_WASM_OPT) $(WASM_FEATURES) pkg/{}_bg.wasm -o pkg/{}_bg.wasm
 	@# kli/three and kli/gltf: plain JavaScript over kli/spline (resample.js shared).
 	cp crates/kli-wasm/js/*.js crates/kli-wasm/js/*.d.ts pkg/
 	cp README.md pkg/
@@ -120,7 +128,7 @@ www/pkg/.built: $(WWW_SOURCES) pkg/.built
 	  wasm-bindgen --target web --out-dir www/pkg --out-name $${page}_demo $(BUILDS)/$(TARGET)/release/kli_demo.wasm; \
 	  node scripts/glue.mjs www/pkg/$${page}_demo.js; \
 	done
-	printf '%s\n' $(PAGES) | xargs -P 2 -I '{}' wasm-opt -O3 $(WASM_FEATURES) www/pkg/{}_demo_bg.wasm -o www/pkg/{}_demo_bg.wasm
+	printf '%s\n' $(PAGES) | xargs -P 2 -I '{}' $(PAGE_WASM_OPT) $(WASM_FEATURES) www/pkg/{}_demo_bg.wasm -o www/pkg/{}_demo_bg.wasm
 	@for page in $(PAGES); do \
 	  echo "www/pkg/$${page}_demo_bg.wasm: $$(stat -c %s www/pkg/$${page}_demo_bg.wasm) bytes, $$(gzip -9c www/pkg/$${page}_demo_bg.wasm | wc -c) gzipped"; \
 	done
