@@ -10,15 +10,15 @@ CARGO_BIN := $(HOME)/.cargo/bin
 export PATH := $(CURDIR)/node_modules/.bin:$(CARGO_BIN):$(PATH)
 # The wasm-bindgen CLI must be exactly the version the crate is pinned to (Cargo.lock).
 WASM_BINDGEN_VERSION = $(shell awk '/^name = "wasm-bindgen"$$/ {getline; gsub(/version = |"/, ""); print}' Cargo.lock)
-# Features the Rust wasm32 target emits; wasm-opt must accept them.
 # wasm-opt: -O3 for the npm package's entries, whose sizes have a budget (at -O2 kli/swarm,
-# kli/average and kli were 1.1–1.6% larger gzipped); -O2 (wasm-pack's default) for the pages'
+# kli/average and kli were 1.1–1.6% larger gzipped); -O2 for the pages'
 # modules, where -O3 took 60–70% longer on the largest (the tour's 12.3 s against 7.4 s, kli/sync's
 # 23.7 s against 14.1 s, binaryen's npm build here) for sizes within 0.5% either way and speeds
 # the bench cannot tell apart (synchronizePoses on sphere2500 and city10000, the batch calls on
 # 10⁵ pairs: docs/performance.md).
 PKG_WASM_OPT := wasm-opt -O3
 PAGE_WASM_OPT := wasm-opt -O2
+# Features the Rust wasm32 target emits; wasm-opt must accept them.
 WASM_FEATURES := --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
                  --enable-mutable-globals --enable-reference-types --enable-multivalue --enable-simd
 # The release builds of the package's entries and the pages' modules: one target directory for
@@ -180,7 +180,7 @@ demo: single
 #              and the npm package's tests (tests/js)
 #              and, once the site is built, the end-to-end files that assert nothing about
 #              time (E2E_EARLY), one at a time beside the Rust lane's tests, which the web
-#              lane would otherwise wait for (it ended 190 s before the Rust lane)
+#              lane would otherwise wait for
 #   test-page-late  the other end-to-end files, last, two at a time
 # Each lane's lines are prefixed with its name. A failing step stops its lane and `make test`
 # fails once the other lane is done (`cargo fmt --check` runs before both, to fail at once).
