@@ -4,7 +4,7 @@
 // robustness table reproduced (100 measurements, Gaussian noise of 5° about each axis, a share
 // replaced by uniform random rotations, the median over 20 seeded sets of the angle to the truth).
 //   node bench/average.mjs [n] [rounds]
-import { record } from "./targets.mjs";
+import { median, record } from "./targets.mjs";
 import { readFileSync, writeFileSync, mkdirSync } from "node:fs";
 import { cpus } from "node:os";
 import { runPython, SCIPY } from "./python.mjs";
@@ -15,7 +15,6 @@ const rounds = Number(process.argv[3] ?? 7);
 const average = await import(`${root}pkg/average.js`);
 average.initSync({ module: readFileSync(`${root}pkg/average_bg.wasm`) });
 const { averageRotations } = average;
-const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 
 // xorshift32 and Box–Muller: the same data on every run.
 let seed = 2026;

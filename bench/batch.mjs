@@ -12,7 +12,7 @@ import { Quaternion } from "three";
 import { quat } from "gl-matrix";
 import { Float64Buffer, initSync, kli, kliExactBatch, kliSample, nlerpBatch, slerpBatch } from "../pkg/kli.js";
 import { load, previous } from "./previous.mjs";
-import { record } from "./targets.mjs";
+import { median, record } from "./targets.mjs";
 
 initSync({ module: readFileSync(new URL("../pkg/kli_bg.wasm", import.meta.url)) });
 // Each reference's own module instance.
@@ -170,7 +170,6 @@ for (let round = 0; round < rounds; round++) {
     samples[name].push(performance.now() - start);
   }
 }
-const median = (xs) => [...xs].sort((x, y) => x - y)[Math.floor(xs.length / 2)];
 const medians = Object.fromEntries(names.map((name) => [name, median(samples[name])]));
 const three = medians["three.js slerpFlat"];
 console.log(`\n${n.toLocaleString("en")} interpolations, median of ${rounds} alternating rounds, Node ${process.version}, ${cpus()[0].model}:`);

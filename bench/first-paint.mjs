@@ -17,6 +17,7 @@ import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { chromium } from "playwright-core";
 import { CHROMIUM, serve } from "../scripts/static-server.mjs";
+import { median } from "./targets.mjs";
 
 const root = new URL("../", import.meta.url).pathname;
 const loads = Number(process.argv[2] ?? 7);
@@ -83,7 +84,6 @@ try {
   rmSync(site, { recursive: true, force: true });
 }
 
-const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 const columns = ["fcp", "parse", "style", "layout", "paint", "raster", "fonts", "svg documents"];
 console.log(`medians of ${loads} cold loads each, alternating, ms (work summed before the first contentful paint)\n`);
 console.log(`| variant | ${columns.join(" | ")} |\n| --- |${" ---: |".repeat(columns.length)}`);

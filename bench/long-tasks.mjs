@@ -5,7 +5,7 @@
 // has one task of 110–240 ms on this 2-core machine: the browser's parsing, style and layout).
 // Each figure is the median over `loads` cold loads of the longest task of a load.
 //   node bench/long-tasks.mjs [loads]
-import { record } from "./targets.mjs";
+import { median, record } from "./targets.mjs";
 import { existsSync } from "node:fs";
 import { join } from "node:path";
 import { chromium } from "playwright-core";
@@ -13,10 +13,10 @@ import { CHROMIUM, serve } from "../scripts/static-server.mjs";
 import { previousPages } from "./previous.mjs";
 import { PAGES } from "../www/pages.js";
 import { FIGURES, FIGURES_DONE, HEAVY, seededQueries, watchLongTasks } from "../tests/e2e/hostile-urls.mjs";
+import { engage } from "../tests/e2e/browser.mjs";
 
 const root = new URL("../", import.meta.url).pathname;
 const loads = Number(process.argv[2] ?? 3);
-const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 const FLOOR = 200;
 
 const www = await serve(join(root, "www"));
@@ -34,8 +34,7 @@ async function longest(origin, path, { settle = 300, figures = false } = {}) {
     const page = await context.newPage();
     await page.goto(`${origin}/${path}`);
     // The reader arrives (a page's motion waits for its pointer), as in the tests.
-    await page.mouse.move(2, 2);
-    await page.mouse.move(6, 6);
+    await engage(page);
     if (figures) {
       await page.evaluate((html) => document.querySelector("article").insertAdjacentHTML("afterbegin", html), FIGURES);
       await page.waitForFunction(FIGURES_DONE, null, { timeout: 60000 });

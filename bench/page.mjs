@@ -3,7 +3,7 @@
 // figures are on screen (the "kli:first-frame" mark), cold, on a quiet machine and beside a CPU
 // load; the script time per animation frame while playing; and the sizes of the modules.
 //   node bench/page.mjs [loads]
-import { record } from "./targets.mjs";
+import { median, record } from "./targets.mjs";
 import { spawn } from "node:child_process";
 import { existsSync, readFileSync } from "node:fs";
 import { gzipSync } from "node:zlib";
@@ -15,7 +15,6 @@ import { PAGES } from "../www/pages.js";
 
 const root = new URL("../", import.meta.url).pathname;
 const loads = Number(process.argv[2] ?? 9);
-const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 const size = (path) => {
   const bytes = readFileSync(join(root, path));
   return `${bytes.length} bytes, ${gzipSync(bytes, { level: 9 }).length} gzipped`;

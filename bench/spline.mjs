@@ -3,7 +3,7 @@
 // against gl-matrix's quat.sqlerp (helper points computed once) and three.js's
 // QuaternionKeyframeTrack interpolant, on the same keys.
 //   node bench/spline.mjs [rounds]
-import { record } from "./targets.mjs";
+import { median, record } from "./targets.mjs";
 import { readFileSync } from "node:fs";
 import { performance } from "node:perf_hooks";
 import { QuaternionKeyframeTrack } from "three";
@@ -17,7 +17,6 @@ const old = await load(release.dir, "spline");
 
 initSync({ module: readFileSync(new URL("../pkg/spline_bg.wasm", import.meta.url)) });
 const rounds = Number(process.argv[2] ?? 9);
-const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 
 /** ∫|ω̇|² of a curve from 256 samples a unit of time (bench/measures.mjs). */
 function bendingOf(curve) {

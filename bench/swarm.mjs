@@ -1,14 +1,13 @@
 // The swarm benchmark: one geodesic RK4 step of LoheSwarm in wasm under Node, for 10⁴
 // oscillators all-to-all (the target: ≤ 1 ms), on a ring, and for the page's 2,000.
 //   node bench/swarm.mjs [rounds]
-import { record } from "./targets.mjs";
+import { median, record } from "./targets.mjs";
 import { readFileSync } from "node:fs";
 import { performance } from "node:perf_hooks";
 import { LoheSwarm, initSync } from "../pkg/swarm.js";
 
 initSync({ module: readFileSync(new URL("../pkg/swarm_bg.wasm", import.meta.url)) });
 const rounds = Number(process.argv[2] ?? 15);
-const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 
 console.log(`LoheSwarm.step, median over ${rounds} rounds of 20 steps, Node ${process.version}:`);
 console.log("| oscillators | graph | ms per step |");

@@ -9,14 +9,13 @@
 //   node bench/sync.mjs
 import { readFileSync } from "node:fs";
 import { gzipSync } from "node:zlib";
-import { record } from "./targets.mjs";
+import { median, record } from "./targets.mjs";
 import { runPython } from "./python.mjs";
 
 const root = new URL("../", import.meta.url).pathname;
 const sync = await import(`${root}pkg/sync.js`);
 sync.initSync({ module: readFileSync(`${root}pkg/sync_bg.wasm`) });
 const { synchronizeRotations } = sync;
-const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 
 const { graphs } = JSON.parse(runPython("sync_anchors.py", { mode: "graphs" }).toString());
 

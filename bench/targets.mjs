@@ -9,6 +9,9 @@ import { join } from "node:path";
 const root = new URL("../", import.meta.url).pathname;
 const file = join(root, "target/bench/targets.jsonl");
 
+/** The middle of `xs` (the upper middle of an even count): the figure a benchmark reports of its runs. */
+export const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
+
 /**
  * Records one target: what it asks, what was measured, the reference measured in the same run
  * (the peer or the previous release; "" where there is none), and whether it was met.
