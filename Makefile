@@ -290,6 +290,7 @@ bench: pkg www setup-browser
 	node bench/size.mjs
 	node bench/page.mjs
 	node bench/long-tasks.mjs
+	node bench/map-tasks.mjs
 	node bench/first-paint.mjs
 	node bench/video.mjs
 	node bench/lighthouse.mjs

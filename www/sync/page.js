@@ -173,7 +173,7 @@ async function solveMap(/** @type {Host} */ host, /** @type {string} */ text, /*
       if (mine === solving) status().textContent = `${name}: ${stage}… (${seconds()} s)`;
     });
     if (!answer || mine !== solving) return false;
-    map = SyncMap.solved(text, answer);
+    map = SyncMap.solved(answer);
     if (!file) map.withTruth();
   } catch (error) {
     if (mine === solving) status().textContent = `${name}: ${words(error)}`;

@@ -9,11 +9,14 @@
 //! describe (κ and τ are their inverse variances; about 1 where an edge fits as well as its
 //! noise allows).
 //!
-//! The solve runs in the page's worker (`SyncMap.solve`, telling its stages as it goes); the
-//! page then reads the file again with the answer (`SyncMap.solved`). The answer's numbers:
-//! `[cost, iterations, λ_min, tolerance, certified (1 or 0), rank, lower bound]`, then `4n`
-//! rotations
-//! (`w, x, y, z`) and `3n` positions.
+//! The solve runs in the page's worker (`SyncMap.solve`, telling its stages as it goes), which
+//! also reads the file, chains the initial estimate and measures every edge's misfit, and sends
+//! the whole map as numbers ([`SyncMap::numbers`]); the page only unpacks them
+//! (`SyncMap.solved`). Reading a 10⁴-pose file again on the page took one task of 220 ms (half
+//! of it copying the text into the module).
+//!
+//! The solver's numbers ([`solve_graph`]): `[cost, iterations, λ_min, tolerance, certified (1 or
+//! 0), rank, lower bound]`, then `4n` rotations (`w, x, y, z`) and `3n` positions.
 
 use std::f64::consts::FRAC_PI_2;
 use std::fmt::Write;
@@ -32,6 +35,7 @@ use web_sys::CanvasRenderingContext2d;
 
 use super::initial::{Poses, initial};
 use super::map_view::{Look, MapPanel, draw_map};
+use super::model::median;
 use super::world::{MAX_CLOSURES, MAX_NOISE, World, WorldOptions, route};
 use crate::camera::Camera;
 use crate::figure::{Frame, Record};
@@ -58,10 +62,34 @@ pub struct Answer {
     pub lower_bound: f64,
 }
 
+/// What the map keeps of its pose graph: enough to draw it, sum it up and save its poses.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Outline {
+    pub dimension: usize,
+    pub count: usize,
+    pub edges: Vec<[usize; 2]>,
+    /// Each pose's id in the file.
+    pub ids: Vec<u64>,
+    /// How many lines of other kinds the file had (landmarks, priors), skipped.
+    pub skipped: usize,
+}
+
+impl Outline {
+    pub fn of(graph: &PoseGraph) -> Outline {
+        Outline {
+            dimension: graph.dimension,
+            count: graph.count,
+            edges: graph.edges.clone(),
+            ids: graph.ids.clone(),
+            skipped: graph.skipped.iter().map(|(_, n)| n).sum(),
+        }
+    }
+}
+
 /// A pose graph, its initial estimate and its certified optimum, and how the map is turned.
 #[wasm_bindgen]
 pub struct SyncMap {
-    graph: PoseGraph,
+    graph: Outline,
     initial: Poses,
     /// Whether the initial estimate is the file's own (else the odometry chained).
     from_file: bool,
@@ -70,6 +98,8 @@ pub struct SyncMap {
     initial_misfits: Vec<f64>,
     optimum_misfits: Vec<f64>,
     initial_cost: f64,
+    /// The optimum's median edge misfit (a sort of every edge's: the worker's, not the page's).
+    median_misfit: f64,
     /// Each pose's true position, where it is known (the built-in graph's route).
     truth: Option<Vec<DVec3>>,
     /// The 3D camera, radians.
@@ -134,8 +164,8 @@ impl SyncMap {
     }
 
     /// Reads and solves `text` (an Error naming the bad line), telling `progress` each stage in
-    /// words as it begins: the answer's numbers for `SyncMap.solved` (the long part: the page
-    /// runs it in its worker).
+    /// words as it begins: the whole map as numbers for `SyncMap.solved` (the page runs this in
+    /// its worker: all that is long, the reading included).
     pub fn solve(
         #[wasm_bindgen(unchecked_param_type = "string")] text: &JsValue,
         progress: Option<js_sys::Function>,
@@ -146,19 +176,17 @@ impl SyncMap {
             }
         };
         say("reading");
-        let text = string(text)?;
-        Ok(solve_text(&text, &mut |stage| say(&stage_words(stage)))?)
+        let graph = read(&string(text)?)?;
+        let answer = solve_graph(&graph, &mut |stage| say(&stage_words(stage)))?;
+        Ok(SyncMap::of(&graph, &answer)?.numbers())
     }
 
-    /// The map of `text` with the answer `SyncMap.solve(text)` gave; an Error naming `answer`
-    /// when it is not that call's numbers for a graph of this size.
+    /// The map `SyncMap.solve` sent (its `answer`); an Error naming `answer` when it is not such
+    /// numbers.
     pub fn solved(
-        #[wasm_bindgen(unchecked_param_type = "string")] text: &JsValue,
         #[wasm_bindgen(unchecked_param_type = "Float64Array")] answer: &JsValue,
     ) -> JsResult<SyncMap> {
-        let graph = read(&string(text)?)?;
-        let data = numbers("answer", answer, HEAD + 7 * graph.count)?;
-        Ok(SyncMap::of(graph, &data)?)
+        Ok(SyncMap::from_numbers(&numbers("answer", answer, usize::MAX)?)?)
     }
 
     /// `{ dimension, poses, edges, closures, fromFile, initialCost, cost, certified, lambdaMin,
@@ -167,7 +195,6 @@ impl SyncMap {
     pub fn summary(&self) -> JsValue {
         let a = self.answer;
         let closures = self.graph.edges.iter().filter(|[i, j]| i.abs_diff(*j) != 1).count();
-        let skipped: usize = self.graph.skipped.iter().map(|(_, n)| n).sum();
         Record::new()
             .set("dimension", self.graph.dimension as f64)
             .set("poses", self.graph.count as f64)
@@ -182,8 +209,8 @@ impl SyncMap {
             .set("rank", a.rank as f64)
             .set("lowerBound", a.lower_bound)
             .set("iterations", a.iterations as f64)
-            .set("medianMisfit", super::model::median(self.optimum_misfits.clone()))
-            .set("skipped", skipped as f64)
+            .set("medianMisfit", self.median_misfit)
+            .set("skipped", self.graph.skipped as f64)
             .set("truthErrorInitial", self.truth_error(&self.initial))
             .set("truthErrorOptimum", self.truth_error(&self.optimum))
             .end()
@@ -299,8 +326,8 @@ impl SyncMap {
 }
 
 impl SyncMap {
-    /// The map of `graph` with the answer's numbers `data` (of the length `solved` checked).
-    pub fn of(graph: PoseGraph, data: &[f64]) -> Result<SyncMap, KliError> {
+    /// The map of `graph` with the solver's numbers `data` (`solve_graph`'s).
+    pub fn of(graph: &PoseGraph, data: &[f64]) -> Result<SyncMap, KliError> {
         let n = graph.count;
         if data.len() != HEAD + 7 * n {
             let problem = format!("must hold {} numbers (got {})", HEAD + 7 * n, data.len());
@@ -328,13 +355,14 @@ impl SyncMap {
         let positions =
             data[HEAD + 4 * n..].chunks_exact(3).map(|c| DVec3::new(c[0], c[1], c[2])).collect();
         let optimum = Poses { rotations, positions };
-        let (initial, from_file) = initial(&graph);
-        let initial_costs = edge_costs(&graph, &initial);
+        let (initial, from_file) = initial(graph);
+        let initial_costs = edge_costs(graph, &initial);
         let initial_cost = initial_costs.iter().sum();
-        let initial_misfits = misfits(&graph, &initial_costs);
-        let optimum_misfits = misfits(&graph, &edge_costs(&graph, &optimum));
+        let initial_misfits = misfits(graph, &initial_costs);
+        let optimum_misfits = misfits(graph, &edge_costs(graph, &optimum));
+        let median_misfit = median(optimum_misfits.clone());
         Ok(SyncMap {
-            graph,
+            graph: Outline::of(graph),
             initial,
             from_file,
             optimum,
@@ -342,6 +370,120 @@ impl SyncMap {
             initial_misfits,
             optimum_misfits,
             initial_cost,
+            median_misfit,
+            truth: None,
+            azimuth: CAMERA.0.to_radians(),
+            elevation: CAMERA.1.to_radians(),
+        })
+    }
+
+    /// The map as numbers, what the worker sends the page ([`SyncMap::from_numbers`] reads
+    /// them back): the solver's seven (`Answer`); `[dimension, n, m, skipped, from file (1 or
+    /// 0), initial cost, the optimum's median misfit]`; the optimum and the initial estimate, each `4n` rotations (`w, x, y,
+    /// z`) then `3n` positions; each pose's id as two 32-bit halves (an id may be any `u64`, more
+    /// than an `f64` holds whole); the `m` edges' `i, j`; the `m` initial misfits, then the `m`
+    /// optimum's. The camera and the truth are the page's, not the solve's.
+    pub fn numbers(&self) -> Vec<f64> {
+        let (a, g) = (self.answer, &self.graph);
+        let mut out = vec![
+            a.cost,
+            a.iterations as f64,
+            a.lambda_min,
+            a.tolerance,
+            f64::from(u8::from(a.certified)),
+            a.rank as f64,
+            a.lower_bound,
+            g.dimension as f64,
+            g.count as f64,
+            g.edges.len() as f64,
+            g.skipped as f64,
+            f64::from(u8::from(self.from_file)),
+            self.initial_cost,
+            self.median_misfit,
+        ];
+        for poses in [&self.optimum, &self.initial] {
+            poses.rotations.iter().for_each(|&q| out.extend(to_wxyz(q)));
+            poses.positions.iter().for_each(|p| out.extend(p.to_array()));
+        }
+        out.extend(g.ids.iter().flat_map(|&id| [(id >> 32) as f64, (id & 0xffff_ffff) as f64]));
+        out.extend(g.edges.iter().flat_map(|&[i, j]| [i as f64, j as f64]));
+        out.extend(&self.initial_misfits);
+        out.extend(&self.optimum_misfits);
+        out
+    }
+
+    /// The map [`SyncMap::numbers`] wrote; an Error naming `answer` when `data` is not such
+    /// numbers (a length that disagrees with the counts it gives, a number that is not finite,
+    /// a count, index or id half that is not a whole number in its range).
+    pub fn from_numbers(data: &[f64]) -> Result<SyncMap, KliError> {
+        const LEAD: usize = HEAD + 7;
+        let refuse = |problem: String| KliError::invalid("answer", problem);
+        if data.len() < LEAD {
+            return Err(refuse(format!("must hold at least {LEAD} numbers (got {})", data.len())));
+        }
+        if let Some(k) = data.iter().position(|x| !x.is_finite()) {
+            return Err(refuse(format!("must be finite (got {} at {k})", data[k])));
+        }
+        let whole = |k: usize, below: f64| -> Result<usize, KliError> {
+            let x = data[k];
+            if x.fract() == 0.0 && (0.0..below).contains(&x) {
+                Ok(x as usize)
+            } else {
+                Err(refuse(format!("must hold a whole number below {below} at {k} (got {x})")))
+            }
+        };
+        let dimension = whole(HEAD, 4.0)?;
+        if dimension < 2 {
+            return Err(refuse(format!("must give the dimension 2 or 3 (got {dimension})")));
+        }
+        let (n, m) = (whole(HEAD + 1, data.len() as f64)?, whole(HEAD + 2, data.len() as f64)?);
+        let want = LEAD + 14 * n + 2 * n + 4 * m;
+        if data.len() != want {
+            let problem = format!("must hold {want} numbers for {n} poses and {m} edges");
+            return Err(refuse(format!("{problem} (got {})", data.len())));
+        }
+        let poses = |at: usize| Poses {
+            rotations: data[at..at + 4 * n]
+                .chunks_exact(4)
+                .map(|c| from_wxyz([c[0], c[1], c[2], c[3]]))
+                .collect(),
+            positions: data[at + 4 * n..at + 7 * n]
+                .chunks_exact(3)
+                .map(|c| DVec3::new(c[0], c[1], c[2]))
+                .collect(),
+        };
+        let (ids_at, edges_at) = (LEAD + 14 * n, LEAD + 16 * n);
+        let half = 2f64.powi(32);
+        let ids = (0..n)
+            .map(|k| {
+                let (hi, lo) = (whole(ids_at + 2 * k, half)?, whole(ids_at + 2 * k + 1, half)?);
+                Ok(((hi as u64) << 32) | lo as u64)
+            })
+            .collect::<Result<_, KliError>>()?;
+        let edges = (0..m)
+            .map(|k| {
+                Ok([whole(edges_at + 2 * k, n as f64)?, whole(edges_at + 2 * k + 1, n as f64)?])
+            })
+            .collect::<Result<_, KliError>>()?;
+        let misfits_at = edges_at + 2 * m;
+        Ok(SyncMap {
+            graph: Outline { dimension, count: n, edges, ids, skipped: whole(HEAD + 3, f64::MAX)? },
+            initial: poses(LEAD + 7 * n),
+            from_file: data[HEAD + 4] == 1.0,
+            optimum: poses(LEAD),
+            answer: Answer {
+                cost: data[0],
+                iterations: data[1] as usize,
+                lambda_min: data[2],
+                tolerance: data[3],
+                certified: data[4] == 1.0,
+                rank: data[5] as usize,
+                lower_bound: data[6],
+            },
+            initial_misfits: data[misfits_at..misfits_at + m].to_vec(),
+            optimum_misfits: data[misfits_at + m..].to_vec(),
+            initial_cost: data[HEAD + 5],
+            median_misfit: data[HEAD + 6],
             truth: None,
             azimuth: CAMERA.0.to_radians(),
             elevation: CAMERA.1.to_radians(),
@@ -421,10 +563,12 @@ pub fn read(text: &str) -> Result<PoseGraph, KliError> {
     read_g2o(text, OtherLines::Skip)
 }
 
-/// Reads and solves `text` (pose 0 anchored), telling `observe` each stage: the answer's numbers.
-pub fn solve_text(text: &str, observe: &mut dyn FnMut(PoseStage)) -> Result<Vec<f64>, KliError> {
-    let graph = read(text)?;
-    let solved = synchronize_poses_observed(&graph, &PoseOptions::default(), observe)?;
+/// Solves `graph` (pose 0 anchored), telling `observe` each stage: the solver's numbers.
+pub fn solve_graph(
+    graph: &PoseGraph,
+    observe: &mut dyn FnMut(PoseStage),
+) -> Result<Vec<f64>, KliError> {
+    let solved = synchronize_poses_observed(graph, &PoseOptions::default(), observe)?;
     let c = solved.certificate;
     let mut out = Vec::with_capacity(HEAD + 7 * graph.count);
     out.extend([
@@ -483,7 +627,7 @@ pub fn misfits(graph: &PoseGraph, costs: &[f64]) -> Vec<f64> {
 }
 
 /// The CSV of [`SyncMap::csv`].
-pub fn csv(graph: &PoseGraph, poses: &Poses, answer: &Answer) -> String {
+pub fn csv(graph: &Outline, poses: &Poses, answer: &Answer) -> String {
     let mut text = format!(
         "# kli: a pose graph's optimum (SE-Sync), {} poses, {} edges, pose 0 at the origin\n\
          # cost {}, certified {}, lambdaMin {}, rank {}\n",
@@ -499,7 +643,7 @@ pub fn csv(graph: &PoseGraph, poses: &Poses, answer: &Answer) -> String {
     text.push_str("id,x,y,z,qx,qy,qz,qw\n");
     for k in 0..graph.count {
         let (q, p): (DQuat, DVec3) = (poses.rotations[k], poses.positions[k]);
-        let id = graph.ids.get(k).copied().unwrap_or(k as u64);
+        let id = graph.ids[k];
         let _ = writeln!(text, "{id},{},{},{},{},{},{},{}", p.x, p.y, p.z, q.x, q.y, q.z, q.w);
     }
     text

@@ -132,13 +132,17 @@ fn draw_edges(pen: &Pen, edges: &[[usize; 2]], misfits: &[f64], at: &dyn Fn(usiz
     }
     // A large graph's loop closures are hairlines whatever their class: Chromium rasterises a
     // long stroke wider than a device pixel some fifty times slower (64,000 random segments: 0.9
-    // s at 1 device pixel, 57 s at 2.8), and a map far from its optimum has many long ones. The
-    // paths are cut in pieces of 2,000 segments, which Skia fills faster than one.
+    // s at 1 device pixel, 57 s at 2.8), and a map far from its optimum has many long ones. Its
+    // trajectory is a pixel wide, its class told by colour alone: at 10⁴ poses the segments are
+    // shorter than the wider line's width, and rasterising them at 1.4–3 px took the page's
+    // main thread 77 ms of one task (w10000's map), at 1 px 34–52 ms. The paths are cut in
+    // pieces of 2,000 segments, which Skia fills faster than one.
     let large = edges.len() > 5000;
     for (g, segments) in groups.iter().enumerate() {
         let (c, trajectory) = (g / 2, g % 2 == 1);
         let width = match (trajectory, large) {
-            (true, _) => 1.4 + 0.4 * c as f64,
+            (true, true) => 1.0,
+            (true, false) => 1.4 + 0.4 * c as f64,
             (false, true) => 0.5,
             (false, false) => 0.8 + 0.3 * c as f64,
         };

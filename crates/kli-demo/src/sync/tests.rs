@@ -198,7 +198,15 @@ fn numbers_that_are_not_this_problems_solutions_are_refused_by_name() {
 // ---- The map: the built-in pose graph, the initial estimate, the optimum ---------------------
 
 use super::initial::{Poses, chained, initial};
-use super::map::{HEAD, SyncMap, csv, edge_costs, read, solve_text};
+use super::map::{HEAD, Outline, SyncMap, csv, edge_costs, read, solve_graph};
+
+/// Reads and solves `text`: the solver's numbers, as the worker's `SyncMap.solve` has them.
+fn solve_text(
+    text: &str,
+    observe: &mut dyn FnMut(kli::sync::PoseStage),
+) -> Result<Vec<f64>, kli::KliError> {
+    solve_graph(&read(text)?, observe)
+}
 use super::map_view::class as misfit_class;
 use super::world::{World, WorldOptions, between, revisits, route};
 
@@ -218,7 +226,7 @@ fn with_vertices(text: &str, poses: &[(f64, f64, f64)]) -> String {
 
 fn map_of(text: &str) -> SyncMap {
     let answer = solve_text(text, &mut |_| {}).unwrap();
-    SyncMap::of(read(text).unwrap(), &answer).unwrap()
+    SyncMap::of(&read(text).unwrap(), &answer).unwrap()
 }
 
 /// `(x, y, θ)` of a planar pose.
@@ -320,7 +328,7 @@ fn the_misfits_sum_to_the_solvers_cost_and_the_noisy_loop_is_straightened() {
     let w = world(2.0, 8, 1);
     let graph = read(&w.text).unwrap();
     let answer = solve_text(&w.text, &mut |_| {}).unwrap();
-    let map = SyncMap::of(graph.clone(), &answer).unwrap();
+    let map = SyncMap::of(&graph, &answer).unwrap();
     let optimum = Poses {
         rotations: answer[HEAD..HEAD + 4 * 192]
             .chunks(4)
@@ -392,7 +400,7 @@ fn the_csv_reads_back_as_the_optimum() {
         rank: answer[5] as usize,
         lower_bound: answer[6],
     };
-    let text = csv(&graph, &optimum, &answer);
+    let text = csv(&Outline::of(&graph), &optimum, &answer);
     let mut rows = text.lines().filter(|l| !l.starts_with('#'));
     assert_eq!(rows.next(), Some("id,x,y,z,qx,qy,qz,qw"));
     let rows: Vec<Vec<f64>> =
@@ -434,10 +442,90 @@ fn a_bad_file_is_refused_naming_its_line_and_answers_of_another_size_are_refused
     let w = world(1.0, 4, 2);
     let answer = solve_text(&w.text, &mut |_| {}).unwrap();
     let graph = read(&w.text).unwrap();
-    let refused =
-        |data: &[f64]| SyncMap::of(graph.clone(), data).err().unwrap().argument().to_owned();
+    let refused = |data: &[f64]| SyncMap::of(&graph, data).err().unwrap().argument().to_owned();
     assert_eq!(refused(&answer[1..]), "answer");
     let mut nan = answer.clone();
     nan[10] = f64::NAN;
     assert_eq!(refused(&nan), "answer");
+}
+
+#[test]
+fn the_map_the_worker_sends_is_the_map_the_page_unpacks() {
+    // A 3D file with ids of its own, one beyond what an f64 holds whole, and landmarks skipped:
+    // every part the page shows or saves comes back as the worker made it.
+    let text = include_str!("../../../../tests/fixtures/posegraphs/tinyGrid3D.g2o");
+    let big = u64::MAX - 6;
+    // Pose 8's id (a vertex's first number, an edge's first two) made `big`.
+    let ids = |line: &str| {
+        let count = if line.starts_with("EDGE") { 2 } else { 1 };
+        let words: Vec<String> = line
+            .split_whitespace()
+            .enumerate()
+            .map(
+                |(k, w)| {
+                    if (1..=count).contains(&k) && w == "8" { big.to_string() } else { w.into() }
+                },
+            )
+            .collect();
+        words.join(" ") + "\n"
+    };
+    let text =
+        text.lines().map(ids).collect::<String>() + "VERTEX_XY 100 1 2\nPARAMS_SE2OFFSET 0 0 0 0\n";
+    let graph = read(&text).unwrap();
+    assert_eq!((graph.ids[graph.count - 1], graph.skipped.len()), (big, 2), "the file as meant");
+    let answer = solve_text(&text, &mut |_| {}).unwrap();
+    let map = SyncMap::of(&graph, &answer).unwrap();
+    let back = SyncMap::from_numbers(&map.numbers()).unwrap();
+    assert_eq!(back.csv(), map.csv());
+    assert!(back.csv().contains(&format!("\n{big},")));
+    assert_eq!(back.numbers(), map.numbers());
+    assert_eq!(back.initial_poses().positions, map.initial_poses().positions);
+    assert_eq!(back.optimum_misfits(), map.optimum_misfits());
+    let summary = |m: &SyncMap| {
+        let data = m.numbers();
+        (data[7], data[8], data[9], data[10], data[11], data[12], data[13])
+    };
+    // Dimension 3, 9 poses, the file's edges, two lines skipped, its own estimate, its cost by
+    // the edges' terms, the middle of the optimum's misfits (the 6th of 11).
+    let initial: f64 = edge_costs(&graph, map.initial_poses()).iter().sum();
+    let mut sorted = map.optimum_misfits().to_vec();
+    sorted.sort_by(f64::total_cmp);
+    assert_eq!(graph.edges.len(), 11);
+    assert_eq!(summary(&back), (3.0, 9.0, 11.0, 2.0, 1.0, initial, sorted[5]));
+}
+
+#[test]
+fn numbers_that_are_not_a_map_are_refused_by_name() {
+    let w = world(1.0, 4, 2);
+    let graph = read(&w.text).unwrap();
+    let good = SyncMap::of(&graph, &solve_text(&w.text, &mut |_| {}).unwrap()).unwrap().numbers();
+    let (n, m) = (192, graph.edges.len());
+    let lead = HEAD + 7;
+    let edges_at = lead + 16 * n;
+    let refused = |change: &dyn Fn(&mut Vec<f64>)| {
+        let mut data = good.clone();
+        change(&mut data);
+        SyncMap::from_numbers(&data).err().map(|e| e.argument().to_owned())
+    };
+    assert_eq!(refused(&|_| {}), None);
+    for change in [
+        &(|d: &mut Vec<f64>| d.truncate(5)) as &dyn Fn(&mut Vec<f64>),
+        &|d| {
+            d.pop();
+        },
+        &|d| d.push(0.0),
+        &|d| d[3] = f64::INFINITY,
+        &|d| d[HEAD] = 4.0,
+        &|d| d[HEAD] = 1.0,
+        &|d| d[HEAD + 1] = 191.5,
+        &|d| d[HEAD + 1] = 1e300,
+        &|d| d[HEAD + 2] = (m + 1) as f64,
+        &|d| d[HEAD + 3] = -1.0,
+        &|d| d[lead + 14 * n] = 2f64.powi(32),
+        &|d| d[edges_at] = n as f64,
+        &|d| d[edges_at + 1] = -1.0,
+        &|d| d[edges_at + 2 * m - 1] = 0.5,
+    ] {
+        assert_eq!(refused(change).as_deref(), Some("answer"));
+    }
 }
