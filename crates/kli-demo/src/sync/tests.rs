@@ -529,3 +529,47 @@ fn numbers_that_are_not_a_map_are_refused_by_name() {
         assert_eq!(refused(change).as_deref(), Some("answer"));
     }
 }
+
+#[test]
+fn any_numbers_give_a_finite_map_or_an_error_naming_the_answer() {
+    // Seeded mutations of a real map's numbers (a value anywhere replaced by an extreme, a
+    // fraction, a negative, or the numbers cut short): each is refused by name, or gives a map
+    // of finite numbers whose CSV holds no NaN, with no panic on the way.
+    let w = world(1.0, 4, 2);
+    let graph = read(&w.text).unwrap();
+    let good = SyncMap::of(&graph, &solve_text(&w.text, &mut |_| {}).unwrap()).unwrap().numbers();
+    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        state
+    };
+    let values = [0.0, -0.0, -1.0, 0.5, 1e300, -1e300, 191.0, 192.0, 1e-320, 4e9, f64::NAN];
+    let (mut drawn, mut refused) = (0, 0);
+    for _ in 0..400 {
+        let mut data = good.clone();
+        for _ in 0..=next() % 3 {
+            let k = (next() % data.len() as u64) as usize;
+            data[k] = values[(next() % values.len() as u64) as usize];
+        }
+        if next() % 8 == 0 {
+            data.truncate((next() % data.len() as u64) as usize);
+        }
+        match SyncMap::from_numbers(&data) {
+            Ok(map) => {
+                drawn += 1;
+                // Every number finite, as the drawing needs (its text is JavaScript's, so the
+                // drawing itself is the browser suite's).
+                assert!(map.initial_poses().positions.iter().all(|p| p.is_finite()));
+                assert!(!map.csv().contains("NaN"));
+                assert_eq!(map.numbers(), data, "what it took is what it gives");
+            }
+            Err(error) => {
+                refused += 1;
+                assert_eq!(error.argument(), "answer", "{error}");
+            }
+        }
+    }
+    assert!(drawn > 50 && refused > 50, "{drawn} drawn, {refused} refused");
+}
