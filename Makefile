@@ -27,7 +27,7 @@ WASM_FEATURES := --enable-bulk-memory --enable-nontrapping-float-to-int --enable
 # in one), each bound right after its build, before the next overwrites the .wasm.
 BUILDS := target/builds
 
-.PHONY: mutants fixtures help setup setup-rust setup-node setup-browser pkg www single demo serve test lint lint-rust lint-js \
+.PHONY: mutants fixtures help setup setup-rust clippy-canary setup-node setup-browser pkg www single demo serve test lint lint-rust lint-js \
         publish-check test-native test-wasm-node lint-wasm-portable test-wasm-browser test-package test-page \
         test-page-early test-page-late \
         lane-rust lane-web bench clean
@@ -204,10 +204,11 @@ lint: lint-rust lint-wasm-portable lint-js publish-check
 # and nalgebra's included), so rustdoc reuses clippy's checks of them. Over the libraries alone
 # num-traits' features differed and faer with its 17 dependencies were checked once more (83 s
 # of `lint` here).
+# On wasm32 the workspace's crates are linted as the wasm tests build them (WASM_CLIPPY, below);
+# here each entry's features alone, which no test build has.
 lint-rust: setup-rust
 	cargo fmt --all --check
 	cargo clippy --workspace --all-targets --all-features -- -D warnings
-	cargo clippy --workspace --exclude kli-bench --all-targets --all-features --target $(TARGET) -- -D warnings
 	for entry in $(ENTRIES); do \
 	  cargo clippy -p kli-wasm --all-targets --no-default-features --features $$entry --target $(TARGET) -- -D warnings; \
 	done
@@ -235,8 +236,25 @@ publish-check: pkg
 test-native:
 	cargo test --workspace --exclude kli-bench
 
-test-wasm-node: setup-rust
-	WASM_BINDGEN_TEST_ONLY_NODE=1 cargo test -p kli-wasm --all-features --target $(TARGET) --tests
+# Clippy on wasm32 rides on the wasm test builds: clippy-driver compiles the workspace's crates
+# in them (kli-rotations, kli-wasm with every feature, its tests, kli-demo and its tests), as
+# `cargo clippy` runs it: RUSTC_WORKSPACE_WRAPPER, its flags in CLIPPY_ARGS with
+# `__CLIPPY_HACKERY__` after each (cargo-clippy's own way of handing them over). A separate
+# `cargo clippy --target wasm32` checked every dependency for wasm32 once more (faer, web-sys:
+# 110 s of the Rust lane on CI). The canary fails the build if a lint no longer fails the driver
+# this way (a warning would then pass unseen). kli-rotations' own tests are native-only.
+CLIPPY_DRIVER = $(shell rustup which clippy-driver 2>/dev/null || command -v clippy-driver)
+WASM_CLIPPY = RUSTC_WORKSPACE_WRAPPER=$(CLIPPY_DRIVER) CLIPPY_ARGS=-D__CLIPPY_HACKERY__warnings__CLIPPY_HACKERY__
+clippy-canary: setup-rust
+	@mkdir -p target
+	@printf 'pub fn empty(v: &[u8]) -> bool { v.len() == 0 }\n' > target/clippy-canary.rs
+	@if $(WASM_CLIPPY) $(CLIPPY_DRIVER) rustc --edition 2021 --crate-type lib --emit metadata \
+	  --out-dir target target/clippy-canary.rs 2>/dev/null; then \
+	  echo "clippy-driver passed a lint with CLIPPY_ARGS=-D warnings: the wasm builds would not be linted"; exit 1; \
+	fi
+
+test-wasm-node: setup-rust clippy-canary
+	WASM_BINDGEN_TEST_ONLY_NODE=1 $(WASM_CLIPPY) cargo test -p kli-wasm --all-features --target $(TARGET) --tests
 
 # The build without simd128 (the plain [f64; 2] lanes, for engines without wasm SIMD), linted for
 # wasm32, tests included: it builds and stays warning-free. In target/ beside the other wasm32
@@ -252,8 +270,8 @@ lint-wasm-portable: setup-rust
 	CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-C target-feature=-simd128" \
 	cargo clippy -p kli-wasm --all-targets --features swarm,spline,average --target $(TARGET) -- -D warnings
 
-test-wasm-browser: setup-rust setup-browser
-	WASM_BINDGEN_TEST_ONLY_WEB=1 cargo test -p kli-demo --target $(TARGET) --tests
+test-wasm-browser: setup-rust setup-browser clippy-canary
+	WASM_BINDGEN_TEST_ONLY_WEB=1 $(WASM_CLIPPY) cargo test -p kli-demo --target $(TARGET) --tests
 
 test-package: pkg
 	node --test tests/js/
