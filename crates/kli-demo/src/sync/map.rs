@@ -62,6 +62,48 @@ pub struct Answer {
     pub lower_bound: f64,
 }
 
+impl Answer {
+    /// The answer the first [`HEAD`] of `data` give (at least that many).
+    pub fn read(data: &[f64]) -> Answer {
+        Answer {
+            cost: data[0],
+            iterations: data[1] as usize,
+            lambda_min: data[2],
+            tolerance: data[3],
+            certified: data[4] == 1.0,
+            rank: data[5] as usize,
+            lower_bound: data[6],
+        }
+    }
+
+    /// Its [`HEAD`] numbers.
+    pub fn numbers(&self) -> [f64; HEAD] {
+        let flag = |b: bool| f64::from(u8::from(b));
+        let (i, r) = (self.iterations as f64, self.rank as f64);
+        [self.cost, i, self.lambda_min, self.tolerance, flag(self.certified), r, self.lower_bound]
+    }
+}
+
+/// `4n` rotations (`w, x, y, z`) then `3n` positions from `data`, from its start.
+pub fn read_poses(data: &[f64], n: usize) -> Poses {
+    Poses {
+        rotations: data[..4 * n]
+            .chunks_exact(4)
+            .map(|c| from_wxyz([c[0], c[1], c[2], c[3]]))
+            .collect(),
+        positions: data[4 * n..7 * n]
+            .chunks_exact(3)
+            .map(|c| DVec3::new(c[0], c[1], c[2]))
+            .collect(),
+    }
+}
+
+/// The numbers [`read_poses`] reads, after `out`'s.
+fn write_poses(out: &mut Vec<f64>, rotations: &[DQuat], positions: &[DVec3]) {
+    rotations.iter().for_each(|&q| out.extend(to_wxyz(q)));
+    positions.iter().for_each(|p| out.extend(p.to_array()));
+}
+
 /// What the map keeps of its pose graph: enough to draw it, sum it up and save its poses.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Outline {
@@ -339,22 +381,8 @@ impl SyncMap {
                 format!("must be finite (got {} at {k})", data[k]),
             ));
         }
-        let answer = Answer {
-            cost: data[0],
-            iterations: data[1] as usize,
-            lambda_min: data[2],
-            tolerance: data[3],
-            certified: data[4] == 1.0,
-            rank: data[5] as usize,
-            lower_bound: data[6],
-        };
-        let rotations = data[HEAD..HEAD + 4 * n]
-            .chunks_exact(4)
-            .map(|c| from_wxyz([c[0], c[1], c[2], c[3]]))
-            .collect();
-        let positions =
-            data[HEAD + 4 * n..].chunks_exact(3).map(|c| DVec3::new(c[0], c[1], c[2])).collect();
-        let optimum = Poses { rotations, positions };
+        let answer = Answer::read(data);
+        let optimum = read_poses(&data[HEAD..], n);
         let (initial, from_file) = initial(graph);
         let initial_costs = edge_costs(graph, &initial);
         let initial_cost = initial_costs.iter().sum();
@@ -385,14 +413,8 @@ impl SyncMap {
     /// optimum's. The camera and the truth are the page's, not the solve's.
     pub fn numbers(&self) -> Vec<f64> {
         let (a, g) = (self.answer, &self.graph);
-        let mut out = vec![
-            a.cost,
-            a.iterations as f64,
-            a.lambda_min,
-            a.tolerance,
-            f64::from(u8::from(a.certified)),
-            a.rank as f64,
-            a.lower_bound,
+        let mut out = a.numbers().to_vec();
+        out.extend([
             g.dimension as f64,
             g.count as f64,
             g.edges.len() as f64,
@@ -400,10 +422,9 @@ impl SyncMap {
             f64::from(u8::from(self.from_file)),
             self.initial_cost,
             self.median_misfit,
-        ];
+        ]);
         for poses in [&self.optimum, &self.initial] {
-            poses.rotations.iter().for_each(|&q| out.extend(to_wxyz(q)));
-            poses.positions.iter().for_each(|p| out.extend(p.to_array()));
+            write_poses(&mut out, &poses.rotations, &poses.positions);
         }
         out.extend(g.ids.iter().flat_map(|&id| [(id >> 32) as f64, (id & 0xffff_ffff) as f64]));
         out.extend(g.edges.iter().flat_map(|&[i, j]| [i as f64, j as f64]));
@@ -442,16 +463,7 @@ impl SyncMap {
             let problem = format!("must hold {want} numbers for {n} poses and {m} edges");
             return Err(refuse(format!("{problem} (got {})", data.len())));
         }
-        let poses = |at: usize| Poses {
-            rotations: data[at..at + 4 * n]
-                .chunks_exact(4)
-                .map(|c| from_wxyz([c[0], c[1], c[2], c[3]]))
-                .collect(),
-            positions: data[at + 4 * n..at + 7 * n]
-                .chunks_exact(3)
-                .map(|c| DVec3::new(c[0], c[1], c[2]))
-                .collect(),
-        };
+        let poses = |at: usize| read_poses(&data[at..], n);
         let (ids_at, edges_at) = (LEAD + 14 * n, LEAD + 16 * n);
         let half = 2f64.powi(32);
         let ids = (0..n)
@@ -471,15 +483,7 @@ impl SyncMap {
             initial: poses(LEAD + 7 * n),
             from_file: data[HEAD + 4] == 1.0,
             optimum: poses(LEAD),
-            answer: Answer {
-                cost: data[0],
-                iterations: data[1] as usize,
-                lambda_min: data[2],
-                tolerance: data[3],
-                certified: data[4] == 1.0,
-                rank: data[5] as usize,
-                lower_bound: data[6],
-            },
+            answer: Answer::read(data),
             initial_misfits: data[misfits_at..misfits_at + m].to_vec(),
             optimum_misfits: data[misfits_at + m..].to_vec(),
             initial_cost: data[HEAD + 5],
@@ -570,18 +574,18 @@ pub fn solve_graph(
 ) -> Result<Vec<f64>, KliError> {
     let solved = synchronize_poses_observed(graph, &PoseOptions::default(), observe)?;
     let c = solved.certificate;
+    let answer = Answer {
+        cost: solved.cost,
+        iterations: solved.iterations,
+        lambda_min: c.lambda_min,
+        tolerance: c.tolerance,
+        certified: c.certified,
+        rank: c.rank,
+        lower_bound: c.lower_bound,
+    };
     let mut out = Vec::with_capacity(HEAD + 7 * graph.count);
-    out.extend([
-        solved.cost,
-        solved.iterations as f64,
-        c.lambda_min,
-        c.tolerance,
-        f64::from(u8::from(c.certified)),
-        c.rank as f64,
-        c.lower_bound,
-    ]);
-    solved.rotations.iter().for_each(|&q| out.extend(to_wxyz(q)));
-    solved.translations.iter().for_each(|t| out.extend(t.to_array()));
+    out.extend(answer.numbers());
+    write_poses(&mut out, &solved.rotations, &solved.translations);
     Ok(out)
 }
 

@@ -198,7 +198,7 @@ fn numbers_that_are_not_this_problems_solutions_are_refused_by_name() {
 // ---- The map: the built-in pose graph, the initial estimate, the optimum ---------------------
 
 use super::initial::{Poses, chained, initial};
-use super::map::{HEAD, Outline, SyncMap, csv, edge_costs, read, solve_graph};
+use super::map::{HEAD, Outline, SyncMap, csv, edge_costs, read, read_poses, solve_graph};
 
 /// Reads and solves `text`: the solver's numbers, as the worker's `SyncMap.solve` has them.
 fn solve_text(
@@ -304,16 +304,7 @@ fn the_noise_free_world_solves_to_the_truth_at_cost_zero_certified() {
     // Weights are 1/σ² with σ's floor of 0.1° and 5 mm: 4e4 for a metre, so "zero" is 1e-12.
     assert!(answer[0] < 1e-12, "cost {}", answer[0]);
     assert_eq!(answer[4], 1.0, "certified");
-    let optimum = Poses {
-        rotations: answer[HEAD..HEAD + 4 * 192]
-            .chunks(4)
-            .map(|c| kli::from_wxyz([c[0], c[1], c[2], c[3]]))
-            .collect(),
-        positions: answer[HEAD + 4 * 192..]
-            .chunks(3)
-            .map(|c| glam::DVec3::new(c[0], c[1], c[2]))
-            .collect(),
-    };
+    let optimum = read_poses(&answer[HEAD..], 192);
     // The truth's pose 0 is the origin heading east: the anchor's gauge is the truth's own.
     for (k, &(x, y, t)) in w.truth.iter().enumerate() {
         let (px, py, pt) = planar(&optimum, k);
@@ -329,16 +320,7 @@ fn the_misfits_sum_to_the_solvers_cost_and_the_noisy_loop_is_straightened() {
     let graph = read(&w.text).unwrap();
     let answer = solve_text(&w.text, &mut |_| {}).unwrap();
     let map = SyncMap::of(&graph, &answer).unwrap();
-    let optimum = Poses {
-        rotations: answer[HEAD..HEAD + 4 * 192]
-            .chunks(4)
-            .map(|c| kli::from_wxyz([c[0], c[1], c[2], c[3]]))
-            .collect(),
-        positions: answer[HEAD + 4 * 192..]
-            .chunks(3)
-            .map(|c| glam::DVec3::new(c[0], c[1], c[2]))
-            .collect(),
-    };
+    let optimum = read_poses(&answer[HEAD..], 192);
     let total: f64 = edge_costs(&graph, &optimum).iter().sum();
     // Certified, the proven lower bound is the cost less the tolerance's share, below it.
     assert!(answer[6] <= answer[0] && answer[6] > 0.99 * answer[0], "{} {}", answer[6], answer[0]);
@@ -381,25 +363,8 @@ fn the_csv_reads_back_as_the_optimum() {
     let graph = read(text).unwrap();
     let answer = solve_text(text, &mut |_| {}).unwrap();
     let n = graph.count;
-    let optimum = Poses {
-        rotations: answer[HEAD..HEAD + 4 * n]
-            .chunks(4)
-            .map(|c| kli::from_wxyz([c[0], c[1], c[2], c[3]]))
-            .collect(),
-        positions: answer[HEAD + 4 * n..]
-            .chunks(3)
-            .map(|c| glam::DVec3::new(c[0], c[1], c[2]))
-            .collect(),
-    };
-    let answer = super::map::Answer {
-        cost: answer[0],
-        iterations: answer[1] as usize,
-        lambda_min: answer[2],
-        tolerance: answer[3],
-        certified: answer[4] == 1.0,
-        rank: answer[5] as usize,
-        lower_bound: answer[6],
-    };
+    let optimum = read_poses(&answer[HEAD..], n);
+    let answer = super::map::Answer::read(&answer);
     let text = csv(&Outline::of(&graph), &optimum, &answer);
     let mut rows = text.lines().filter(|l| !l.starts_with('#'));
     assert_eq!(rows.next(), Some("id,x,y,z,qx,qy,qz,qw"));
