@@ -458,6 +458,9 @@ impl SyncMap {
             return Err(refuse(format!("must give the dimension 2 or 3 (got {dimension})")));
         }
         let (n, m) = (whole(HEAD + 1, data.len() as f64)?, whole(HEAD + 2, data.len() as f64)?);
+        if n == 0 {
+            return Err(refuse("must give at least one pose (got 0)".into()));
+        }
         let want = LEAD + 14 * n + 2 * n + 4 * m;
         if data.len() != want {
             let problem = format!("must hold {want} numbers for {n} poses and {m} edges");

@@ -486,6 +486,11 @@ fn numbers_that_are_not_a_map_are_refused_by_name() {
         &|d| d[HEAD + 1] = 1e300,
         &|d| d[HEAD + 2] = (m + 1) as f64,
         &|d| d[HEAD + 3] = -1.0,
+        // A map of nothing: no pose, no edge, every count agreeing.
+        &|d| {
+            d.truncate(lead);
+            (d[HEAD + 1], d[HEAD + 2]) = (0.0, 0.0);
+        },
         &|d| d[lead + 14 * n] = 2f64.powi(32),
         &|d| d[edges_at] = n as f64,
         &|d| d[edges_at + 1] = -1.0,
