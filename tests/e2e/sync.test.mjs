@@ -176,19 +176,21 @@ test("each run is solved in a worker while the flow runs, the sweep too; without
     // A user's pose graph from its numbers likewise (a ring of 20: SyncFile.solve's numbers).
     const ring = Array.from({ length: 20 }, (_, i) => `EDGE_SE3:QUAT ${i} ${(i + 1) % 20} 0 0 0 0 0 0.0523359562 0.9986295348 ${"1 0 0 0 0 0 1 0 0 0 0 1 0 0 0 1 0 0 1 0 1"}`).join("\n");
     const fileGood = SyncFile.solve(ring);
-    for (let k = 0; k < 70; k++) {
-      try { SyncFile.solved(ring, bad[k % bad.length]).free(); arguments_.push("taken"); } catch (error) { arguments_.push(error instanceof Error ? error.argument : "not an Error"); }
+    // Its own kinds of wrong too: a count of skipped lines not whole, the count left out.
+    const fileBad = [...bad, Float64Array.from(fileGood, (x, i) => (i === 0 ? 0.5 : x)), fileGood.slice(1)];
+    for (let k = 0; k < 90; k++) {
+      try { SyncFile.solved(fileBad[k % fileBad.length]).free(); arguments_.push("taken"); } catch (error) { arguments_.push(error instanceof Error ? error.argument : "not an Error"); }
     }
     // Its text must be a string: anything else refused naming text (a number or an object
     // trapped in the glue's string copy before).
     const texts = new Set();
     for (let k = 0; k < 400; k++) {
       const text = [null, 42, {}, trap][k % 4];
-      for (const call of [() => SyncFile.solve(text), () => SyncFile.solved(text, fileGood), () => new SyncFile(text)]) {
+      for (const call of [() => SyncFile.solve(text), () => new SyncFile(text)]) {
         try { call(); texts.add("taken"); } catch (error) { texts.add(error instanceof Error ? error.argument : "not an Error"); }
       }
     }
-    const file = SyncFile.solved(ring, fileGood);
+    const file = SyncFile.solved(fileGood);
     const fileSolved = file.summary.certified && file.summary.count === 20;
     file.free();
     run.takeSolutions(good);

@@ -326,7 +326,7 @@ function wireFile(/** @type {Host} */ host) {
     try {
       const solutions = await offload.call("SyncFile", "solve", [text], "file");
       if (!solutions || mine !== opened) return;
-      read = SyncFile.solved(text, solutions);
+      read = SyncFile.solved(solutions);
     } catch (error) {
       if (mine === opened) status().textContent = `${file.name}: ${words(error)}`;
       return;

@@ -10,7 +10,7 @@ use kli_wasm::value::describe;
 use wasm_bindgen::prelude::*;
 use web_sys::CanvasRenderingContext2d;
 
-use super::solutions::Solutions;
+use super::solutions::{Solutions, whole};
 use super::view::{Side, draw_sides};
 use crate::figure::{Frame, Record};
 use crate::format::exponential;
@@ -59,24 +59,26 @@ impl SyncFile {
         Ok(SyncFile::of(graph.count(), skipped, solve_both(&graph)?))
     }
 
-    /// Reads and synchronises `text` both ways: the solutions as numbers for `SyncFile.solved`
-    /// (the long part of `new`: the page runs it in its worker, as it does `SyncDemo.solve`).
+    /// Reads and synchronises `text` both ways: for `SyncFile.solved`, the count of lines
+    /// skipped, then the solutions as numbers (`Solutions::pack`: the counts of nodes and edges
+    /// first). The page runs it in its worker, as it does `SyncDemo.solve`: this is the long part
+    /// of `new`, the reading included (on the page, reading a 10⁴-pose file again took a task
+    /// of 200 ms).
     pub fn solve(
         #[wasm_bindgen(unchecked_param_type = "string")] text: &JsValue,
     ) -> JsResult<Vec<f64>> {
-        Ok(solve_both(&read(text)?.0)?.pack())
+        let (graph, skipped) = read(text)?;
+        let mut out = vec![skipped as f64];
+        out.extend(solve_both(&graph)?.pack());
+        Ok(out)
     }
 
-    /// The pose graph `text` with the solutions `SyncFile.solve(text)` computed; an Error naming
-    /// `solutions` when they are not that call's numbers for a graph of this size.
+    /// The pose graph `SyncFile.solve` solved, from its numbers; an Error naming `solutions`
+    /// when they are not such numbers.
     pub fn solved(
-        #[wasm_bindgen(unchecked_param_type = "string")] text: &JsValue,
         #[wasm_bindgen(unchecked_param_type = "Float64Array")] solutions: &JsValue,
     ) -> JsResult<SyncFile> {
-        let (graph, skipped) = read(text)?;
-        let (n, m) = (graph.count(), graph.edges().len());
-        let data = numbers("solutions", solutions, Solutions::length(n, m))?;
-        Ok(SyncFile::of(n, skipped, Solutions::unpack(&data, n, m)?))
+        Ok(SyncFile::from_numbers(&numbers("solutions", solutions, usize::MAX)?)?)
     }
 
     /// `{ count, edges, chordalCost, certified, lambdaMin, chordalMedianResidualDegrees,
@@ -141,7 +143,12 @@ fn read(text: &JsValue) -> Result<(Graph, usize), KliError> {
             format!("must be a string (got {})", describe(text)),
         ));
     };
-    let pose = read_g2o(&text, OtherLines::Skip)?;
+    graph_of(&text)
+}
+
+/// [`read`] of a string.
+fn graph_of(text: &str) -> Result<(Graph, usize), KliError> {
+    let pose = read_g2o(text, OtherLines::Skip)?;
     let skipped = pose.skipped.iter().map(|(_, n)| n).sum();
     let graph =
         Graph::new(Some(pose.count), &pose.edges, &pose.relative, Some(&pose.rotation_weights))?;
@@ -159,6 +166,20 @@ fn median_degrees(residuals: &[f64]) -> f64 {
 }
 
 impl SyncFile {
+    /// The file `SyncFile.solve`'s numbers give (`[skipped, n, m, …]`), or an Error naming
+    /// `solutions`.
+    pub fn from_numbers(data: &[f64]) -> Result<SyncFile, KliError> {
+        let counts = match data {
+            [skipped, n, m, ..] => whole(*skipped).zip(whole(*n)).zip(whole(*m)),
+            _ => None,
+        };
+        let Some(((skipped, n), m)) = counts else {
+            let problem = "must begin with three counts (lines skipped, nodes, edges)";
+            return Err(KliError::invalid("solutions", problem.to_string()));
+        };
+        Ok(SyncFile::of(n, skipped, Solutions::unpack(&data[1..], n, m)?))
+    }
+
     fn of(count: usize, skipped: usize, Solutions { chordal, robust }: Solutions) -> SyncFile {
         let flagged = robust.outliers.clone().unwrap_or_default();
         SyncFile { count, skipped, chordal, robust, flagged }
@@ -193,5 +214,42 @@ impl SyncFile {
             },
         ];
         draw_sides(pen, &sides, size);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_solutions_the_worker_sends_are_the_file_the_page_unpacks() {
+        // The 3D fixture with two lines of other kinds, skipped: the page gets the count of
+        // them, the nodes and both solutions without reading the text again.
+        let text = include_str!("../../../../tests/fixtures/posegraphs/smallGrid3D.g2o").to_owned()
+            + "VERTEX_XY 900 1 2\nPARAMS_SE2OFFSET 0 0 0 0\n";
+        let (graph, skipped) = graph_of(&text).unwrap();
+        assert_eq!((graph.count(), skipped), (125, 2));
+        let solutions = solve_both(&graph).unwrap();
+        let mut data = vec![skipped as f64];
+        data.extend(solutions.pack());
+        let file = SyncFile::from_numbers(&data).unwrap();
+        assert_eq!((file.count, file.skipped), (125, 2));
+        assert_eq!(file.chordal.cost, solutions.chordal.cost);
+        assert_eq!(file.robust.residuals, solutions.robust.residuals);
+        assert_eq!(file.flagged, solutions.robust.outliers.clone().unwrap_or_default());
+        // Numbers that are not such: too few, a count not whole, one number more or less.
+        for bad in [
+            &data[..2],
+            &[0.5, data[1], data[2]][..],
+            &[-1.0, data[1], data[2]][..],
+            &data[..data.len() - 1],
+            &[&data[..], &[0.0]].concat(),
+        ] {
+            let error = SyncFile::from_numbers(bad).err().expect("refused");
+            assert_eq!(error.argument(), "solutions", "{error}");
+        }
+        let mut other = data.clone();
+        other[0] = 7.0;
+        assert_eq!(SyncFile::from_numbers(&other).unwrap().skipped, 7);
     }
 }

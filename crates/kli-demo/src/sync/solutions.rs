@@ -161,6 +161,6 @@ fn present(x: f64) -> Option<bool> {
 }
 
 /// A count: `Some` for a whole number from 0 to 2⁵³.
-fn whole(x: f64) -> Option<usize> {
+pub fn whole(x: f64) -> Option<usize> {
     (x.fract() == 0.0 && (0.0..=9_007_199_254_740_992.0).contains(&x)).then_some(x as usize)
 }
