@@ -9,21 +9,17 @@ import { median, record } from "./targets.mjs";
 import { existsSync } from "node:fs";
 import { join } from "node:path";
 import { chromium } from "playwright-core";
-import { CHROMIUM, serve } from "../scripts/static-server.mjs";
-import { previousPages } from "./previous.mjs";
+import { CHROMIUM } from "../scripts/static-server.mjs";
+import { servePages } from "./previous.mjs";
 import { PAGES } from "../www/pages.js";
 import { FIGURES, FIGURES_DONE, HEAVY, seededQueries, watchLongTasks } from "../tests/e2e/hostile-urls.mjs";
 import { engage } from "../tests/e2e/browser.mjs";
 
-const root = new URL("../", import.meta.url).pathname;
 const loads = Number(process.argv[2] ?? 3);
 const FLOOR = 200;
 
-const www = await serve(join(root, "www"));
 const browser = await chromium.launch(CHROMIUM);
-const release = previousPages();
-const releaseServer = await serve(release.www);
-const builds = [["ours", www.origin, join(root, "www")], [`${release.name}, ${release.commit}`, releaseServer.origin, release.www]];
+const { builds, close } = await servePages();
 
 /** The longest task of one cold load of `path` from `origin`, ms; `figures` puts FIGURES into
  *  the page and waits for them. */
@@ -94,7 +90,6 @@ try {
   console.log(`<kli-figure>, hostile attributes and far times: longest task ${ours} ms; budget ${budget} ms; ${builds[1][0]} ${ms(theirs)}`);
   record(`<kli-figure> with hostile attributes and far times: no task over ${budget} ms`, `${ours} ms`, `${builds[1][0]}: ${ms(theirs)}`, ours <= budget);
 } finally {
-  releaseServer.close();
   await browser.close();
-  www.close();
+  close();
 }

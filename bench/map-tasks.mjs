@@ -11,26 +11,21 @@ import { execFileSync } from "node:child_process";
 import { existsSync } from "node:fs";
 import { join } from "node:path";
 import { chromium } from "playwright-core";
-import { CHROMIUM, serve } from "../scripts/static-server.mjs";
+import { CHROMIUM } from "../scripts/static-server.mjs";
 import { median, record } from "./targets.mjs";
 import { python } from "./python.mjs";
-import { previousPages } from "./previous.mjs";
+import { servePages } from "./previous.mjs";
 import { watchLongTasks } from "../tests/e2e/hostile-urls.mjs";
 import { engage } from "../tests/e2e/browser.mjs";
 
-const root = new URL("../", import.meta.url).pathname;
 const loads = Number(process.argv[2] ?? 5);
 const BUDGET = 50;
 const NAME = "w10000.graph";
 
 const path = execFileSync(python(), ["-c", `import gtsam; print(gtsam.findExampleDataFile('${NAME}'))`], { encoding: "utf8" }).trim();
 
-
-const www = await serve(join(root, "www"));
 const browser = await chromium.launch(CHROMIUM);
-const release = previousPages();
-const releaseServer = await serve(release.www);
-const builds = [["ours", www.origin, join(root, "www")], [`${release.name}, ${release.commit}`, releaseServer.origin, release.www]];
+const { builds, close } = await servePages();
 
 /** One cold load of sync.html from `origin` with the file opened once the built-in map is
  *  shown: `{ longest, tasks, map, after, seconds }`, the longest task and every task over 50 ms
@@ -93,7 +88,6 @@ try {
     `${summary(runs[0])}; each load's tasks over 50 ms: ${runs[0].map((x) => x.tasks.join(" and ") || "none").join("; ")}`,
     `${builds[1][0]}: ${summary(runs[1])}`, ours <= BUDGET);
 } finally {
-  releaseServer.close();
   await browser.close();
-  www.close();
+  close();
 }

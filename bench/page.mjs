@@ -9,8 +9,8 @@ import { existsSync, readFileSync } from "node:fs";
 import { gzipSync } from "node:zlib";
 import { join } from "node:path";
 import { chromium } from "playwright-core";
-import { CHROMIUM, serve } from "../scripts/static-server.mjs";
-import { previousPages } from "./previous.mjs";
+import { CHROMIUM } from "../scripts/static-server.mjs";
+import { servePages } from "./previous.mjs";
 import { PAGES } from "../www/pages.js";
 
 const root = new URL("../", import.meta.url).pathname;
@@ -22,11 +22,8 @@ const size = (path) => {
 // The package's entries beside the previous release: bench/size.mjs. The pages' modules here.
 for (const page of PAGES) console.log(`www/pkg/${page.name}_demo_bg.wasm (${page.html}'s module): ${size(`www/pkg/${page.name}_demo_bg.wasm`)}`);
 
-const www = await serve(join(root, "www"));
 const browser = await chromium.launch(CHROMIUM);
-const release = previousPages();
-const releaseServer = await serve(release.www);
-const builds = [["ours", www.origin], [`${release.name}, ${release.commit}`, releaseServer.origin]];
+const { release, builds, close } = await servePages();
 /** Whether a build has the page (a page newer than the previous release is measured alone). */
 const has = (build, path) => build === "ours" || existsSync(join(release.www, path.split("?")[0] || "index.html"));
 try {
@@ -144,7 +141,6 @@ try {
       `${builds[1][0]}: ${reference.split(" (")[0]}`, playing && mine <= target);
   }
 } finally {
-  releaseServer.close();
   await browser.close();
-  www.close();
+  close();
 }

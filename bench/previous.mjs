@@ -9,6 +9,7 @@
 import { execFileSync } from "node:child_process";
 import { existsSync, mkdirSync, readFileSync, readdirSync, symlinkSync, writeFileSync, cpSync, rmSync } from "node:fs";
 import { join } from "node:path";
+import { serve } from "../scripts/static-server.mjs";
 
 const root = new URL("../", import.meta.url).pathname;
 /** The references: the last release (the first entry, which the targets compare against) and the one before it. */
@@ -61,6 +62,15 @@ export function previous() {
 export function previousPages() {
   const [{ name, commit }] = REFERENCES;
   return { name, commit, www: build(commit, "www") };
+}
+
+/** This checkout's pages and the previous release's, each served: `{ release, builds, close }`,
+ *  `builds` as `[label, origin, folder]`, ours first. */
+export async function servePages() {
+  const release = previousPages();
+  const [ours, theirs] = [await serve(join(root, "www")), await serve(release.www)];
+  const builds = [["ours", ours.origin, join(root, "www")], [`${release.name}, ${release.commit}`, theirs.origin, release.www]];
+  return { release, builds, close: () => [ours, theirs].forEach((server) => server.close()) };
 }
 
 if (import.meta.url === `file://${process.argv[1]}`) {
