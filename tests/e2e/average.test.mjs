@@ -11,7 +11,7 @@ const means = (page) => page.$$eval("#means tbody tr", (trs) =>
   Object.fromEntries(trs.map((tr) => [tr.cells[0].textContent, Array.from(tr.cells, (c) => Number(c.textContent)).slice(1)])));
 
 test("the averaging page draws, the follower flows to the chordal mean, the median resists the wild ones", async () => {
-  const { page, context, problems } = await open("average.html");
+  const { page, context, problems } = await open("average.html", { moving: true });
   const sphere = await canvasStats(page, "#average-hopf", { blue: [24, 100, 171], orange: [232, 89, 12] });
   assert.ok(sphere.drawn > 20000 && sphere.blue > 30 && sphere.orange > 10, JSON.stringify(sphere));
   assert.ok((await canvasStats(page, "#average-objects")).drawn > 3000);

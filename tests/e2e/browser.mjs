@@ -58,9 +58,13 @@ export const engage = async (page) => {
   await page.mouse.move(6, 6);
 };
 
-/** As `open`, but the page is left blank: the caller loads what it wants, from `origin()`. */
-export async function blank({ init, prepare, ...options } = {}) {
-  const context = await browser.newContext({ viewport: { width: 1280, height: 900 }, deviceScaleFactor: 1, ...options });
+/** As `open`, but the page is left blank: the caller loads what it wants, from `origin()`.
+ *  The page prefers reduced motion, so it plays only when told to, unless `moving`: a playing
+ *  page costs Chromium here about a core of software rasterising, and most tests read a page
+ *  that need not move. */
+export async function blank({ init, prepare, moving = false, ...options } = {}) {
+  const reducedMotion = moving ? "no-preference" : "reduce";
+  const context = await browser.newContext({ viewport: { width: 1280, height: 900 }, deviceScaleFactor: 1, reducedMotion, ...options });
   if (init) await context.addInitScript(init);
   if (prepare) await prepare(context);
   const page = await context.newPage();
@@ -187,7 +191,7 @@ export const watchLongTasks = () => {
 export async function longTaskBudget(html) {
   let worst = 0;
   for (let k = 0; k < 3; k++) {
-    const { page, context } = await open(html, { init: watchLongTasks, reducedMotion: "reduce" });
+    const { page, context } = await open(html, { init: watchLongTasks });
     await page.waitForTimeout(300);
     worst = Math.max(worst, ...(await page.evaluate(() => window.__longTasks)));
     await context.close();

@@ -28,7 +28,7 @@ test("<kli-figure autoplay> reads the latest visibility entry: hidden then shown
       disconnect() {}
     };
   };
-  const { page, context, problems } = await open("examples/figures.html", { init });
+  const { page, context, problems } = await open("examples/figures.html", { moving: true, init });
   try {
     await page.waitForFunction(() => document.querySelector("#hopf").run);
     const t0 = (await figureCanvas(page, "#hopf")).t;
@@ -42,7 +42,7 @@ test("<kli-figure autoplay> reads the latest visibility entry: hidden then shown
 });
 
 test("<kli-figure> scaled by its host (as reveal.js scales a slide) renders at the pixels it covers", async () => {
-  const { page, context, problems } = await open("examples/figures.html", { reducedMotion: "reduce", deviceScaleFactor: 2 });
+  const { page, context, problems } = await open("examples/figures.html", { deviceScaleFactor: 2 });
   try {
     await page.evaluate(() => document.querySelector("article").insertAdjacentHTML("afterbegin", `
       <div id="slide" style="width: 400px; transform: scale(1.48); transform-origin: 0 0">
@@ -110,7 +110,7 @@ test("embedded figures reserve their box before their module loads: no layout sh
     await new Promise((resolve) => setTimeout(resolve, 600));
     await route.continue();
   });
-  const { page, context, problems } = await open("examples/figures.html", { init, prepare, reducedMotion: "reduce" });
+  const { page, context, problems } = await open("examples/figures.html", { init, prepare });
   try {
     await page.waitForFunction(() => Array.from(document.querySelectorAll("kli-figure"), (f) => f.run).every(Boolean));
     await page.waitForTimeout(300);
@@ -141,7 +141,7 @@ test("every page shows every refused URL value beside its field at once, and run
   };
   assert.deepEqual(Object.keys(REFUSED).sort(), PAGES.map((page) => page.name).sort(), "a refused query for every page of the registry");
   for (const [url, refused] of PAGES.map((page) => [page.html + REFUSED[page.name][0], REFUSED[page.name][1]])) {
-    const { page, context, problems } = await open(url, { reducedMotion: "reduce" });
+    const { page, context, problems } = await open(url);
     try {
       const marked = await page.evaluate(() => Array.from(document.querySelectorAll("[aria-invalid=true]"), (f) => f.getAttribute("name")));
       for (const [name, message] of Object.entries(refused)) {
@@ -164,7 +164,7 @@ test("every page shows every refused URL value beside its field at once, and run
 });
 
 test("two SLERP parameters, two names: SLERP's clock u = t/T in the object view, KLI's s(t) in the plots and the path", async () => {
-  const { page, context, problems } = await open("index.html?t=1.8", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("index.html?t=1.8");
   try {
     const svgs = await page.evaluate(async () => {
       const { KliDemo } = await import("./pkg/kli_demo.js");
@@ -188,7 +188,7 @@ test("two SLERP parameters, two names: SLERP's clock u = t/T in the object view,
 });
 
 test("a URL number beyond its slider is refused as the slider would refuse it (no swarm of 10⁶, no K = 1e308)", async () => {
-  const { page, context, problems } = await open("swarm.html?n=1000000&K=1e308", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("swarm.html?n=1000000&K=1e308");
   try {
     assert.match(await page.textContent("#count-error"), /^count must be from 2 to 2000 on this page, as its slider \(got 1000000\)/);
     assert.match(await page.textContent("#coupling-error"), /^coupling must be from -3 to 6 on this page/);
@@ -205,7 +205,7 @@ test("a URL number beyond its slider is refused as the slider would refuse it (n
 });
 
 test("the figure interface under hostile input: every call draws with defaults or throws a named Error; 2,500 refusals leave every object working", async () => {
-  const { page, context, problems } = await open("index.html", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("index.html");
   try {
     const result = await page.evaluate(async () => {
       const modules = {
@@ -297,7 +297,7 @@ test("the figure interface under hostile input: every call draws with defaults o
 
 test("printed, every page shows no control and keeps each figure whole on one page", async () => {
   for (const { html } of PAGES) {
-    const { page, context, problems } = await open(html, { reducedMotion: "reduce" });
+    const { page, context, problems } = await open(html);
     try {
       await page.emulateMedia({ media: "print" });
       const printed = await page.evaluate(() => ({
@@ -325,7 +325,7 @@ test("printed, every page shows no control and keeps each figure whole on one pa
 
 test("no empty figure: a page's sweep fills itself once the page is interactive, in the page's worker, and its button runs it again", async () => {
   for (const { html } of PAGES) {
-    const { page, context, problems } = await open(html, { reducedMotion: "reduce" });
+    const { page, context, problems } = await open(html);
     try {
       if ((await page.locator("#sweep").count()) === 0) continue;
       const done = () => page.waitForFunction(() => document.querySelector("#sweep-status")?.textContent.startsWith("Done"),
@@ -357,7 +357,7 @@ test("a page moves once its reader is there: still at load (its first frame, no 
   const now = (page) => page.evaluate(() => ({ t: Number(document.querySelector("#readout").textContent.match(/t = ([\d.]+)/)?.[1]),
     play: document.querySelector("#play").textContent, address: location.search }));
   for (const { html } of PAGES.filter((page) => page.name !== "learn")) {
-    const { page, context, problems } = await open(html, { still: true });
+    const { page, context, problems } = await open(html, { moving: true, still: true });
     try {
       await page.waitForTimeout(800);
       const still = await now(page);
@@ -374,7 +374,7 @@ test("a page moves once its reader is there: still at load (its first frame, no 
   }
   // The first input is the reader taking the controls: it plays, and the wait does not undo it.
   for (const press of [(page) => page.click("#play"), (page) => page.keyboard.press("Space")]) {
-    const { page, context } = await open("sync.html", { still: true });
+    const { page, context } = await open("sync.html", { moving: true, still: true });
     try {
       await press(page);
       await page.waitForTimeout(600);

@@ -69,7 +69,7 @@ const figures = (page) => page.evaluate(() => Array.from(document.querySelectorA
 }));
 
 test("<kli-figure>: three figures in running text, one module shared, sized by CSS, attributes live", async () => {
-  const { page, context, problems } = await open("examples/figures.html", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("examples/figures.html");
   try {
     await page.waitForFunction(() => Array.from(document.querySelectorAll("kli-figure"), (f) => f.run).every(Boolean));
     await page.waitForTimeout(100);
@@ -114,7 +114,7 @@ test("<kli-figure>: three figures in running text, one module shared, sized by C
 });
 
 test("<kli-figure> at 390 px: the page fits, the floated figure goes full width; autoplay animates", async () => {
-  const { page, context, problems } = await open("examples/figures.html", { viewport: { width: 390, height: 844 } });
+  const { page, context, problems } = await open("examples/figures.html", { moving: true, viewport: { width: 390, height: 844 } });
   try {
     await page.waitForFunction(() => Array.from(document.querySelectorAll("kli-figure"), (f) => f.run).every(Boolean));
     assert.ok(await page.evaluate(() => document.documentElement.scrollWidth <= 390));
@@ -130,7 +130,7 @@ test("<kli-figure> at 390 px: the page fits, the floated figure goes full width;
 });
 
 test("animation example: three.js's linear track beside kli/three's smooth one, |ω| under each", async () => {
-  const { page, context, problems } = await open("examples/animation.html", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("examples/animation.html");
   try {
     const text = await page.locator("#jumps").textContent();
     const [linear, smooth] = [...text.matchAll(/([\d.]+) rad\/s/g)].map((m) => Number(m[1]));

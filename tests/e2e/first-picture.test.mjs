@@ -32,7 +32,7 @@ async function held(html, viewport) {
   const gate = new Promise((resolve) => (release = resolve));
   const phone = viewport.width < 500;
   const { page, context, problems } = await blank({
-    viewport, reducedMotion: "reduce", ...(phone ? { hasTouch: true, isMobile: true } : {}),
+    viewport, ...(phone ? { hasTouch: true, isMobile: true } : {}),
     prepare: (context) => context.route(/\.wasm$/, async (route) => {
       await gate;
       await route.continue();

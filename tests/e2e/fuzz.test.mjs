@@ -16,7 +16,7 @@ for (const page of PAGES) {
     // One context for the page's ten URLs, each a document of its own: the module comes from the
     // context's cache after the first, which no answer here depends on (the six pages took 89 s
     // with a fresh context a URL, 54 s so).
-    const { page: tab, context, problems } = await blank({ init: watchLongTasks, reducedMotion: "reduce" });
+    const { page: tab, context, problems } = await blank({ init: watchLongTasks });
     try {
       for (const query of seededQueries(page)) {
         // The last document's requests, cut off by leaving it, are not this URL's problems.

@@ -59,7 +59,7 @@ const slide = (page, selector, value) => page.evaluate(([selector, value]) => {
 const englishIn = (found) => found.filter(([, text]) => ENGLISH_WORD.test(text)).map(([where, text]) => `${where}: ${text}`);
 
 test("learn.html?lang=bs is Bosnian from title to footer, and stays so as a slider moves", async () => {
-  const { page, context, problems } = await open("learn.html?lang=bs", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("learn.html?lang=bs");
   assert.equal(await page.getAttribute("html", "lang"), "bs");
   assert.equal(await page.evaluate(() => document.documentElement.classList.contains("translating")), false, "the page is shown");
   assert.equal(await page.title(), bs.page.title);
@@ -114,7 +114,7 @@ test("learn.html?lang=bs is Bosnian from title to footer, and stays so as a slid
 });
 
 test("?lang=bs: the values of the URL the tour refuses are refused in Bosnian, beside their fields", async () => {
-  const { page, context, problems } = await open("learn.html?lang=bs&axis=w&int=foo&digits=2.5&yaw=999&h=abc", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("learn.html?lang=bs&axis=w&int=foo&digits=2.5&yaw=999&h=abc");
   const errors = Object.fromEntries(await page.$$eval(".field-error", (all) => all.map((o) => [o.id, o.textContent ?? ""]).filter(([, t]) => t)));
   assert.deepEqual(Object.keys(errors).sort(), ["axis-error", "digits-error", "integrator-error", "step-error", "yaw-error"]);
   assert.equal(errors["axis-error"], 'osa mora biti x, y, z ili diagonal (dato je "w")');
@@ -126,7 +126,7 @@ test("?lang=bs: the values of the URL the tour refuses are refused in Bosnian, b
 });
 
 test("learn.html is English as it was, with no script too; ?lang=bs with no script is English and shown", async () => {
-  const { page, context, problems } = await open("learn.html", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("learn.html");
   assert.equal(await page.getAttribute("html", "lang"), "en");
   assert.equal(await page.title(), en.page.title);
   assert.equal((await page.textContent("#care-title")).trim(), "1 Why rotations need care");
@@ -169,7 +169,7 @@ test("the module draws the tour's words in the language given (every view, no En
 test("390 px in both languages: nothing overflows", async () => {
   for (const lang of ["en", "bs"]) {
     const { page, context, problems } = await open(`learn.html${lang === "bs" ? "?lang=bs" : ""}`,
-      { viewport: { width: 390, height: 844 }, reducedMotion: "reduce" });
+      { viewport: { width: 390, height: 844 } });
     assert.ok(await page.evaluate(() => document.documentElement.scrollWidth <= 390), `${lang}: no horizontal scrolling`);
     // No element of the text wider than the screen (a long Bosnian word in a narrow box).
     const wide = await page.evaluate(() => [...document.querySelectorAll("main *, header *, footer *")]

@@ -106,7 +106,7 @@ const phiDegrees = (t) => (2 * Math.atan(Math.tan(Math.PI / 6) * Math.exp(-t)) *
 const predicted = (epsilon) => Math.log(Math.tan(Math.PI / 6) / Math.tan(Math.asin(epsilon / 2)));
 
 test("the tour draws every figure and quotes MATH.md's values; the clock starts only as a moving figure is reached", async () => {
-  const { page, context, problems } = await open("learn.html");
+  const { page, context, problems } = await open("learn.html", { moving: true });
   // A figure far down the tour is not set up at load: its canvas is blank behind its first
   // picture; scrolled to, it is drawn.
   const painted = (selector) => page.evaluate((selector) => {
@@ -186,7 +186,7 @@ test("the tour draws every figure and quotes MATH.md's values; the clock starts 
 });
 
 test("an exercise opens, sets its figure, and its answer is the one the figure then shows", async () => {
-  const { page, context, problems } = await open("learn.html", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("learn.html");
   // One more digit of ε: T* grows by about ln 10.
   const digits = page.locator("details.exercise", { hasText: "one more digit" });
   await digits.locator("summary").click();
@@ -267,7 +267,7 @@ test("an exercise opens, sets its figure, and its answer is the one the figure t
 });
 
 test("the turning rate through the keyframes: drawn, quoted as the smoothness slider moves, and its exercise", async () => {
-  const { page, context, problems } = await open("learn.html", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("learn.html");
   // The keys the figure beside the plot draws: the module gives it those its rate is computed
   // through (were they another's, the jumps quoted below would not be these keys').
   const shown = (await page.getAttribute("#fig-keyframes", "keys")).split(";").map((key) => key.split(",").map(Number));
@@ -332,7 +332,7 @@ test("the swarm: 200 rotations gather at K = 1; its exercise's push, K = −1, b
   assert.equal(push.start.toFixed(3), "0.034");
   assert.equal(push.end.toFixed(3), "0.000");
   assert.equal(Math.round(push.turn), 5);
-  const { page, context, problems } = await open("learn.html", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("learn.html");
   await page.locator("#many-swarm").scrollIntoViewIfNeeded();
   await page.waitForFunction(() => customElements.get("kli-figure") !== undefined, null, { timeout: 10000 });
   // With reduced motion the figure stands at t = 8: its own R is the one computed here.
@@ -358,7 +358,7 @@ test("the swarm: 200 rotations gather at K = 1; its exercise's push, K = −1, b
 });
 
 test("reduced motion: nothing plays by itself, not even as a moving figure is reached", async () => {
-  const { page, context, problems } = await open("learn.html", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("learn.html");
   await page.locator("#learn-phases").scrollIntoViewIfNeeded();
   await page.waitForTimeout(1200);
   assert.equal(await text(page, "#play"), "Play");
@@ -376,7 +376,7 @@ test("reduced motion: nothing plays by itself, not even as a moving figure is re
 });
 
 test("WCAG 2.2 AA and 390 px, every control in words", async () => {
-  const { page, context } = await open("learn.html", { reducedMotion: "reduce" });
+  const { page, context } = await open("learn.html");
   // Every slider of the tour says its value in words.
   const sliders = await page.$$eval("input[type=range]", (all) => all.map((s) => [s.name || s.id || s.dataset.attribute, s.getAttribute("aria-valuetext")]));
   assert.ok(sliders.length >= 16);
@@ -395,7 +395,7 @@ test("WCAG 2.2 AA and 390 px, every control in words", async () => {
     .every((f) => f.shadowRoot?.querySelector("canvas")?.getAttribute("aria-label")), null, { timeout: 30000 });
   assert.deepEqual(await axeViolations(page), []);
   await context.close();
-  const narrow = await open("learn.html", { viewport: { width: 390, height: 844 }, reducedMotion: "reduce" });
+  const narrow = await open("learn.html", { viewport: { width: 390, height: 844 } });
   assert.ok(await narrow.page.evaluate(() => document.documentElement.scrollWidth <= 390), "no horizontal scrolling");
   for (const name of ["euler", "cover", "hopf", "phases", "kli"]) {
     await narrow.page.locator(`#learn-${name}`).scrollIntoViewIfNeeded();

@@ -31,7 +31,7 @@ const NEARED = {
 
 for (const { html } of PAGES) {
   test(`${html} at rest looks as it did (screenshot within tolerance)`, async () => {
-    const { page, context, problems } = await open(html, { reducedMotion: "reduce" });
+    const { page, context, problems } = await open(html);
     try {
       // Everything drawn: the still views are painted in a task after the first frame, and a
       // sweep fills itself a point a task.

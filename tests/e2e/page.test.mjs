@@ -93,7 +93,7 @@ test("the paper's printed Table 1 beside the live one: the copied row marked, tr
 });
 
 test("the animation advances, then stops at T", async () => {
-  const { page, context, problems } = await open();
+  const { page, context, problems } = await open("", { moving: true });
   await page.selectOption("#speed", "4");
   const first = await canvasStats(page, "#object-canvas");
   await page.waitForTimeout(300);
@@ -247,7 +247,7 @@ test("embed=1 is compact; reduced motion does not autoplay; high-DPI is crisp", 
   assert.deepEqual(embed.problems, []);
   await embed.context.close();
 
-  const calm = await open("", { reducedMotion: "reduce" });
+  const calm = await open(""); // prefers reduced motion, as every page not `moving`
   await calm.page.waitForTimeout(300);
   assert.equal(await currentTime(calm.page), 0);
   assert.equal(await calm.page.textContent("#play"), "Play");
@@ -289,7 +289,7 @@ test("works offline once loaded", async () => {
 const urlTime = (page) => new URL(page.url()).searchParams.get("t") ?? undefined;
 
 test("Space on a focused button presses it: Restart restarts rather than pausing", async () => {
-  const { page, context, problems } = await open("?t=5");
+  const { page, context, problems } = await open("?t=5", { moving: true });
   await page.focus("#restart");
   await page.keyboard.press(" ");
   // Restart goes to 0 and plays (no reduced motion here); a page-wide Space would have played
@@ -330,7 +330,7 @@ test("keyboard and slider time changes update the object's label and the URL at 
 });
 
 test("the first load while playing writes no time into the URL", async () => {
-  const { page, context, problems } = await open("");
+  const { page, context, problems } = await open("", { moving: true });
   await page.waitForTimeout(600);
   assert.equal(await page.textContent("#play"), "Pause");
   assert.equal(urlTime(page), undefined, page.url());
@@ -547,7 +547,7 @@ test("memory, wasm memory and the DOM stay flat over rebuilds and playing", asyn
 });
 
 test("a first look for students: what they see and what to try comes before the formulas; the paper's figures say they are the paper's", async () => {
-  const { page, context, problems } = await open("", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("");
   try {
     const header = await page.locator("header").innerText();
     const look = header.indexOf("An aircraft turns"), formula = header.indexOf("q′ = r − (q·r) q");

@@ -25,7 +25,7 @@ const figureReady = (page, id) => page.waitForFunction((id) => {
 }, id);
 
 test("a figure animates on its slide, stops off it, and is drawn at the pixels it covers when the deck scales", async () => {
-  const { page, context, problems } = await open("examples/slides.html#/slide-hopf", { viewport: { width: 1500, height: 1000 } });
+  const { page, context, problems } = await open("examples/slides.html#/slide-hopf", { moving: true, viewport: { width: 1500, height: 1000 } });
   try {
     await figureReady(page, "hopf");
     const first = await canvasHash(page, "hopf");

@@ -14,7 +14,7 @@ async function readout(page) {
 }
 
 test("the swarm page draws, plays, and identical oscillators synchronise", async () => {
-  const { page, context, problems } = await open("swarm.html");
+  const { page, context, problems } = await open("swarm.html", { moving: true });
   const start = await readout(page);
   await page.waitForFunction(() => Number(document.querySelector("#readout").textContent.match(/R = ([\d.]+)/)[1]) > 0.999,
     null, { timeout: 20000 });
@@ -33,7 +33,7 @@ test("the swarm page draws, plays, and identical oscillators synchronise", async
 });
 
 test("negative coupling balances, the KLI preset shows its clock, the URL restores both", async () => {
-  const { page, context, problems } = await open("swarm.html?K=-1&n=200&w=0&seed=4");
+  const { page, context, problems } = await open("swarm.html?K=-1&n=200&w=0&seed=4", { moving: true });
   assert.equal(await page.inputValue("[name=preset]"), "custom");
   await page.waitForFunction(() => Number(document.querySelector("#readout").textContent.match(/R = ([\d.]+)/)[1]) < 0.01,
     null, { timeout: 20000 });
@@ -50,7 +50,7 @@ test("negative coupling balances, the KLI preset shows its clock, the URL restor
 });
 
 test("bad options show the module's message beside their field, and the run goes on", async () => {
-  const { page, context, problems } = await open("swarm.html");
+  const { page, context, problems } = await open("swarm.html", { moving: true });
   await page.fill("[name=seed]", "-3");
   assert.match(await page.textContent("#seed-error"), /^seed must be a whole number from 0 to/);
   assert.equal(await page.getAttribute("[name=seed]", "aria-invalid"), "true");

@@ -19,7 +19,7 @@ const solved = async (page) => {
 };
 
 test("the flow turns a random start into agreement, on the certified chordal optimum", async () => {
-  const { page, context, problems } = await open("sync.html?n=60&graph=random&noise=1&wrong=0&seed=3", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("sync.html?n=60&graph=random&noise=1&wrong=0&seed=3");
   // At the random start nearly every edge is far off: red edges, hardly a blue one.
   assert.match(await page.textContent("#readout"), /^t = 0\.00 /);
   const start = await canvasStats(page, "#sync-graph", CLASSES);
@@ -47,7 +47,7 @@ test("the flow turns a random start into agreement, on the certified chordal opt
 });
 
 test("with wrong edges the robust solution sets them aside and is nearer the truth; consensus agrees", async () => {
-  const { page, context, problems } = await open("sync.html", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("sync.html");
   assert.equal(await page.inputValue("[name=preset]"), "wrong");
   assert.match(page.url(), /n=100&graph=random&noise=5&wrong=0\.1&seed=1/);
   const note = await solved(page);
@@ -77,7 +77,6 @@ test("until its solutions come, the first run's results view keeps its first pic
   let release = () => {};
   const held = new Promise((resolve) => { release = () => resolve(undefined); });
   const { page, context, problems } = await open("sync.html", {
-    reducedMotion: "reduce",
     prepare: (context) => context.route(/\/runtime\/worker\.js$/, async (route) => { await held; await route.continue(); }),
   });
   try {
@@ -111,7 +110,6 @@ test("until its solutions come, the first run's results view keeps its first pic
   let again = () => {};
   const heldAgain = new Promise((resolve) => { again = () => resolve(undefined); });
   const second = await open("sync.html", {
-    reducedMotion: "reduce",
     prepare: (context) => context.route(/\/runtime\/worker\.js$/, async (route) => { await heldAgain; await route.continue(); }),
   });
   try {
@@ -132,7 +130,6 @@ test("each run is solved in a worker while the flow runs, the sweep too; without
   const notes = [];
   for (const worker of [true, false]) {
     const { page, context, problems } = await open("sync.html?n=150&graph=random&noise=4&wrong=0.2&seed=5", {
-      reducedMotion: "reduce",
       init: () => {
         // What the page saw before its solutions came: the note, the results view's state.
         window.__early = [];
@@ -161,7 +158,7 @@ test("each run is solved in a worker while the flow runs, the sweep too; without
   }
   assert.equal(notes[0], notes[1], "the worker's solutions are the page's own");
   // What a run takes as its solutions, hostile: each refused by name, the run still working.
-  const { page, context } = await open("sync.html?n=20&graph=ring&noise=1&wrong=0&seed=1", { reducedMotion: "reduce" });
+  const { page, context } = await open("sync.html?n=20&graph=ring&noise=1&wrong=0&seed=1");
   const refusals = await page.evaluate(async () => {
     const { SyncDemo, SyncFile } = await import("./pkg/sync_demo.js");
     const run = SyncDemo.unsolved({ count: 20, graph: "ring" });
@@ -211,7 +208,6 @@ const SQUARE = [[0, 1], [1, 2], [2, 3], [3, 0]]
 
 test("a user's own pose graph, opened or dropped, is synchronised in the page's worker, with its certificate and residuals", async () => {
   const { page, context, problems } = await open("sync.html", {
-    reducedMotion: "reduce",
     // The calls the page sends its worker (runtime/offload.js), by name.
     init: () => {
       window.__sent = [];
@@ -283,7 +279,7 @@ const mapPicture = (page, which, value) => page.waitForFunction(([which, value])
 const fixture = (name) => readFile(join(root, "tests/fixtures/posegraphs", name));
 
 test("the map: the built-in robot's loop solved before any file, a 2D and a 3D file, the certificate, the .g2o and CSV saves", async () => {
-  const { page, context, problems } = await open("sync.html", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("sync.html");
   // Never an empty figure: the words saying it is solving, or the map.
   assert.ok(await painted(page, "#sync-map", 50), "the map's canvas says something from the start");
   // The built-in graph is made and solved as its section nears the screen (the other tests
@@ -420,7 +416,7 @@ function mowedField() {
 }
 
 test("a 10,000-pose graph solves in the worker, its stages in the status, the page answering meanwhile", async () => {
-  const { page, context, problems } = await open("sync.html", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("sync.html");
   await builtIn(page);
   const field = mowedField();
   assert.equal(field.edges, 9999 + 990);
@@ -467,10 +463,10 @@ test("a 10,000-pose graph solves in the worker, its stages in the status, the pa
 });
 
 test("WCAG 2.2 AA, and at 390 px", async () => {
-  const { page, context } = await open("sync.html", { reducedMotion: "reduce" });
+  const { page, context } = await open("sync.html");
   assert.deepEqual(await axeViolations(page), []);
   await context.close();
-  const narrow = await open("sync.html", { viewport: { width: 390, height: 844 }, reducedMotion: "reduce" });
+  const narrow = await open("sync.html", { viewport: { width: 390, height: 844 } });
   assert.ok(await narrow.page.evaluate(() => document.documentElement.scrollWidth <= 390), "no horizontal scrolling");
   assert.deepEqual(await axeViolations(narrow.page), []);
   await narrow.page.screenshot({ path: join(artifacts, "sync-390px.png"), fullPage: true });
@@ -478,7 +474,7 @@ test("WCAG 2.2 AA, and at 390 px", async () => {
 });
 
 test("<kli-figure view=\"sync\">: the page's graph in any page, its state as attributes, a refused one named", async () => {
-  const { page, context, problems } = await open("examples/figures.html", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("examples/figures.html");
   const drawn = await page.evaluate(async () => {
     const figure = document.createElement("kli-figure");
     figure.setAttribute("view", "sync");
@@ -508,7 +504,7 @@ test("<kli-figure view=\"sync\">: the page's graph in any page, its state as att
 });
 
 test("the complete graph is refused past 120 nodes (7,140 edges), beside the count", async () => {
-  const { page, context, problems } = await open("sync.html?n=200&graph=complete", { reducedMotion: "reduce" });
+  const { page, context, problems } = await open("sync.html?n=200&graph=complete");
   assert.match(await page.textContent("#count-error"), /^count must be at most 120 for the complete graph \(7140 edges; got 200\)/);
   assert.match(await page.textContent("#note"), /^100 nodes, \d+ edges/, "the preset's run stands in");
   assert.deepEqual(problems, []);

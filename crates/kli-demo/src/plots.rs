@@ -21,6 +21,9 @@ pub(crate) struct Panel {
 
 impl Panel {
     /// The rectangle `(left, top, width, height)` showing `x` = `(min, max)` across and `y` up.
+    // Only the swarm's and the synchronisation's plots build a panel this way; a page module
+    // built without both would otherwise warn.
+    #[cfg_attr(not(any(feature = "swarm-page", feature = "sync-page")), allow(dead_code))]
     pub fn new(
         (left, top, width, height): (f64, f64, f64, f64),
         x: (f64, f64),
