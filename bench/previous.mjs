@@ -64,10 +64,11 @@ export function previousPages() {
   return { name, commit, www: build(commit, "www") };
 }
 
-/** This checkout's pages and the previous release's, each served: `{ release, builds, close }`,
- *  `builds` as `[label, origin, folder]`, ours first. */
-export async function servePages() {
-  const release = previousPages();
+/** This checkout's pages and the previous release's (or those of `reference`, a `{ name,
+ *  commit }`), each served: `{ release, builds, close }`, `builds` as `[label, origin, folder]`,
+ *  ours first. */
+export async function servePages(reference = REFERENCES[0]) {
+  const release = { ...reference, www: build(reference.commit, "www") };
   const [ours, theirs] = [await serve(join(root, "www")), await serve(release.www)];
   const builds = [["ours", ours.origin, join(root, "www")], [`${release.name}, ${release.commit}`, theirs.origin, release.www]];
   return { release, builds, close: () => [ours, theirs].forEach((server) => server.close()) };

@@ -16,7 +16,13 @@ import { png, saveAs } from "./exports.js";
  * @property {(view: string, frame: Frame) => string} toSvg
  */
 /** @typedef {{ width: number, height: number, pixelRatio: number, t: number, azimuth: number, elevation: number, textScale?: number }} Frame */
-/** @typedef {(ctx: CanvasRenderingContext2D, frame: Frame) => void} Painter a view the page draws itself */
+/**
+ * A view the page draws itself. A view too large to draw in one task (the synchronisation page's
+ * map of 10⁴ poses) returns the drawing of its next part, which returns the one after it, until
+ * one returns nothing.
+ * @typedef {(ctx: CanvasRenderingContext2D, frame: Frame) => Part | void} Painter
+ */
+/** @typedef {() => Part | void} Part the next part of a view drawn a task at a time */
 /** @typedef {"moving" | "layered" | "still"} Kind how a view follows the time */
 
 /**
@@ -47,6 +53,8 @@ export class Figures {
     this.shown = new Map();
     /** @type {Set<Name>} still views to be drawn in the next task */
     this.later = new Set();
+    /** @type {Map<Name, object>} views being drawn a part a task, each by its drawing's token */
+    this.drawing = new Map();
     /** @type {Canvases<Name> | null} */
     this.sizing = null;
     /** @type {Set<Name> | null} the views near the screen, once `watch` has been told (null: draw every view) */
@@ -85,7 +93,11 @@ export class Figures {
 
   /** After a change that the time does not explain (a new run, camera or size). */
   invalidate(/** @type {readonly Name[]} */ names = /** @type {Name[]} */ (Object.keys(this.canvases))) {
-    for (const name of names) this.stale.add(name);
+    for (const name of names) {
+      this.stale.add(name);
+      // Its parts still to come would draw what is no longer so (over a resized canvas, too).
+      this.drawing.delete(name);
+    }
   }
 
   /** Scales the figures' text (clamped to 0.5–4; anything not a number is 1). */
@@ -145,8 +157,31 @@ export class Figures {
    */
   paint(name, ctx, frame) {
     const painter = this.painters[name];
-    if (painter) painter(ctx, frame);
-    else this.figure?.draw(name, ctx, frame);
+    if (!painter) return this.figure?.draw(name, ctx, frame);
+    for (let part = painter(ctx, frame); part; part = part());
+  }
+
+  /**
+   * As `paint`, but a view the page draws in parts is drawn a part a task (the first now), so
+   * that the page can answer between them; a later drawing of the view stops the rest.
+   * @param {Name} name
+   * @param {CanvasRenderingContext2D} ctx
+   * @param {Frame} frame
+   */
+  paintInParts(name, ctx, frame) {
+    const painter = this.painters[name];
+    if (!painter) return this.paint(name, ctx, frame);
+    const token = {};
+    this.drawing.set(name, token);
+    let part = painter(ctx, frame);
+    const next = () => {
+      if (this.drawing.get(name) !== token || !part) return;
+      part = part();
+      if (part) setTimeout(next);
+      else this.drawing.delete(name);
+    };
+    if (part) setTimeout(next);
+    else this.drawing.delete(name);
   }
 
   /**
@@ -230,7 +265,7 @@ export class Figures {
       this.later.delete(view);
       const frame = this.frame(view, t);
       if (frame) {
-        this.paint(view, context(this.canvases[view]), frame);
+        this.paintInParts(view, context(this.canvases[view]), frame);
         this.uncover(view);
       }
       if (this.later.size > 0) setTimeout(next);

@@ -68,7 +68,7 @@ const page = new Page({
       },
     },
     map: {
-      draw: (ctx, frame) => (shown.map ? shown.map.draw(ctx, frame) : SyncMap.drawWaiting(ctx, frame, SOLVING)),
+      draw: (ctx, frame) => (shown.map ? drawMap(shown.map, ctx, frame) : SyncMap.drawWaiting(ctx, frame, SOLVING)),
       // Printed (or saved) before the worker answers: the words the canvas shows, not an Error.
       svg: (frame) => (shown.map ? shown.map.toSvg(frame) : SyncMap.waitingSvg(frame, SOLVING)),
     },
@@ -183,6 +183,21 @@ async function solveMap(/** @type {Host} */ host, /** @type {string} */ text, /*
   Object.assign(shown, { map, text, name, file, seconds: seconds() });
   showMap(host);
   return true;
+}
+
+/** Draws `map`'s first part, and returns the drawing of the next: a map of 10⁴ poses drawn
+ *  whole kept the main thread 110 ms (the module's calls, then Chromium rasterising them), so a
+ *  large one is drawn a part a task. The rest stops when another map is shown. */
+function drawMap(/** @type {SyncMap} */ map, /** @type {CanvasRenderingContext2D} */ ctx, /** @type {import("../runtime/figures.js").Frame} */ frame) {
+  const parts = map.drawPart(ctx, frame, 0);
+  let part = 1;
+  /** @type {import("../runtime/figures.js").Part} */
+  const next = () => {
+    if (shown.map !== map || part >= parts) return;
+    map.drawPart(ctx, frame, part++);
+    return next;
+  };
+  return parts > 1 ? next : undefined;
 }
 
 /** The map on show: its table, its status, and a 3D map made turnable. */

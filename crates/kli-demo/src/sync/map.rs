@@ -34,7 +34,7 @@ use wasm_bindgen::prelude::*;
 use web_sys::CanvasRenderingContext2d;
 
 use super::initial::{Poses, initial};
-use super::map_view::{Look, MapPanel, draw_map};
+use super::map_view::{Look, MapPanel, Parts, draw_map};
 use super::model::median;
 use super::world::{MAX_CLOSURES, MAX_NOISE, World, WorldOptions, route};
 use crate::camera::Camera;
@@ -322,7 +322,30 @@ impl SyncMap {
         let frame = Frame::read(frame);
         let pen = Pen::begin(ctx, frame.width, frame.height, frame.pixel_ratio, BACKGROUND);
         pen.scale_text(frame.text_scale);
-        self.paint(&pen, (frame.width, frame.height));
+        self.paint(&pen, (frame.width, frame.height), &mut Parts::new(None));
+    }
+
+    /// Part `part` of the map on a canvas, for a page that draws a large map a task at a time
+    /// (`map_view::Parts`): part 0 clears the canvas, the others draw over it, and drawing parts
+    /// 0, 1, … in order at one frame gives what `draw` gives. Returns how many parts there are
+    /// (1 for a map of fewer than some 20,000 segments; a part past the last draws nothing).
+    #[wasm_bindgen(js_name = drawPart)]
+    pub fn draw_part(
+        &self,
+        ctx: &CanvasRenderingContext2d,
+        #[wasm_bindgen(unchecked_param_type = "Frame")] frame: &JsValue,
+        part: usize,
+    ) -> usize {
+        let frame = Frame::read(frame);
+        let pen = if part == 0 {
+            Pen::begin(ctx, frame.width, frame.height, frame.pixel_ratio, BACKGROUND)
+        } else {
+            Pen::over(ctx, frame.pixel_ratio)
+        };
+        pen.scale_text(frame.text_scale);
+        let mut parts = Parts::new(Some(part));
+        self.paint(&pen, (frame.width, frame.height), &mut parts);
+        parts.count()
     }
 
     /// The map's place on a canvas while its graph is being solved: `words`, centred, so that
@@ -362,7 +385,7 @@ impl SyncMap {
         let title = "Your pose graph's map: the initial estimate and the optimum";
         svg_document(frame.width, frame.height, title, &|pen| {
             pen.scale_text(frame.text_scale);
-            self.paint(pen, (frame.width, frame.height))
+            self.paint(pen, (frame.width, frame.height), &mut Parts::new(None))
         })
     }
 }
@@ -519,7 +542,8 @@ impl SyncMap {
         &self.optimum_misfits
     }
 
-    pub fn paint(&self, pen: &Pen, size: (f64, f64)) {
+    /// The map, or of it what falls in `parts`' wanted part.
+    pub fn paint(&self, pen: &Pen, size: (f64, f64), parts: &mut Parts) {
         let a = self.answer;
         let initial = MapPanel {
             heading: if self.from_file {
@@ -552,7 +576,7 @@ impl SyncMap {
             Look::Orbit(Camera::orbit(self.azimuth, self.elevation))
         };
         let truth = self.truth.as_deref();
-        draw_map(pen, &self.graph.edges, &[initial, optimum], truth, &look, size);
+        draw_map(pen, &self.graph.edges, &[initial, optimum], truth, &look, size, parts);
     }
 }
 

@@ -53,8 +53,45 @@ const LINE: f64 = 11.0;
 /// The truth's dash, `[on, off]` pixels.
 const TRUTH_DASH: &[f64] = &[3.0, 3.0];
 
+/// The most segments one part of a map draws ([`Parts`]).
+pub const PART_SEGMENTS: usize = 20_000;
+
+/// The map in parts, for a page that draws a large one a task at a time: a part holds whole
+/// strokes of at most [`PART_SEGMENTS`] segments (a stroke of more stands alone), with the text
+/// and discs drawn between them, so that drawing every part in order makes the same calls as
+/// drawing the whole. w10000's two panels (128,622 segments) took the page's main thread one task
+/// of 110 ms: 57 ms of calls, then 53 ms of Chromium rasterising them at the task's end.
+pub struct Parts {
+    /// The part to draw (`None`: all of them).
+    want: Option<usize>,
+    /// The part the next stroke falls in, and the segments already in it.
+    part: usize,
+    load: usize,
+}
+
+impl Parts {
+    pub fn new(want: Option<usize>) -> Self {
+        Parts { want, part: 0, load: 0 }
+    }
+
+    /// Whether the next drawing, `segments` long (0 for text or a disc), is in the wanted part.
+    fn take(&mut self, segments: usize) -> bool {
+        if self.load > 0 && self.load + segments > PART_SEGMENTS {
+            (self.part, self.load) = (self.part + 1, 0);
+        }
+        self.load += segments;
+        self.want.is_none_or(|want| want == self.part)
+    }
+
+    /// How many parts the drawing took.
+    pub fn count(&self) -> usize {
+        self.part + 1
+    }
+}
+
 /// Draws the panels side by side (stacked when the figure is taller than wide), over `truth`
-/// (each pose's true position, in the panels' gauge) where it is known.
+/// (each pose's true position, in the panels' gauge) where it is known: of each drawing, what
+/// falls in `parts`' wanted part.
 pub fn draw_map(
     pen: &Pen,
     edges: &[[usize; 2]],
@@ -62,6 +99,7 @@ pub fn draw_map(
     truth: Option<&[DVec3]>,
     look: &Look,
     (width, height): (f64, f64),
+    parts: &mut Parts,
 ) {
     let s = pen.text_scale();
     let key = key_entries(truth.is_some());
@@ -104,24 +142,38 @@ pub fn draw_map(
         .fold(f64::INFINITY, f64::min);
     let centre = (0.5 * (low.0 + high.0), 0.5 * (low.1 + high.1));
     for ((panel, points), &(left, top, w, h)) in panels.iter().zip(&flat).zip(&cells) {
-        pen.text(&panel.heading, (left + 10.0, top + 12.0 * s), INK, HEADING, "left");
-        pen.text(&panel.line, (left + 10.0, top + 28.0 * s), MUTED, LINE, "left");
+        if parts.take(0) {
+            pen.text(&panel.heading, (left + 10.0, top + 12.0 * s), INK, HEADING, "left");
+            pen.text(&panel.line, (left + 10.0, top + 28.0 * s), MUTED, LINE, "left");
+        }
         let (cx, cy) = (left + 0.5 * w, top + head + 0.5 * (h - head));
         let at = |(x, y): (f64, f64)| (cx + scale * (x - centre.0), cy - scale * (y - centre.1));
-        let line: Vec<(f64, f64)> = truth.iter().map(|&p| at(p)).collect();
-        pen.polyline(&line, MUTED, 1.0, TRUTH_DASH);
-        draw_edges(pen, edges, panel.misfits, &|i| at(points[i]));
+        if parts.take(truth.len()) {
+            let line: Vec<(f64, f64)> = truth.iter().map(|&p| at(p)).collect();
+            pen.polyline(&line, MUTED, 1.0, TRUTH_DASH);
+        }
+        draw_edges(pen, edges, panel.misfits, &|i| at(points[i]), parts);
         if let Some(&first) = points.first() {
-            pen.disc(at(first), 4.0, Some("#ffffff"), Some((INK, 2.0)));
+            if parts.take(0) {
+                pen.disc(at(first), 4.0, Some("#ffffff"), Some((INK, 2.0)));
+            }
         }
     }
-    draw_key(pen, &key, (8.0, body + 4.0 * s), width - 16.0, true);
+    if parts.take(0) {
+        draw_key(pen, &key, (8.0, body + 4.0 * s), width - 16.0, true);
+    }
 }
 
 /// Every edge as a segment: loop closures thin and under, then the trajectory, each class over
 /// the ones below it (a large misfit stays visible among many small ones), wider as it rises
 /// (but a large graph's loop closures, below).
-fn draw_edges(pen: &Pen, edges: &[[usize; 2]], misfits: &[f64], at: &dyn Fn(usize) -> (f64, f64)) {
+fn draw_edges(
+    pen: &Pen,
+    edges: &[[usize; 2]],
+    misfits: &[f64],
+    at: &dyn Fn(usize) -> (f64, f64),
+    parts: &mut Parts,
+) {
     let mut groups: Vec<Vec<[(f64, f64); 2]>> = vec![Vec::new(); 2 * CLASSES.len()];
     for (&[i, j], &misfit) in edges.iter().zip(misfits) {
         let closure = usize::from(i.abs_diff(j) != 1);
@@ -147,7 +199,9 @@ fn draw_edges(pen: &Pen, edges: &[[usize; 2]], misfits: &[f64], at: &dyn Fn(usiz
             (false, false) => 0.8 + 0.3 * c as f64,
         };
         for piece in segments.chunks(2000) {
-            pen.segments(piece, MISFIT[c], width, &[]);
+            if parts.take(piece.len()) {
+                pen.segments(piece, MISFIT[c], width, &[]);
+            }
         }
     }
 }

@@ -8,7 +8,7 @@ mod export;
 mod file;
 mod initial;
 mod map;
-mod map_view;
+pub mod map_view;
 mod model;
 mod solutions;
 mod view;
