@@ -5,10 +5,8 @@
 // environment, opened as a reader opens one (the file input); each figure is the median over
 // `loads` cold loads (5 by default). The tasks counted run from the file's opening to its map
 // drawn, and on until the page has synchronised the file's rotations alone (both ways, in its
-// worker) and drawn them. They are read from a trace of the page's main thread (its top-level
-// tasks, as Lighthouse reads them), not from Chromium's long-task timing: that leaves out the
-// work Chromium does at a task's end for the canvases it drew to (their rasterising), and gave
-// 56 ms for the map's task where the trace shows the main thread busy 110 ms.
+// worker) and drawn them, read from a trace of the page's main thread (bench/main-thread.mjs:
+// Chromium's long-task timing gave 56 ms for the map's task where the main thread was busy 110).
 //   node bench/map-tasks.mjs [loads] [commit]   (commit: the pages measured beside ours, if not
 //                                               the previous release's, which have no map)
 import { execFileSync } from "node:child_process";
@@ -19,6 +17,7 @@ import { CHROMIUM } from "../scripts/static-server.mjs";
 import { median, record } from "./targets.mjs";
 import { python } from "./python.mjs";
 import { servePages } from "./previous.mjs";
+import { TRACED, tasksOver } from "./main-thread.mjs";
 import { engage } from "../tests/e2e/browser.mjs";
 
 const loads = Number(process.argv[2] ?? 5);
@@ -29,26 +28,6 @@ const path = execFileSync(python(), ["-c", `import gtsam; print(gtsam.findExampl
 
 const browser = await chromium.launch(CHROMIUM);
 const { builds, close } = await servePages(process.argv[3] ? { name: "commit", commit: process.argv[3] } : undefined);
-
-/** The page's main-thread tasks in Chromium's trace `buffer` over `budget` ms, as
- *  `{ at, ms }` (at: the trace's microseconds), and the time of its user-timing mark `mark`. The
- *  page's main thread is the renderer's main thread that ran the most. */
-function tasksOver(buffer, budget, mark) {
-  const events = JSON.parse(buffer.toString("utf8")).traceEvents;
-  const mains = new Set(events.filter((e) => e.name === "thread_name" && e.args?.name === "CrRendererMain").map((e) => `${e.pid}:${e.tid}`));
-  const busy = new Map();
-  for (const e of events) {
-    const thread = `${e.pid}:${e.tid}`;
-    if (e.name === "RunTask" && e.ph === "X" && mains.has(thread)) busy.set(thread, (busy.get(thread) ?? 0) + e.dur);
-  }
-  const main = [...busy].sort((a, b) => b[1] - a[1])[0]?.[0];
-  // Nested RunTasks (a task running another's) are counted once, as the outer one.
-  const tasks = events.filter((e) => e.name === "RunTask" && e.ph === "X" && `${e.pid}:${e.tid}` === main).sort((a, b) => a.ts - b.ts);
-  const top = [];
-  for (const e of tasks) if (!top.length || e.ts >= top.at(-1).ts + top.at(-1).dur) top.push(e);
-  const at = events.find((e) => e.name === mark)?.ts ?? Infinity;
-  return { tasks: top.filter((e) => e.dur > budget * 1000).map((e) => ({ at: e.ts, ms: Math.round(e.dur / 1000) })), mark: at };
-}
 
 /** One cold load of sync.html from `origin` with the file opened once the built-in map is
  *  shown: `{ longest, tasks, map, after, seconds }`, the longest task over 50 ms (0: none)
@@ -70,7 +49,7 @@ async function openFile(origin) {
     }, name, { timeout: 300000 });
     await solved("The built-in robot's loop");
     await page.waitForTimeout(500);
-    await browser.startTracing(page, { categories: ["devtools.timeline", "toplevel", "blink.user_timing"] });
+    await browser.startTracing(page, { categories: TRACED });
     // By its path, as a reader picks a file: the browser makes the File (a buffer would be
     // decoded by the driver's script in the page, a task of its own the page never runs).
     await page.setInputFiles("#file-input", path);

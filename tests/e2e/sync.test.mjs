@@ -458,6 +458,17 @@ test("a 10,000-pose graph solves in the worker, its stages in the status, the pa
   assert.match(rows.Edges, /^10989, of which 990 join/);
   assert.match(rows.Certificate, /^certified/);
   assert.ok(await painted(page, "#sync-map", 5000), "the map is drawn");
+  // Its 21,978 segments are drawn in parts, a task each, the key under the map in the last:
+  // the key's dark text comes, so the drawing was not left half done.
+  const key = await page.waitForFunction(() => {
+    const canvas = /** @type {HTMLCanvasElement} */ (document.querySelector("#sync-map"));
+    const strip = Math.round(24 * devicePixelRatio);
+    const data = canvas.getContext("2d").getImageData(0, canvas.height - strip, canvas.width, strip).data;
+    let ink = 0;
+    for (let i = 0; i < data.length; i += 4) if (data[i] < 90 && data[i + 1] < 90 && data[i + 2] < 90 && data[i + 3] > 0) ink++;
+    return ink > 100 && ink;
+  }, null, { timeout: 10000 }).then((handle) => handle.jsonValue(), () => 0);
+  assert.ok(key > 100, `the key under the map is drawn: ${key} dark pixels`);
   assert.deepEqual(problems, []);
   await context.close();
 });

@@ -328,7 +328,8 @@ impl SyncMap {
     /// Part `part` of the map on a canvas, for a page that draws a large map a task at a time
     /// (`map_view::Parts`): part 0 clears the canvas, the others draw over it, and drawing parts
     /// 0, 1, … in order at one frame gives what `draw` gives. Returns how many parts there are
-    /// (1 for a map of fewer than some 20,000 segments; a part past the last draws nothing).
+    /// (1 for a map of at most `map_view::PART_SEGMENTS` segments; a part past the last draws
+    /// nothing).
     #[wasm_bindgen(js_name = drawPart)]
     pub fn draw_part(
         &self,

@@ -54,13 +54,15 @@ const LINE: f64 = 11.0;
 const TRUTH_DASH: &[f64] = &[3.0, 3.0];
 
 /// The most segments one part of a map draws ([`Parts`]).
-pub const PART_SEGMENTS: usize = 20_000;
+pub const PART_SEGMENTS: usize = 8_000;
 
 /// The map in parts, for a page that draws a large one a task at a time: a part holds whole
 /// strokes of at most [`PART_SEGMENTS`] segments (a stroke of more stands alone), with the text
 /// and discs drawn between them, so that drawing every part in order makes the same calls as
-/// drawing the whole. w10000's two panels (128,622 segments) took the page's main thread one task
-/// of 110 ms: 57 ms of calls, then 53 ms of Chromium rasterising them at the task's end.
+/// drawing the whole. w10000's two panels (128,622 segments) drawn whole took the page's main
+/// thread one task of 110 ms (57 ms of calls, then 53 ms of Chromium rasterising them at the
+/// task's end); in parts of at most 20,000 segments its longest was still 50–54 ms in two loads
+/// of three (a part's time varies with what the engine does beside it), hence 8,000.
 pub struct Parts {
     /// The part to draw (`None`: all of them).
     want: Option<usize>,
