@@ -36,7 +36,7 @@ const offload = new Offload(sync, new URL("../pkg/sync_demo.js", import.meta.url
 const own = { file: /** @type {SyncFile | null} */ (null), name: "" };
 /** The pose graph on the map: the built-in one until a file is opened; its text, its name, the
  *  seconds its solve took (in the worker, reading included). */
-const shown = { map: /** @type {SyncMap | null} */ (null), text: "", name: "", file: false, seconds: "" };
+const shown = { map: /** @type {SyncMap | null} */ (null), text: "", name: "", file: false, seconds: "", turned: -Infinity };
 /** The views' names in file names. */
 const FILE_NAMES = /** @type {Record<string, string>} */ ({
   graph: "graph", hopf: "hopf", objects: "objects", plots: "plots", results: "residuals", sweep: "wrong-edge-sweep",
@@ -49,6 +49,8 @@ const mapName = () => (shown.file ? shown.name.replace(/\.[^.]*$/, "") : "kli-bu
 const SOLVING = "Solving the built-in robot's loop…";
 /** A 3D map's turn a key press, radians. */
 const TURN = (5 * Math.PI) / 180;
+/** For this long (ms) after a turn the map is being turned, and is drawn whole. */
+const TURNING = 500;
 
 /** @type {Page<SyncState, SyncDemo>} */
 const page = new Page({
@@ -187,8 +189,10 @@ async function solveMap(/** @type {Host} */ host, /** @type {string} */ text, /*
 
 /** Draws `map`'s first part, and returns the drawing of the next: a map of 10⁴ poses drawn
  *  whole kept the main thread 110 ms (the module's calls, then Chromium rasterising them), so a
- *  large one is drawn a part a task. The rest stops when another map is shown. */
+ *  large one is drawn a part a task. The rest stops when another map is shown. A map being
+ *  turned is drawn whole: in parts each move would show it half drawn. */
 function drawMap(/** @type {SyncMap} */ map, /** @type {CanvasRenderingContext2D} */ ctx, /** @type {import("../runtime/figures.js").Frame} */ frame) {
+  if (performance.now() - shown.turned < TURNING) return map.draw(ctx, frame);
   const parts = map.drawPart(ctx, frame, 0);
   let part = 1;
   /** @type {import("../runtime/figures.js").Part} */
@@ -290,6 +294,7 @@ function wireMap(/** @type {Host} */ host) {
   const turn = (/** @type {number} */ azimuth, /** @type {number} */ elevation) => {
     if (!shown.map || shown.map.summary.dimension !== 3) return;
     shown.map.turn(azimuth, elevation);
+    shown.turned = performance.now();
     host.redraw(["map"]);
   };
   wireDragging(canvas, turn);

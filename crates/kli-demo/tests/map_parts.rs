@@ -6,7 +6,7 @@
 use glam::DVec3;
 use kli_demo::palette::BACKGROUND;
 use kli_demo::pen::Pen;
-use kli_demo::sync::map_view::{Look, MapPanel, PART_SEGMENTS, Parts, draw_map};
+use kli_demo::sync::map_view::{Look, MapPanel, PART_SEGMENTS, Parts, WHOLE_SEGMENTS, draw_map};
 use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
 
 wasm_bindgen_test_configure!(run_in_browser);
@@ -87,9 +87,12 @@ fn a_large_map_drawn_part_by_part_is_the_map_drawn_whole() {
 }
 
 #[wasm_bindgen_test]
-fn a_small_map_is_one_part() {
+fn a_map_of_at_most_whole_segments_is_one_part() {
+    // 2 panels × (2,999 + 2,000) edges: 9,998 segments, more than a part's budget.
+    let n = 3_000;
+    assert!(2 * (n - 1 + n - n / 3) > PART_SEGMENTS && 2 * (n - 1 + n - n / 3) <= WHOLE_SEGMENTS);
     let mut parts = Parts::new(Some(0));
-    let first = svg(|pen| draw(pen, 300, false, &mut parts));
+    let first = svg(|pen| draw(pen, n, false, &mut parts));
     assert_eq!(parts.count(), 1);
-    assert_eq!(first, svg(|pen| draw(pen, 300, false, &mut Parts::new(None))));
+    assert_eq!(first, svg(|pen| draw(pen, n, false, &mut Parts::new(None))));
 }

@@ -56,16 +56,24 @@ const TRUTH_DASH: &[f64] = &[3.0, 3.0];
 /// The most segments one part of a map draws ([`Parts`]).
 pub const PART_SEGMENTS: usize = 8_000;
 
+/// The most segments of a map drawn in one part whatever its parts' budget: some 20 ms of the
+/// main thread here, and a map turned by dragging is redrawn at each move, where parts would show
+/// it half drawn (sphere2500's two panels: 9,898 segments).
+pub const WHOLE_SEGMENTS: usize = 24_000;
+
 /// The map in parts, for a page that draws a large one a task at a time: a part holds whole
 /// strokes of at most [`PART_SEGMENTS`] segments (a stroke of more stands alone), with the text
 /// and discs drawn between them, so that drawing every part in order makes the same calls as
 /// drawing the whole. w10000's two panels (128,622 segments) drawn whole took the page's main
 /// thread one task of 110 ms (57 ms of calls, then 53 ms of Chromium rasterising them at the
 /// task's end); in parts of at most 20,000 segments its longest was still 50–54 ms in two loads
-/// of three (a part's time varies with what the engine does beside it), hence 8,000.
+/// of three (a part's time varies with what the engine does beside it), hence 8,000. A map of
+/// at most [`WHOLE_SEGMENTS`] is one part.
 pub struct Parts {
     /// The part to draw (`None`: all of them).
     want: Option<usize>,
+    /// The most segments a part holds.
+    budget: usize,
     /// The part the next stroke falls in, and the segments already in it.
     part: usize,
     load: usize,
@@ -73,12 +81,12 @@ pub struct Parts {
 
 impl Parts {
     pub fn new(want: Option<usize>) -> Self {
-        Parts { want, part: 0, load: 0 }
+        Parts { want, budget: PART_SEGMENTS, part: 0, load: 0 }
     }
 
     /// Whether the next drawing, `segments` long (0 for text or a disc), is in the wanted part.
     fn take(&mut self, segments: usize) -> bool {
-        if self.load > 0 && self.load + segments > PART_SEGMENTS {
+        if self.load > 0 && self.load + segments > self.budget {
             (self.part, self.load) = (self.part + 1, 0);
         }
         self.load += segments;
@@ -103,6 +111,9 @@ pub fn draw_map(
     (width, height): (f64, f64),
     parts: &mut Parts,
 ) {
+    if panels.len() * (edges.len() + truth.map_or(0, <[DVec3]>::len)) <= WHOLE_SEGMENTS {
+        parts.budget = usize::MAX;
+    }
     let s = pen.text_scale();
     let key = key_entries(truth.is_some());
     let key_height = draw_key(pen, &key, (8.0, 0.0), width - 16.0, false);
