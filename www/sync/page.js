@@ -35,7 +35,7 @@ const offload = new Offload(sync, new URL("../pkg/sync_demo.js", import.meta.url
 /** The user's own pose graph's rotations alone, once one is read. */
 const own = { file: /** @type {SyncFile | null} */ (null), name: "" };
 /** The pose graph on the map: the built-in one until a file is opened; its text, its name, the
- *  seconds its solve took (in the worker, reading included). */
+ *  seconds its solve took (in the worker, reading included), and when it was last turned. */
 const shown = { map: /** @type {SyncMap | null} */ (null), text: "", name: "", file: false, seconds: "", turned: -Infinity };
 /** The views' names in file names. */
 const FILE_NAMES = /** @type {Record<string, string>} */ ({
