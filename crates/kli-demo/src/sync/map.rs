@@ -36,6 +36,7 @@ use web_sys::CanvasRenderingContext2d;
 use super::initial::{Poses, initial};
 use super::map_view::{Look, MapPanel, Parts, draw_map};
 use super::model::median;
+use super::solutions;
 use super::world::{MAX_CLOSURES, MAX_NOISE, World, WorldOptions, route};
 use crate::camera::Camera;
 use crate::figure::{Frame, Record};
@@ -319,10 +320,7 @@ impl SyncMap {
         ctx: &CanvasRenderingContext2d,
         #[wasm_bindgen(unchecked_param_type = "Frame")] frame: &JsValue,
     ) {
-        let frame = Frame::read(frame);
-        let pen = Pen::begin(ctx, frame.width, frame.height, frame.pixel_ratio, BACKGROUND);
-        pen.scale_text(frame.text_scale);
-        self.paint(&pen, (frame.width, frame.height), &mut Parts::new(None));
+        self.draw_parts(ctx, frame, Parts::new(None));
     }
 
     /// Part `part` of the map on a canvas, for a page that draws a large map a task at a time
@@ -337,16 +335,7 @@ impl SyncMap {
         #[wasm_bindgen(unchecked_param_type = "Frame")] frame: &JsValue,
         part: usize,
     ) -> usize {
-        let frame = Frame::read(frame);
-        let pen = if part == 0 {
-            Pen::begin(ctx, frame.width, frame.height, frame.pixel_ratio, BACKGROUND)
-        } else {
-            Pen::over(ctx, frame.pixel_ratio)
-        };
-        pen.scale_text(frame.text_scale);
-        let mut parts = Parts::new(Some(part));
-        self.paint(&pen, (frame.width, frame.height), &mut parts);
-        parts.count()
+        self.draw_parts(ctx, frame, Parts::new(Some(part)))
     }
 
     /// The map's place on a canvas while its graph is being solved: `words`, centred, so that
@@ -471,11 +460,9 @@ impl SyncMap {
         }
         let whole = |k: usize, below: f64| -> Result<usize, KliError> {
             let x = data[k];
-            if x.fract() == 0.0 && (0.0..below).contains(&x) {
-                Ok(x as usize)
-            } else {
-                Err(refuse(format!("must hold a whole number below {below} at {k} (got {x})")))
-            }
+            let problem =
+                || refuse(format!("must hold a whole number below {below} at {k} (got {x})"));
+            solutions::whole(x).filter(|&v| (v as f64) < below).ok_or_else(problem)
         };
         let dimension = whole(HEAD, 4.0)?;
         if dimension < 2 {
@@ -541,6 +528,25 @@ impl SyncMap {
 
     pub fn optimum_misfits(&self) -> &[f64] {
         &self.optimum_misfits
+    }
+
+    /// What falls in `parts`' wanted part (all of it, or its first part, on a cleared canvas;
+    /// a later part over what the canvas holds); returns the count of parts.
+    fn draw_parts(
+        &self,
+        ctx: &CanvasRenderingContext2d,
+        frame: &JsValue,
+        mut parts: Parts,
+    ) -> usize {
+        let frame = Frame::read(frame);
+        let pen = if parts.wants_later() {
+            Pen::over(ctx, frame.pixel_ratio)
+        } else {
+            Pen::begin(ctx, frame.width, frame.height, frame.pixel_ratio, BACKGROUND)
+        };
+        pen.scale_text(frame.text_scale);
+        self.paint(&pen, (frame.width, frame.height), &mut parts);
+        parts.count()
     }
 
     /// The map, or of it what falls in `parts`' wanted part.

@@ -93,6 +93,11 @@ impl Parts {
         self.want.is_none_or(|want| want == self.part)
     }
 
+    /// Whether the part wanted is one after the first (drawn over the ones before it).
+    pub fn wants_later(&self) -> bool {
+        self.want.is_some_and(|want| want > 0)
+    }
+
     /// How many parts the drawing took.
     pub fn count(&self) -> usize {
         self.part + 1
