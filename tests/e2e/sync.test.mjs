@@ -470,6 +470,17 @@ test("a 10,000-pose graph solves in the worker, its stages in the status, the pa
     return ink > 100 && ink;
   }, null, { timeout: 10000 }).then((handle) => handle.jsonValue(), () => 0);
   assert.ok(key > 100, `the key under the map is drawn: ${key} dark pixels`);
+  // The parts after the first drew over it: the left panel's trajectory, drawn in the first
+  // parts, is still there once the last is drawn.
+  const left = await page.evaluate(() => {
+    const canvas = /** @type {HTMLCanvasElement} */ (document.querySelector("#sync-map"));
+    const [w, h] = [Math.round(canvas.width / 2), Math.round(canvas.height * 0.8)];
+    const data = canvas.getContext("2d").getImageData(0, Math.round(canvas.height * 0.1), w, h - Math.round(canvas.height * 0.1)).data;
+    let ink = 0;
+    for (let i = 0; i < data.length; i += 4) if (data[i] < 200 || data[i + 1] < 200 || data[i + 2] < 200) ink++;
+    return ink;
+  });
+  assert.ok(left > 2000, `the left panel keeps its drawing: ${left} pixels`);
   assert.deepEqual(problems, []);
   await context.close();
 });

@@ -82,12 +82,16 @@ fn a_large_map_drawn_part_by_part_is_the_map_drawn_whole() {
         let drawn = segments(&alone);
         assert!(alone != empty && drawn <= PART_SEGMENTS, "part {part}: {drawn} segments");
     }
+    // Parts are filled: each takes strokes (at most 2,000 segments) until the next would pass
+    // its budget, so the spiral's 39,998 segments take at most 7 parts of over 6,000 after the
+    // first (the truth's).
+    assert!(count <= 1 + 39_998usize.div_ceil(PART_SEGMENTS - 2_000), "{count} parts");
     let past = svg(|pen| draw(pen, n, true, &mut Parts::new(Some(count))));
     assert_eq!(past, empty, "a part past the last draws nothing");
 }
 
 #[wasm_bindgen_test]
-fn a_map_of_at_most_whole_segments_is_one_part() {
+fn a_map_is_one_part_up_to_whole_segments_and_in_parts_beyond() {
     // 2 panels × (2,999 + 2,000) edges: 9,998 segments, more than a part's budget.
     let n = 3_000;
     assert!(2 * (n - 1 + n - n / 3) > PART_SEGMENTS && 2 * (n - 1 + n - n / 3) <= WHOLE_SEGMENTS);
@@ -95,4 +99,10 @@ fn a_map_of_at_most_whole_segments_is_one_part() {
     let first = svg(|pen| draw(pen, n, false, &mut parts));
     assert_eq!(parts.count(), 1);
     assert_eq!(first, svg(|pen| draw(pen, n, false, &mut Parts::new(None))));
+    // Just over: 2 panels × (7,999 + 5,334) edges, 26,666 segments, are drawn in parts.
+    let n = 8_000;
+    assert!(2 * (n - 1 + n - n / 3) > WHOLE_SEGMENTS);
+    let mut parts = Parts::new(Some(0));
+    let _ = svg(|pen| draw(pen, n, false, &mut parts));
+    assert!(parts.count() > 1, "{} parts", parts.count());
 }
