@@ -180,19 +180,24 @@ demo: single
 #              and the npm package's tests (tests/js)
 #              and, once the site is built, the end-to-end files that assert nothing about
 #              time (E2E_EARLY), one at a time beside the Rust lane's tests, which the web
-#              lane would otherwise wait for
+#              lane would otherwise wait for; then, one at a time, as many of the other
+#              files as start before the Rust lane ends (E2E_FLEX)
 #   test-page-late  the other end-to-end files, last, two at a time
 # Each lane's lines are prefixed with its name. A failing step stops its lane and `make test`
 # fails once the other lane is done (`cargo fmt --check` runs before both, to fail at once).
 test: setup
 	cargo fmt --all --check
+	@rm -f $(E2E_RAN) $(RUST_RUNNING)
 	$(MAKE) --no-print-directory -j2 lane-rust lane-web
-	$(MAKE) --no-print-directory test-page-late
+	$(MAKE) --no-print-directory test-page-late E2E_SKIP_RAN=1
 
+# RUST_RUNNING exists while the Rust lane runs: the web lane's end-to-end files read it.
 lane-rust:
-	$(MAKE) --no-print-directory -j1 lint-rust lint-wasm-portable test-native test-wasm-node test-wasm-browser 2>&1 | sed -u 's/^/[rust] /'
+	@mkdir -p target && touch $(RUST_RUNNING)
+	@status=0; $(MAKE) --no-print-directory -j1 lint-rust lint-wasm-portable test-native test-wasm-node test-wasm-browser 2>&1 \
+	  | sed -u 's/^/[rust] /' || status=$$?; rm -f $(RUST_RUNNING); exit $$status
 lane-web:
-	$(MAKE) --no-print-directory -j1 pkg www publish-check lint-js test-package single test-page-early 2>&1 \
+	$(MAKE) --no-print-directory -j1 pkg www publish-check lint-js test-package single test-page-early E2E_FILL=1 2>&1 \
 	  | sed -u 's/^/[web] /'
 
 # Formatting, clippy (native and wasm32), rustdoc, and the page's JavaScript against the
@@ -283,15 +288,40 @@ test-package: pkg
 # URLs here too the Rust lane, the longer, ended 130 s later (834 s against 705 s) for 42 s saved
 # after it.
 E2E_EARLY := $(addprefix tests/e2e/,bundlers.test.mjs single.test.mjs links.test.mjs look.test.mjs learn-lang.test.mjs teach.test.mjs)
+E2E_LATE := $(filter-out $(E2E_EARLY),$(wildcard tests/e2e/*.test.mjs))
+# After E2E_EARLY, the web lane of `make test` used to wait for the Rust lane (100 s on a fresh
+# clone, 2026-11-28, a third of a core idle while the Rust lane ran its tests on one thread or
+# two): it now takes the other files one at a time, the smaller first so that the one still
+# running when the Rust lane ends holds the end back least, for as long as the Rust lane runs
+# (RUST_RUNNING), listing each in E2E_RAN; `test-page-late` after the lanes leaves those out.
+# How many fit depends on the machine: on a slow one the Rust lane ends first and none run here.
+E2E_FLEX := $(addprefix tests/e2e/,examples.test.mjs exports.test.mjs hostile-load.test.mjs slides.test.mjs \
+              swarm.test.mjs keyframes.test.mjs embed.test.mjs first-picture.test.mjs video.test.mjs fuzz.test.mjs \
+              average.test.mjs sync.test.mjs learn.test.mjs page.test.mjs contract.test.mjs)
+ifneq ($(sort $(E2E_FLEX)),$(sort $(E2E_LATE)))
+$(error E2E_FLEX must list every end-to-end file not in E2E_EARLY: $(filter-out $(E2E_FLEX),$(E2E_LATE)) missing)
+endif
+RUST_RUNNING := target/lane-rust.running
+E2E_RAN := target/e2e-ran-early.txt
 test-page: test-page-early test-page-late
 test-page-early: pkg www single setup-browser
 	node --test --test-concurrency=1 $(E2E_EARLY)
+	@for file in $(if $(E2E_FILL),$(E2E_FLEX)); do \
+	  [ -e $(RUST_RUNNING) ] || break; \
+	  echo "the Rust lane still runs: $$file now"; \
+	  node --test $$file; echo $$file >> $(E2E_RAN); \
+	done
 # The other files two at a time (Node 20's runner takes one at a time on 2 cores: os.availableParallelism()
 # − 1), each with its own server and Chromium. No file times the machine: how long the pages'
 # tasks take on hostile input is the benchmark's (bench/long-tasks.mjs); the tests hold them only
 # to a hang's bound, which the files beside them leave far off.
 test-page-late: pkg www single setup-browser
-	node --test --test-concurrency=2 $(filter-out $(E2E_EARLY),$(wildcard tests/e2e/*.test.mjs))
+	@files="$(E2E_LATE)"; \
+	if [ -n "$(E2E_SKIP_RAN)" ] && [ -f $(E2E_RAN) ]; then \
+	  echo "run in the web lane already: $$(tr '\n' ' ' < $(E2E_RAN))"; \
+	  files=$$(printf '%s\n' $$files | grep -vxF -f $(E2E_RAN) || true); \
+	fi; \
+	if [ -n "$$files" ]; then node --test --test-concurrency=2 $$files; fi
 
 # Benchmarks, not tests: nothing here is asserted by `make test`.
 bench: pkg www setup-browser
