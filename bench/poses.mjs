@@ -1,6 +1,7 @@
 // kli/sync's synchronizePoses (SE-Sync's certified optimum) on real pose graphs, 2D and 3D, beside
-// GTSAM's chordal initialisation + Levenberg–Marquardt and g2o's Levenberg–Marquardt from the same
-// start in the same run (bench/poses_peers.py, in the bench's own Python environment,
+// SE-Sync's own C++ (its reference implementation, one thread: bench/sesync.mjs), GTSAM's chordal
+// initialisation + Levenberg–Marquardt and g2o's Levenberg–Marquardt from the same start in the
+// same run (bench/poses_peers.py, in the bench's own Python environment,
 // bench/python.mjs): GTSAM's example data (the folder its
 // wheel ships: sphere2500.txt, w10000.graph, w20000.txt, pose3example-grid.txt; w20000.txt, whose
 // relaxation is not tight, runs once and counts in both targets: docs/performance.md), SE-Sync's benchmark graphs from its
@@ -17,6 +18,7 @@ import { existsSync, mkdirSync, readdirSync, readFileSync, writeFileSync } from 
 import { join } from "node:path";
 import { record } from "./targets.mjs";
 import { python, runPython } from "./python.mjs";
+import { seSync } from "./sesync.mjs";
 
 const root = new URL("../", import.meta.url).pathname;
 const sync = await import(`${root}pkg/sync.js`);
@@ -97,15 +99,34 @@ for (const c of cases) {
   ran.push({ ...c, graph, run, peerPath: path, converted: path !== c.path });
 }
 
+// SE-Sync's time is its own total_computation_time (the file's reading left out, as kli's is):
+// the median of 3 where a run takes at most 2 s, else one run, as for GTSAM.
+const reference = seSync();
+if (reference.error) notes.push(`SE-Sync's C++ not run: ${reference.error}`);
+else notes.push(`SE-Sync's C++ at ${reference.version}, one thread`);
+for (const c of ran) {
+  if (reference.error) break;
+  try {
+    const runs = [reference.run(c.peerPath)];
+    while (runs.length < 3 && runs[0].seconds <= 2) runs.push(reference.run(c.peerPath));
+    const seconds = runs.map((r) => r.seconds).sort((a, b) => a - b)[runs.length >> 1];
+    c.seSync = { ...runs[0], seconds, runs: runs.length };
+  } catch (e) {
+    c.seSync = { error: e.message.split("\n")[0] };
+  }
+  console.error(`  SE-Sync ${c.name}: ${c.seSync.error ?? `${c.seSync.seconds.toFixed(2)} s`}`);
+}
+
 const input = ran.map((c) => ({
   name: c.name, path: c.peerPath, dimension: c.graph.dimension,
   kli: { rotations: Array.from(c.run.result.rotations), translations: Array.from(c.run.result.translations) },
+  seSync: c.seSync?.rotations ? { rotations: c.seSync.rotations, translations: c.seSync.translations } : undefined,
 }));
 const { versions, rows } = JSON.parse(runPython("poses_peers.py", { scratch: work, graphs: input }).toString());
 
-console.log(`\nkli/sync synchronizePoses in wasm under Node ${process.version} beside GTSAM ${versions.gtsam} chordal + LM and g2o (g2opy ${versions.g2opy}) LM from the same start (Python); ${notes.join("; ")}`);
-console.log("| graph | d | poses | edges | kli (median of 3; fastest) | kli cost | certified, rank | GTSAM chordal + LM | its answer, SE-Sync cost | g2o LM, same start | its answer, SE-Sync cost |");
-console.log("| --- | ---: | ---: | ---: | ---: | ---: | --- | ---: | ---: | ---: | ---: |");
+console.log(`\nkli/sync synchronizePoses in wasm under Node ${process.version} beside SE-Sync's C++, GTSAM ${versions.gtsam} chordal + LM and g2o (g2opy ${versions.g2opy}) LM from the same start (Python); ${notes.join("; ")}`);
+console.log("| graph | d | poses | edges | kli (median of 3; fastest) | kli cost | certified, rank | SE-Sync C++ | its answer; its verdict, rank | GTSAM chordal + LM | its answer, SE-Sync cost | g2o LM, same start | its answer, SE-Sync cost |");
+console.log("| --- | ---: | ---: | ---: | ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: |");
 const ms = (s) => (s < 1 ? `${(1000 * s).toFixed(s < 0.1 ? 1 : 0)} ms` : `${s.toFixed(2)} s`);
 const costMisses = [], slower = [];
 let costWorst = 0, speedWorst = 0;
@@ -113,7 +134,8 @@ for (const c of ran) {
   const row = rows.find((r) => r.name === c.name);
   const r = c.run.result;
   const kliCost = row.kliCost ?? r.cost; // kli's answer in the reference's cost (same as r.cost to ~1e-12)
-  const best = Math.min(kliCost, row.cost ?? Infinity, row.g2o?.cost ?? Infinity);
+  const se = c.seSync && !c.seSync.error ? { ...c.seSync, cost: row.seSyncCost ?? undefined } : c.seSync;
+  const best = Math.min(kliCost, row.cost ?? Infinity, row.g2o?.cost ?? Infinity, se?.cost ?? Infinity);
   const gap = (kliCost - best) / best;
   costWorst = Math.max(costWorst, gap);
   if (!(gap <= 1e-6 && r.certificate.certified)) {
@@ -129,16 +151,19 @@ for (const c of ran) {
   const above = (x) => { const g = (x - best) / best; return g < 1e-4 ? `${g.toExponential(1)}` : `${(100 * g).toFixed(2)}%`; };
   const cost = (p) => (p?.cost === undefined ? "" : `${p.cost.toFixed(4)} (+${above(p.cost)})`);
   const gtsam = `${time(row)} | ${cost(row)} | ${time(row.g2o)} | ${cost(row.g2o)}`;
+  // SE-Sync's own verdict: GlobalOpt at its eigenvalue tolerance (an absolute 1e-3; kli's is 1e-9 of Q's scale).
+  const verdict = se && !se.error ? `; ${se.status === 0 ? "certified" : `not certified (status ${se.status})`}, ${se.rank}` : "";
+  const seSyncCells = `${time(se)} | ${cost(se)}${verdict}`;
   const kliTime = c.run.runs === 1 ? `${ms(c.run.seconds)} (1 run)` : `${ms(c.run.seconds)}; ${ms(c.run.fastest)}`;
-  console.log(`| ${c.name}${c.converted ? " ‡" : ""} | ${c.graph.dimension} | ${c.graph.count.toLocaleString("en")} | ${(c.graph.edges.length / 2).toLocaleString("en")} | ${kliTime} | ${r.cost.toFixed(4)} | ${r.certificate.certified ? "yes" : "no"}, ${r.certificate.rank} | ${gtsam} |`);
+  console.log(`| ${c.name}${c.converted ? " ‡" : ""} | ${c.graph.dimension} | ${c.graph.count.toLocaleString("en")} | ${(c.graph.edges.length / 2).toLocaleString("en")} | ${kliTime} | ${r.cost.toFixed(4)} | ${r.certificate.certified ? "yes" : "no"}, ${r.certificate.rank} | ${seSyncCells} | ${gtsam} |`);
   if (Math.abs(kliCost - r.cost) > 1e-9 * r.cost) console.log(`(${c.name}: the reference reads kli's answer as ${kliCost}: its reader and kli's differ here)`);
 }
 console.log("‡ a TORO file (EDGE3, EDGE2): kli reads it; GTSAM, g2o and the reference read it as kli's writeG2o wrote it (its information in g2o's units: the same κ and τ), as the reference reads g2o lines only.");
-console.log("Costs: + the share above the best of the three; Ceres (pyceres) is not a peer (bench/poses_peers.py).");
+console.log("Costs: + the share above the best of the four; SE-Sync's verdict is its own (GlobalOpt: λ_min ≥ −1e-3, absolute), its rank the staircase's last level (it starts at 5); Ceres (pyceres) is not a peer (bench/poses_peers.py).");
 
 record("synchronizePoses on real pose graphs (GTSAM's, SE-Sync's, the fixtures): cost within 1e-6 (relative) of the best any method reached, certified",
   costMisses.length ? `missed on ${costMisses.join(", ")}` : `all ${ran.length} certified; at most ${costWorst.toExponential(1)} above the best`,
-  "GTSAM chordal + LM's and g2o LM's answers in SE-Sync's cost, same run", costMisses.length === 0);
+  "SE-Sync's C++, GTSAM chordal + LM's and g2o LM's answers in SE-Sync's cost, same run", costMisses.length === 0);
 record("synchronizePoses, wasm under Node: faster than GTSAM's chordal + LM on every graph of at least 1,000 poses",
   slower.length ? `slower on ${slower.join(", ")}` : `at most ${speedWorst.toFixed(2)}× GTSAM's time`,
   "GTSAM chordal + LM (Python), same run", slower.length === 0);

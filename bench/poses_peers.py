@@ -1,5 +1,6 @@
 """GTSAM beside kli's synchronizePoses (bench/poses.mjs): on each pose graph, GTSAM's chordal
-initialisation + Levenberg-Marquardt, timed here, and every answer (GTSAM's and kli's, passed in)
+initialisation + Levenberg-Marquardt, timed here, and every answer (GTSAM's, and kli's and
+SE-Sync's C++'s, passed in)
 evaluated in SE-Sync's cost by bench/posegraph_reference.py's reader and cost, the one currency.
 
 - 3D: gtsam.InitializePose3.initialize, then LevenbergMarquardtOptimizer (default parameters)
@@ -15,8 +16,9 @@ and one written in Python would time Python callbacks.
 A run is the median of 3 where the first takes at most 2 s, else the one run.
 
 stdin: {"scratch": a folder to write in, "graphs": [{"name", "path", "dimension", "kli":
-{"rotations": [w x y z ...], "translations": [x y z ...]}}]}; stdout: {"versions": {...}, "rows":
-[{"name", "poses", "edges", "seconds", "runs", "cost", "kliCost", "startSeconds", "g2o":
+{"rotations": [w x y z ...], "translations": [x y z ...]}, "seSync"?: {"rotations": [d x d row by
+row ...], "translations": [d a pose ...]}}]}; stdout: {"versions": {...}, "rows": [{"name",
+"poses", "edges", "seconds", "runs", "cost", "kliCost", "seSyncCost", "startSeconds", "g2o":
 {"seconds", "runs", "cost"} or {"error"}, "error"?}]}.
 """
 import json
@@ -140,6 +142,11 @@ def main():
         row = {"name": g["name"], "poses": n, "edges": len(edges)}
         Rk, tk = kli_poses(d, g["kli"])
         row["kliCost"] = reference.cost(edges, Rk, tk) if len(Rk) == n else None
+        if g.get("seSync"):
+            # SE-Sync's poses by its own indices (a file's ids from 0, as SE-Sync reads them)
+            Rs = np.array(g["seSync"]["rotations"]).reshape(-1, d, d)
+            ts = np.array(g["seSync"]["translations"]).reshape(-1, d)
+            row["seSyncCost"] = reference.cost(edges, list(Rs), list(ts)) if len(Rs) == n and ids == list(range(n)) else None
         try:
             times = []
             while True:
