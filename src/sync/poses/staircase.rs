@@ -52,7 +52,7 @@ fn column_space(x: &Stack) -> Vec<Vec<f64>> {
 }
 
 /// The shift `−Λ_i + s I` of every rotation block.
-fn shifted(lambda: &[Block], d: usize, s: f64) -> Vec<Block> {
+pub(super) fn shifted(lambda: &[Block], d: usize, s: f64) -> Vec<Block> {
     lambda
         .iter()
         .map(|l| {

@@ -335,6 +335,91 @@ fn the_lower_bound_is_below_every_minimum_found() {
     assert!(!stuck.certified && stuck.lower_bound == 0.0, "{stuck:?}");
 }
 
+/// The radius after a step that raised `F`: the minimum of the parabola through `φ(0) = 0`,
+/// `φ'(0) = slope` and `φ(1) = rise`, found here by a search over a grid of `t`, times the step's
+/// size; within `[1/64, 1/4]`; a quarter where the slope is not negative.
+#[test]
+fn a_step_that_raised_f_shrinks_the_radius_to_the_parabolas_minimum() {
+    for (slope, rise) in [(-1.0, 1.0), (-2.0, 3.0), (-1.0, 9.0), (-0.5, 0.1)] {
+        let c = rise - slope;
+        let best = (1..=1_000_000)
+            .map(|k| k as f64 * 1e-6)
+            .min_by(|a, b| (slope * a + c * a * a).total_cmp(&(slope * b + c * b * b)))
+            .unwrap();
+        let expected = best.clamp(1.0 / 64.0, 0.25) * 8.0;
+        let got = trust::shrunk(8.0, slope, rise);
+        assert!((got - expected).abs() <= 8.0 * 2e-6, "{slope}, {rise}: {got} vs {expected}");
+    }
+    // Far off (ρ of −2,000 after an escape): the floor, a 64th.
+    assert_eq!(trust::shrunk(8.0, -1.0, 2000.0), 8.0 / 64.0);
+    // Barely raised: no more than a quarter.
+    assert_eq!(trust::shrunk(8.0, -1.0, 1e-9), 2.0);
+    for slope in [0.0, 1.0, f64::NAN] {
+        assert_eq!(trust::shrunk(8.0, slope, 1.0), 2.0, "{slope}");
+    }
+}
+
+/// Above rank `d` the preconditioner is `Proj_X((Q − Λ + λ I)⁻¹ ·)` with the point's own `Λ`
+/// (where it is positive definite); at rank `d`, `Proj_X((Q + λ I)⁻¹ ·)`. Checked against dense
+/// solves of those matrices, `Q` assembled column by column from its products: at the rank-3
+/// optimum of ten noisy planar poses whose relaxation is not tight (certified there, so
+/// `Q − Λ ⪰ 0`), and at its rank-2 rounding.
+#[test]
+fn above_the_dimension_the_preconditioner_sees_the_multipliers() {
+    let graph = noisy(2, 10, 0.4, 1, 1.0);
+    let problem = reduced(&graph);
+    let pre = trust::Preconditioner::new(&problem).unwrap();
+    let mut random = Random::new(9);
+    let start = random_point(2, graph.count, 3, &mut random);
+    let top = trust::optimise(&problem, &pre, start, 1e-12, trust::MAX_ITERATIONS, &mut |_| {}).x;
+    assert!(staircase::certify(&problem, &top, 1e-9 * problem.scale).certified);
+    let rows = 2 * graph.count;
+    let lambda_reg = 1e-6 * problem.scale;
+    let mut q = Mat::<f64>::zeros(rows, rows);
+    for c in 0..rows {
+        let mut e = Stack::zeros(2, graph.count, 1);
+        e.data[c] = 1.0;
+        let column = problem.apply(&e);
+        for r in 0..rows {
+            q[(r, c)] = column.data[r];
+        }
+    }
+    for (x, sees_lambda) in [(top.clone(), true), (from_rotations(2, &stiefel::round(&top)), false)]
+    {
+        let model = trust::Model::at(&problem, x.clone()).preconditioned(&problem);
+        let (_, qx) = problem.cost(&x);
+        let lambda = stiefel::multipliers(&x, &qx);
+        let mut a = q.clone();
+        for i in 0..graph.count {
+            for r in 0..2 {
+                for c in 0..2 {
+                    if sees_lambda {
+                        a[(2 * i + r, 2 * i + c)] -= lambda[i][r][c];
+                    }
+                }
+                a[(2 * i + r, 2 * i + r)] += lambda_reg;
+            }
+        }
+        let mut z = Stack::zeros(2, graph.count, x.r);
+        z.data.iter_mut().for_each(|v| *v = random.gaussian());
+        let z = project(&x, &z);
+        let rhs = Mat::<f64>::from_fn(rows, x.r, |r, c| z.at(r, c));
+        let w = a.llt(Side::Lower).unwrap().solve(&rhs);
+        let mut dense = Stack::zeros(2, graph.count, x.r);
+        for c in 0..x.r {
+            for r in 0..rows {
+                *dense.at_mut(r, c) = w[(r, c)];
+            }
+        }
+        let expected = project(&x, &dense);
+        let got = pre.apply(&problem, &model, &z);
+        let gap =
+            got.data.iter().zip(&expected.data).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+        let size = expected.data.iter().map(|v| v.abs()).fold(0.0, f64::max);
+        assert!(gap <= 1e-8 * size, "rank {}: off by {gap} of {size}", x.r);
+    }
+}
+
 fn fixture(name: &str) -> PoseGraph {
     let text = match name {
         "CSAIL" => include_str!("../../../tests/fixtures/posegraphs/CSAIL.g2o"),

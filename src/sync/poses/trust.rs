@@ -7,8 +7,13 @@
 //! Steihaug–Toint conjugate gradients preconditioned by `P`, stopped at the boundary, at negative
 //! curvature, or when the residual falls below `‖g‖ min(κ, max((‖g‖ / ‖g₀‖)^θ, 10⁻⁶))` (κ = 0.1,
 //! θ = 1: the outer iteration converges quadratically); it is taken when
-//! `ρ = (F − F(R(η))) / (m(0) − m(η)) > 0.1`, and `Δ` shrinks by 4 when `ρ < ¼` and doubles when
-//! `ρ > ¾` at the boundary.
+//! `ρ = (F − F(R(η))) / (m(0) − m(η)) > 0.1`, and `Δ` doubles when `ρ > ¾` at the boundary and
+//! shrinks when `ρ < ¼`: by 4, or, when the step raised `F`, to where the parabola through `F`, its
+//! slope `⟨g, η⟩` and `F(R(η))` along the step has its minimum (Conn, Gould and Toint,
+//! "Trust-region methods", 2000, §17.1), within `[1/64, 1/4]` of the step. After the staircase's
+//! escape the model may be off by a factor of a thousand at the first radius (w20000: `ρ` −2,000
+//! at `Δ` = 155, good at 0.04); shrinking by 4 took six rejected steps of 100 conjugate-gradient
+//! steps each to get there, the parabola two.
 //!
 //! Rounding ends it as well as the gradient's tolerance: `F` is computed to about
 //! `ε_F = 10⁻¹⁵ (|F| + dnr · scale)`, so conjugate gradients stop when a step lowers the model by
@@ -17,10 +22,19 @@
 //!
 //! The preconditioner is SE-Sync's (§4.2.3): `P Ẋ = Proj_X((Q + λ I)⁻¹ Ẋ)` with `λ = 10⁻⁶` of
 //! `Q`'s scale, applied through one factorisation of the full matrix `M` (its Schur complement is
-//! `Q`), made once a problem.
+//! `Q`), made once a problem. Above rank `d` the Hessian `2 Proj_X((Q − Λ) Ẋ)` is not close to
+//! `Q`: there the staircase climbed because the relaxation's optimum may have a higher rank, and
+//! near it `S = Q − Λ` is nearly singular in many directions that `Q` is not, so conjugate
+//! gradients preconditioned by `Q` took 100–450 steps (w20000, rank 3). There each step's
+//! preconditioner is `Proj_X((Q − Λ + λ I)⁻¹ Ẋ)`, with the step's own `Λ`, where that matrix is
+//! positive definite (a factorisation of `M` shifted by `−Λ + λ I`, as the certificate makes it),
+//! and `Q`'s otherwise: w20000's rank 3 took 6.5 s against 14.5 s natively. At rank `d` (every
+//! graph whose relaxation is tight) it changes nothing measurable and costs a factorisation a
+//! step, so it is not used there.
 
 use super::reduced::Reduced;
 use super::sparse::Factor;
+use super::staircase::shifted;
 use super::stiefel::{Stack, multipliers, project, retract};
 
 /// At most this many trust-region steps on one level of the staircase.
@@ -29,12 +43,15 @@ pub(super) const MAX_ITERATIONS: usize = 300;
 /// At most this many conjugate-gradient steps within one trust-region step.
 const MAX_INNER: usize = 500;
 
+/// The preconditioner's regularisation `λ` over `Q`'s scale (SE-Sync §4.2.3).
+const REGULARISATION: f64 = 1e-6;
+
 /// `(Q + λ I)⁻¹`, by one factorisation.
 pub(super) struct Preconditioner(Factor);
 
 impl Preconditioner {
     pub fn new(problem: &Reduced) -> Option<Preconditioner> {
-        let lambda = 1e-6 * problem.scale;
+        let lambda = REGULARISATION * problem.scale;
         let mut shift = [[0.0; 3]; 3];
         for (a, row) in shift.iter_mut().enumerate() {
             row[a] = lambda;
@@ -42,8 +59,10 @@ impl Preconditioner {
         problem.factor_shifted(&vec![shift; problem.n]).map(Preconditioner)
     }
 
-    fn apply(&self, problem: &Reduced, x: &Stack, z: &Stack) -> Stack {
-        project(x, &problem.solve_shifted(&self.0, z))
+    /// `P z` at `model`'s point: with its own factor of `Q − Λ + λ I` where it has one.
+    pub(super) fn apply(&self, problem: &Reduced, model: &Model, z: &Stack) -> Stack {
+        let factor = model.local.as_ref().unwrap_or(&self.0);
+        project(&model.x, &problem.solve_shifted(factor, z))
     }
 }
 
@@ -59,6 +78,9 @@ pub(super) struct Model {
     pub cost: f64,
     lambda: Vec<super::stiefel::Block>,
     pub gradient: Stack,
+    /// The factor of `Q − Λ + λ I` that preconditions steps from here, above rank `d` where it
+    /// is positive definite (the module's documentation).
+    local: Option<Factor>,
 }
 
 impl Model {
@@ -68,7 +90,16 @@ impl Model {
         let mut gradient = qx;
         gradient.subtract_block_products(&lambda, &x);
         let gradient = gradient.scaled(2.0);
-        Model { x, cost, lambda, gradient }
+        Model { x, cost, lambda, gradient, local: None }
+    }
+
+    /// This model, with its own preconditioner above rank `d` (where `Q − Λ + λ I` factors).
+    pub fn preconditioned(mut self, problem: &Reduced) -> Model {
+        if self.x.r > problem.d {
+            let shift = shifted(&self.lambda, problem.d, REGULARISATION * problem.scale);
+            self.local = problem.factor_shifted(&shift);
+        }
+        self
     }
 
     /// `Hess F(X)[Ẋ] = 2 Proj_X(Q Ẋ − Λ Ẋ)`.
@@ -84,6 +115,18 @@ struct Step {
     eta: Stack,
     hessian_eta: Stack,
     boundary: bool,
+    /// `‖η‖_{P⁻¹}`.
+    size: f64,
+}
+
+/// The radius after a step of size `size` that raised `F` by `rise > 0` where its slope along the
+/// step was `slope < 0`: `t* · size`, `t*` the minimum of the parabola `φ(t) = slope · t +
+/// (rise − slope) t²` (`φ(0) = 0`, `φ'(0) = slope`, `φ(1) = rise`), `t* = −slope / (2 (rise −
+/// slope))`, kept within `[1/64, 1/4]`; `size / 4` where that is not a positive number (a slope
+/// that rounding made `≥ 0`).
+pub(super) fn shrunk(size: f64, slope: f64, rise: f64) -> f64 {
+    let t = -slope / (2.0 * (rise - slope));
+    if t.is_finite() && t > 0.0 { t.clamp(1.0 / 64.0, 0.25) * size } else { size / 4.0 }
 }
 
 /// Steihaug–Toint truncated conjugate gradients, preconditioned (Absil et al. Algorithm 11, as
@@ -100,7 +143,7 @@ fn truncated_cg(
     let mut eta = Stack::zeros(g.d, g.n, g.r);
     let mut hessian_eta = eta.clone();
     let mut r = g.clone();
-    let mut z = preconditioner.apply(problem, &model.x, &r);
+    let mut z = preconditioner.apply(problem, model, &r);
     let mut z_r = z.dot(&r);
     let mut d_pd = z_r;
     let mut delta = z.scaled(-1.0);
@@ -120,7 +163,7 @@ fn truncated_cg(
                 eta.axpy(tau, &delta);
                 hessian_eta.axpy(tau, &hd);
             }
-            return Step { eta, hessian_eta, boundary: true };
+            return Step { eta, hessian_eta, boundary: true, size: radius };
         }
         e_pe = e_pe_new;
         eta.axpy(alpha, &delta);
@@ -136,7 +179,7 @@ fn truncated_cg(
             break;
         }
         value = next;
-        z = preconditioner.apply(problem, &model.x, &r);
+        z = preconditioner.apply(problem, model, &r);
         let previous = z_r;
         z_r = z.dot(&r);
         let beta = z_r / previous;
@@ -145,7 +188,7 @@ fn truncated_cg(
         e_pd = beta * (e_pd + alpha * d_pd);
         d_pd = z_r + beta * beta * d_pd;
     }
-    Step { eta, hessian_eta, boundary: false }
+    Step { eta, hessian_eta, boundary: false, size: e_pe.sqrt() }
 }
 
 /// The trust-region method from `x` until the gradient is below `tolerance`, stops shrinking, or
@@ -159,7 +202,7 @@ pub(super) fn optimise(
     max_iterations: usize,
     step_begins: &mut dyn FnMut(usize),
 ) -> Optimised {
-    let mut model = Model::at(problem, x);
+    let mut model = Model::at(problem, x).preconditioned(problem);
     let first = model.gradient.norm();
     // Δ in the P⁻¹-norm (`≈ √(ηᵀ Q η)`): moving every block by O(1) costs about `dn · scale`.
     let max_radius = ((model.x.rows() as f64) * problem.scale).sqrt();
@@ -202,14 +245,16 @@ pub(super) fn optimise(
             break;
         }
         let rho = if within { 1.0 } else { actual / predicted };
-        if rho.is_nan() || rho < 0.25 {
+        if rho < 0.0 {
+            radius = shrunk(step.size.min(radius), model.gradient.dot(&step.eta), -actual);
+        } else if rho.is_nan() || rho < 0.25 {
             radius /= 4.0;
         } else if rho > 0.75 && step.boundary {
             radius = (2.0 * radius).min(max_radius);
         }
         if rho > 0.1 && trial.cost.is_finite() {
             last_gradient = size;
-            model = trial;
+            model = trial.preconditioned(problem);
         }
     }
     Optimised { x: model.x, iterations }
