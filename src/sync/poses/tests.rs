@@ -335,11 +335,20 @@ fn the_lower_bound_is_below_every_minimum_found() {
     assert!(!stuck.certified && stuck.lower_bound == 0.0, "{stuck:?}");
 }
 
-/// The radius after a step that raised `F`: the minimum of the parabola through `φ(0) = 0`,
-/// `φ'(0) = slope` and `φ(1) = rise`, found here by a search over a grid of `t`, times the step's
-/// size; within `[1/64, 1/4]`; a quarter where the slope is not negative.
+/// The radius after a trial step. One that raised `F`: the minimum of the parabola through
+/// `φ(0) = 0`, `φ'(0) = slope` and `φ(1) = rise`, found here by a search over a grid of `t`, times
+/// the step's size (or the radius, if smaller), within `[1/64, 1/4]`, a quarter where the slope is
+/// not negative. Otherwise the rule of Absil, Baker and Gallivan: a quarter below `ρ = ¼`, double
+/// (at most the largest) above `¾` at the boundary, else the same.
 #[test]
-fn a_step_that_raised_f_shrinks_the_radius_to_the_parabolas_minimum() {
+fn the_radius_follows_what_a_step_taught() {
+    let raised = |size: f64, slope: f64, rise: f64| trust::Trial {
+        rho: -1.0,
+        boundary: true,
+        size,
+        slope,
+        rise,
+    };
     for (slope, rise) in [(-1.0, 1.0), (-2.0, 3.0), (-1.0, 9.0), (-0.5, 0.1)] {
         let c = rise - slope;
         let best = (1..=1_000_000)
@@ -347,16 +356,38 @@ fn a_step_that_raised_f_shrinks_the_radius_to_the_parabolas_minimum() {
             .min_by(|a, b| (slope * a + c * a * a).total_cmp(&(slope * b + c * b * b)))
             .unwrap();
         let expected = best.clamp(1.0 / 64.0, 0.25) * 8.0;
-        let got = trust::shrunk(8.0, slope, rise);
+        let got = trust::next_radius(8.0, 100.0, &raised(8.0, slope, rise));
         assert!((got - expected).abs() <= 8.0 * 2e-6, "{slope}, {rise}: {got} vs {expected}");
     }
-    // Far off (ρ of −2,000 after an escape): the floor, a 64th.
-    assert_eq!(trust::shrunk(8.0, -1.0, 2000.0), 8.0 / 64.0);
+    // Far off (ρ of −2,000 after an escape): the floor, a 64th; of the radius where the step
+    // stopped short of it.
+    assert_eq!(trust::next_radius(8.0, 100.0, &raised(8.0, -1.0, 2000.0)), 8.0 / 64.0);
+    assert_eq!(trust::next_radius(8.0, 100.0, &raised(4.0, -1.0, 2000.0)), 4.0 / 64.0);
+    assert_eq!(trust::next_radius(2.0, 100.0, &raised(4.0, -1.0, 2000.0)), 2.0 / 64.0);
     // Barely raised: no more than a quarter.
-    assert_eq!(trust::shrunk(8.0, -1.0, 1e-9), 2.0);
+    assert_eq!(trust::next_radius(8.0, 100.0, &raised(8.0, -1.0, 1e-9)), 2.0);
     for slope in [0.0, 1.0, f64::NAN] {
-        assert_eq!(trust::shrunk(8.0, slope, 1.0), 2.0, "{slope}");
+        assert_eq!(trust::next_radius(8.0, 100.0, &raised(8.0, slope, 1.0)), 2.0, "{slope}");
     }
+    let taught = |rho: f64, boundary: bool| {
+        let trial = trust::Trial { rho, boundary, size: 8.0, slope: -1.0, rise: -0.5 };
+        trust::next_radius(8.0, 12.0, &trial)
+    };
+    for (rho, boundary, expected) in [
+        (0.0, true, 2.0),
+        (0.1, true, 2.0),
+        (0.1, false, 2.0),
+        (f64::NAN, true, 2.0),
+        (0.25, true, 8.0),
+        (0.5, true, 8.0),
+        (0.75, true, 8.0),
+        (0.9, false, 8.0),
+        (0.9, true, 12.0),
+    ] {
+        assert_eq!(taught(rho, boundary), expected, "ρ = {rho}, boundary {boundary}");
+    }
+    let trial = trust::Trial { rho: 0.9, boundary: true, size: 8.0, slope: -1.0, rise: -0.5 };
+    assert_eq!(trust::next_radius(2.0, 12.0, &trial), 4.0);
 }
 
 /// Above rank `d` the preconditioner is `Proj_X((Q − Λ + λ I)⁻¹ ·)` with the point's own `Λ`

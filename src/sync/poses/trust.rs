@@ -119,14 +119,34 @@ struct Step {
     size: f64,
 }
 
-/// The radius after a step of size `size` that raised `F` by `rise > 0` where its slope along the
-/// step was `slope < 0`: `t* · size`, `t*` the minimum of the parabola `φ(t) = slope · t +
-/// (rise − slope) t²` (`φ(0) = 0`, `φ'(0) = slope`, `φ(1) = rise`), `t* = −slope / (2 (rise −
-/// slope))`, kept within `[1/64, 1/4]`; `size / 4` where that is not a positive number (a slope
-/// that rounding made `≥ 0`).
-pub(super) fn shrunk(size: f64, slope: f64, rise: f64) -> f64 {
-    let t = -slope / (2.0 * (rise - slope));
-    if t.is_finite() && t > 0.0 { t.clamp(1.0 / 64.0, 0.25) * size } else { size / 4.0 }
+/// What a trial step tells the radius: its `ρ`, whether it reached the boundary, its size
+/// `‖η‖_{P⁻¹}`, the slope `⟨g, η⟩ < 0` along it and the rise `F(R(η)) − F`.
+pub(super) struct Trial {
+    pub rho: f64,
+    pub boundary: bool,
+    pub size: f64,
+    pub slope: f64,
+    pub rise: f64,
+}
+
+/// The radius after `trial` (the module's documentation): where the step raised `F` (`ρ < 0`),
+/// `t* · min(Δ, size)` with `t*` the minimum of the parabola `φ(t) = slope · t + (rise − slope)
+/// t²` (`φ(0) = 0`, `φ'(0) = slope`, `φ(1) = rise`), `t* = −slope / (2 (rise − slope))`, kept
+/// within `[1/64, 1/4]` (a quarter where `t*` is not a positive number: a slope that rounding
+/// made `≥ 0`); else a quarter when `ρ < ¼` (or not a number); doubled, at most `max_radius`, when
+/// `ρ > ¾` at the boundary; else unchanged.
+pub(super) fn next_radius(radius: f64, max_radius: f64, trial: &Trial) -> f64 {
+    if trial.rho < 0.0 {
+        let size = trial.size.min(radius);
+        let t = -trial.slope / (2.0 * (trial.rise - trial.slope));
+        if t.is_finite() && t > 0.0 { t.clamp(1.0 / 64.0, 0.25) * size } else { size / 4.0 }
+    } else if trial.rho.is_nan() || trial.rho < 0.25 {
+        radius / 4.0
+    } else if trial.rho > 0.75 && trial.boundary {
+        (2.0 * radius).min(max_radius)
+    } else {
+        radius
+    }
 }
 
 /// Steihaug–Toint truncated conjugate gradients, preconditioned (Absil et al. Algorithm 11, as
@@ -245,13 +265,9 @@ pub(super) fn optimise(
             break;
         }
         let rho = if within { 1.0 } else { actual / predicted };
-        if rho < 0.0 {
-            radius = shrunk(step.size.min(radius), model.gradient.dot(&step.eta), -actual);
-        } else if rho.is_nan() || rho < 0.25 {
-            radius /= 4.0;
-        } else if rho > 0.75 && step.boundary {
-            radius = (2.0 * radius).min(max_radius);
-        }
+        let slope = model.gradient.dot(&step.eta);
+        let outcome = Trial { rho, boundary: step.boundary, size: step.size, slope, rise: -actual };
+        radius = next_radius(radius, max_radius, &outcome);
         if rho > 0.1 && trial.cost.is_finite() {
             last_gradient = size;
             model = trial.preconditioned(problem);
