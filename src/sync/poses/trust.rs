@@ -9,8 +9,8 @@
 //! θ = 1: the outer iteration converges quadratically); it is taken when
 //! `ρ = (F − F(R(η))) / (m(0) − m(η)) > 0.1`, and `Δ` doubles when `ρ > ¾` at the boundary and
 //! shrinks when `ρ < ¼`: by 4, or, when the step raised `F`, to where the parabola through `F`, its
-//! slope `⟨g, η⟩` and `F(R(η))` along the step has its minimum (Conn, Gould and Toint,
-//! "Trust-region methods", 2000, §17.1), within `[1/64, 1/4]` of the step. After the staircase's
+//! slope `⟨g, η⟩` and `F(R(η))` along the step has its minimum (an interpolation in
+//! the manner of Conn, Gould and Toint, "Trust-region methods", 2000, ch. 17), within `[1/64, 1/4]` of the step. After the staircase's
 //! escape the model may be off by a factor of a thousand at the first radius (w20000: `ρ` −2,000
 //! at `Δ` = 155, good at 0.04); shrinking by 4 took six rejected steps of 100 conjugate-gradient
 //! steps each to get there, the parabola two.
