@@ -388,6 +388,9 @@ fn the_radius_follows_what_a_step_taught() {
     }
     let trial = trust::Trial { rho: 0.9, boundary: true, size: 8.0, slope: -1.0, rise: -0.5 };
     assert_eq!(trust::next_radius(2.0, 12.0, &trial), 4.0);
+    // F unchanged (ρ = 0) by a step short of the boundary: a quarter of the radius, not of the step.
+    let trial = trust::Trial { rho: 0.0, boundary: false, size: 4.0, slope: -1.0, rise: 0.0 };
+    assert_eq!(trust::next_radius(8.0, 12.0, &trial), 2.0);
 }
 
 /// Above rank `d` the preconditioner is `Proj_X((Q − Λ + λ I)⁻¹ ·)` with the point's own `Λ`
