@@ -99,16 +99,24 @@ impl Stack {
 
     /// `self_i −= B_i X_i` for every block: `self − diag(B) X`.
     pub fn subtract_block_products(&mut self, blocks: &[Block], x: &Stack) {
-        let d = self.d;
-        for (i, block) in blocks.iter().enumerate() {
-            for c in 0..self.r {
-                let column: [f64; 3] =
-                    std::array::from_fn(|b| if b < d { x.at(d * i + b, c) } else { 0.0 });
-                for (a, row) in block.iter().enumerate().take(d) {
-                    let v: f64 = (0..d).map(|b| row[b] * column[b]).sum();
-                    *self.at_mut(d * i + a, c) -= v;
-                }
+        // Column by column over whole slices, `d` fixed for each loop: the trust region's
+        // conjugate gradients call this three times a step (w20000: 8% of the solve).
+        let rows = self.rows();
+        for (out, x) in self.data.chunks_exact_mut(rows).zip(x.data.chunks_exact(rows)) {
+            match self.d {
+                2 => subtract_blocks::<2>(out, blocks, x),
+                _ => subtract_blocks::<3>(out, blocks, x),
             }
+        }
+    }
+}
+
+/// `out_i −= B_i x_i` for every `D`-row block of one column.
+fn subtract_blocks<const D: usize>(out: &mut [f64], blocks: &[Block], x: &[f64]) {
+    for ((out, x), block) in out.chunks_exact_mut(D).zip(x.chunks_exact(D)).zip(blocks) {
+        for (a, o) in out.iter_mut().enumerate() {
+            let v: f64 = (0..D).map(|b| block[a][b] * x[b]).sum();
+            *o -= v;
         }
     }
 }
