@@ -423,7 +423,9 @@ test("a 10,000-pose graph solves in the worker, its stages in the status, the pa
   // Every word the status says, and the frames' longest gap while the worker solves.
   await page.evaluate(() => {
     const status = document.querySelector("#file-status");
-    Object.assign(window, { __said: [], __gap: 0, __done: false, __from: 0, __to: 0 });
+    Object.assign(window, { __said: [], __gap: 0, __done: false, __from: 0, __to: 0, __tasks: [] });
+    new PerformanceObserver((list) => window.__tasks.push(...list.getEntries().map((t) => [t.startTime, t.duration])))
+      .observe({ type: "longtask" });
     new MutationObserver(() => {
       window.__said.push(status.textContent);
       if (!window.__from) window.__from = performance.now();
@@ -444,15 +446,22 @@ test("a 10,000-pose graph solves in the worker, its stages in the status, the pa
   });
   await page.setInputFiles("#file-input", { name: "field.g2o", mimeType: "text/plain", buffer: Buffer.from(field.text) });
   await mapOf(page, "field.g2o");
-  const { said, gap, solve } = await page.evaluate(() => ({ said: window.__said, gap: window.__gap, solve: window.__to - window.__from }));
+  const { said, gap, solve, longest } = await page.evaluate(() => ({
+    said: window.__said, gap: window.__gap, solve: window.__to - window.__from,
+    longest: Math.max(0, ...window.__tasks.filter(([start]) => start >= window.__from && start < window.__to).map(([, d]) => d)),
+  }));
   for (const stage of [/: reading…/, /: the chordal start/, /: trust region at rank 2, step 1…/, /: the certificate at rank 2…/]) {
     assert.ok(said.some((words) => stage.test(words)), `${stage} in ${JSON.stringify(said)}`);
   }
-  // The page draws frames while the worker solves: no frame waits half as long as the solve
-  // (solved on the page instead, the longest wait was the whole solve). Not a fixed budget: on
-  // a busy machine a frame waited 667 ms while the solve took seconds (the page's own reading of
-  // the answer and drawing of the map, after, are not counted).
-  assert.ok(solve > 0 && gap < solve / 2, `the longest frame gap while solving: ${gap} ms of ${solve} ms`);
+  // The page's own tasks stay short while the worker solves: none as long as half the solve
+  // (solved on the page instead, one task was the whole solve). Its tasks, not its frames: with
+  // the solve down to 0.4 s, a busy machine (two test files at once) once left a 733 ms gap
+  // between frames, and with the worker taken away the gap was 100 ms of a 292 ms solve on the
+  // page, where its longest task was 275 ms. Not a fixed budget either: a busy machine
+  // stretches every task (the page's own reading of the answer and drawing of the map, after,
+  // are not counted).
+  assert.ok(solve > 0 && longest < solve / 2,
+    `the longest task of the page's while solving: ${longest} ms of ${solve} ms (longest frame gap ${gap} ms)`);
   const rows = await mapTable(page);
   assert.equal(rows.Poses, "10000 (2D)");
   assert.match(rows.Edges, /^12474, of which 2475 join/);
