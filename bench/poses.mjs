@@ -14,11 +14,11 @@
 // faster than GTSAM's chordal + LM on every graph of at least 1,000 poses.
 //   node bench/poses.mjs
 import { execFileSync } from "node:child_process";
-import { existsSync, mkdirSync, readdirSync, readFileSync, writeFileSync } from "node:fs";
+import { mkdirSync, readdirSync, readFileSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
 import { record } from "./targets.mjs";
 import { python, runPython } from "./python.mjs";
-import { seSync } from "./sesync.mjs";
+import { mirror, seSync } from "./sesync.mjs";
 
 const root = new URL("../", import.meta.url).pathname;
 const sync = await import(`${root}pkg/sync.js`);
@@ -44,8 +44,7 @@ const gtsamData = execFileSync(python(), ["-c", "import gtsam, os; print(os.path
 for (const name of ["sphere2500.txt", "w10000.graph", "w20000.txt", "pose3example-grid.txt"]) {
   cases.push({ name: `GTSAM ${name}`, path: join(gtsamData, name) });
 }
-const mirror = "/work/.mirror/david-m-rosen+SE-Sync";
-const gitDir = [join(mirror, "repo"), mirror].find((dir) => existsSync(join(dir, "HEAD")));
+const gitDir = mirror("david-m-rosen+SE-Sync");
 const notes = [];
 if (gitDir) {
   const commit = execFileSync("git", ["--git-dir", gitDir, "rev-parse", "--short", "HEAD"], { encoding: "utf8" }).trim();
@@ -56,7 +55,7 @@ if (gitDir) {
     cases.push({ name: `SE-Sync ${name}`, path });
   }
 } else {
-  notes.push(`SE-Sync's git mirror (${mirror}) is absent: its graphs are skipped`);
+  notes.push("SE-Sync's git mirror (/work/.mirror/david-m-rosen+SE-Sync) is absent: its graphs are skipped");
 }
 const fixtures = join(root, "tests/fixtures/posegraphs");
 for (const name of readdirSync(fixtures).filter((f) => f.endsWith(".g2o")).sort()) {
@@ -100,8 +99,8 @@ for (const c of cases) {
 }
 
 // SE-Sync's time is its own total_computation_time (the file's reading left out, as kli's is; its
-// clock counts whole milliseconds):
-// the median of 3 where a run takes at most 2 s, else one run, as for GTSAM.
+// clock counts whole milliseconds): the median of 3 where a run takes at most 2 s, else one run,
+// as for GTSAM.
 const reference = seSync();
 if (reference.error) notes.push(`SE-Sync's C++ not run: ${reference.error}`);
 else notes.push(`SE-Sync's C++ at ${reference.version}, one thread`);

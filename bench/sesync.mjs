@@ -13,7 +13,7 @@ const runner = join(root, "bench/sesync_main.cpp");
 const PACKAGES = ["cmake", "g++", "libeigen3-dev", "libsuitesparse-dev", "libopenblas-dev"];
 
 /** The git directory of a mirror of `repo` (owner+name), or null. */
-function mirror(repo) {
+export function mirror(repo) {
   const base = `/work/.mirror/${repo}`;
   return [join(base, "repo"), base].find((d) => existsSync(join(d, "HEAD"))) ?? null;
 }

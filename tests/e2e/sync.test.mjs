@@ -420,7 +420,8 @@ test("a 10,000-pose graph solves in the worker, its stages in the status, the pa
   await builtIn(page);
   const field = mowedField();
   assert.equal(field.edges, 9999 + 2475);
-  // Every word the status says, and the frames' longest gap while the worker solves.
+  // Every word the status says, the page's long tasks, and the frames' longest gap (for the
+  // message) while the worker solves.
   await page.evaluate(() => {
     const status = document.querySelector("#file-status");
     Object.assign(window, { __said: [], __gap: 0, __done: false, __from: 0, __to: 0, __tasks: [] });

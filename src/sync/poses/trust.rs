@@ -51,12 +51,10 @@ pub(super) struct Preconditioner(Factor);
 
 impl Preconditioner {
     pub fn new(problem: &Reduced) -> Option<Preconditioner> {
-        let lambda = REGULARISATION * problem.scale;
-        let mut shift = [[0.0; 3]; 3];
-        for (a, row) in shift.iter_mut().enumerate() {
-            row[a] = lambda;
-        }
-        problem.factor_shifted(&vec![shift; problem.n]).map(Preconditioner)
+        // `λ I`: the shift of multipliers that are all 0.
+        let none = vec![[[0.0; 3]; 3]; problem.n];
+        let shift = shifted(&none, problem.d, REGULARISATION * problem.scale);
+        problem.factor_shifted(&shift).map(Preconditioner)
     }
 
     /// `P z` at `model`'s point: with its own factor of `Q − Λ + λ I` where it has one.
