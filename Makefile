@@ -61,10 +61,12 @@ node_modules/.installed: package.json package-lock.json
 	npm ci --no-audit --no-fund
 	@touch $@
 
+# Chromium for the pages (the benchmarks), its driver for the wasm tests in a browser, and its
+# headless shell for the end-to-end files (scripts/static-server.mjs, TEST_CHROMIUM).
 setup-browser:
-	@if ! command -v chromium >/dev/null || ! command -v chromedriver >/dev/null; then \
-	  echo "installing Debian's chromium and chromium-driver (about a minute, once)"; \
-	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium chromium-driver >/dev/null; \
+	@if ! command -v chromium >/dev/null || ! command -v chromedriver >/dev/null || ! command -v chromium-headless-shell >/dev/null; then \
+	  echo "installing Debian's chromium, chromium-driver and chromium-headless-shell (about a minute, once)"; \
+	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium chromium-driver chromium-headless-shell >/dev/null; \
 	fi
 
 # The npm package: crates/kli-wasm, the JavaScript API only, in entries with a module each:

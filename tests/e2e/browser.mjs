@@ -6,7 +6,7 @@ import { mkdir } from "node:fs/promises";
 import { readFileSync } from "node:fs";
 import { join } from "node:path";
 import { chromium } from "playwright-core";
-import { CHROMIUM, serve } from "../../scripts/static-server.mjs";
+import { CHROMIUM, TEST_CHROMIUM, serve } from "../../scripts/static-server.mjs";
 
 export const root = new URL("../../", import.meta.url).pathname;
 export const artifacts = join(root, "test-artifacts");
@@ -14,6 +14,8 @@ export const artifacts = join(root, "test-artifacts");
 let server;
 let origin;
 let browser;
+/** The whole Chromium, launched for the tests that ask for it (`blank({ whole: true })`). */
+let whole;
 
 /** Starts the server and the browser before the file's tests, and stops them after. */
 export function setup() {
@@ -21,10 +23,11 @@ export function setup() {
     await mkdir(artifacts, { recursive: true });
     server = await serve(join(root, "www"));
     origin = server.origin;
-    browser = await chromium.launch(CHROMIUM);
+    browser = await chromium.launch(TEST_CHROMIUM);
   });
   after(async () => {
     await browser?.close();
+    await whole?.close();
     server?.close();
   });
 }
@@ -61,10 +64,13 @@ export const engage = async (page) => {
 /** As `open`, but the page is left blank: the caller loads what it wants, from `origin()`.
  *  The page prefers reduced motion, so it plays only when told to, unless `moving`: a playing
  *  page costs Chromium here about a core of software rasterising, and most tests read a page
- *  that need not move. */
-export async function blank({ init, prepare, moving = false, ...options } = {}) {
+ *  that need not move. In the headless shell (TEST_CHROMIUM) a new page may get a pointer
+ *  move at (0, 0) as it loads, which a page takes for its reader arriving; a test of what a page
+ *  does with no input at all asks for the whole browser, `whole`, which sends none. */
+export async function blank({ init, prepare, moving = false, whole: inWhole = false, ...options } = {}) {
   const reducedMotion = moving ? "no-preference" : "reduce";
-  const context = await browser.newContext({ viewport: { width: 1280, height: 900 }, deviceScaleFactor: 1, reducedMotion, ...options });
+  if (inWhole) whole ??= await chromium.launch(CHROMIUM);
+  const context = await (inWhole ? whole : browser).newContext({ viewport: { width: 1280, height: 900 }, deviceScaleFactor: 1, reducedMotion, ...options });
   if (init) await context.addInitScript(init);
   if (prepare) await prepare(context);
   const page = await context.newPage();

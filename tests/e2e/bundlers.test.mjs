@@ -10,7 +10,7 @@ import { mkdtempSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSyn
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { chromium } from "playwright-core";
-import { CHROMIUM, serve } from "../../scripts/static-server.mjs";
+import { TEST_CHROMIUM, serve } from "../../scripts/static-server.mjs";
 
 const root = new URL("../../", import.meta.url).pathname;
 const bin = (name) => join(root, "node_modules/.bin", name);
@@ -39,7 +39,7 @@ before(async () => {
     .trim().split("\n").pop();
   writeFileSync(join(project, "package.json"), JSON.stringify({ name: "apps", private: true, type: "module" }));
   execFileSync("npm", ["install", "--no-audit", "--no-fund", "--offline", join(project, tarball)], { cwd: project, stdio: "ignore" });
-  browser = await chromium.launch(CHROMIUM);
+  browser = await chromium.launch(TEST_CHROMIUM);
 });
 
 after(async () => {

@@ -357,7 +357,7 @@ test("a page moves once its reader is there: still at load (its first frame, no 
   const now = (page) => page.evaluate(() => ({ t: Number(document.querySelector("#readout").textContent.match(/t = ([\d.]+)/)?.[1]),
     play: document.querySelector("#play").textContent, address: location.search }));
   for (const { html } of PAGES.filter((page) => page.name !== "learn")) {
-    const { page, context, problems } = await open(html, { moving: true, still: true });
+    const { page, context, problems } = await open(html, { moving: true, still: true, whole: true });
     try {
       await page.waitForTimeout(800);
       const still = await now(page);
@@ -374,7 +374,7 @@ test("a page moves once its reader is there: still at load (its first frame, no 
   }
   // The first input is the reader taking the controls: it plays, and the wait does not undo it.
   for (const press of [(page) => page.click("#play"), (page) => page.keyboard.press("Space")]) {
-    const { page, context } = await open("sync.html", { moving: true, still: true });
+    const { page, context } = await open("sync.html", { moving: true, still: true, whole: true });
     try {
       await press(page);
       await page.waitForTimeout(600);

@@ -8,12 +8,12 @@ import { tmpdir } from "node:os";
 import { dirname, join } from "node:path";
 import { pathToFileURL } from "node:url";
 import { chromium } from "playwright-core";
-import { CHROMIUM } from "../../scripts/static-server.mjs";
+import { TEST_CHROMIUM } from "../../scripts/static-server.mjs";
 import { painted, root } from "./browser.mjs";
 import { PAGES } from "../../www/pages.js";
 
 let browser;
-before(async () => (browser = await chromium.launch(CHROMIUM)));
+before(async () => (browser = await chromium.launch(TEST_CHROMIUM)));
 after(async () => browser?.close());
 
 /** Drawn pixels of each visible canvas on the page: painted (not transparent, as a canvas starts) and

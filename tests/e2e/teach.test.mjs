@@ -5,7 +5,7 @@
 import { test } from "node:test";
 import assert from "node:assert/strict";
 import { chromium } from "playwright-core";
-import { CHROMIUM } from "../../scripts/static-server.mjs";
+import { TEST_CHROMIUM } from "../../scripts/static-server.mjs";
 import { setup, open, root } from "./browser.mjs";
 
 setup();
@@ -128,7 +128,7 @@ test("print: every figure of the page as its SVG at ?print=, the canvases hidden
 });
 
 test("a <kli-figure> whose script cannot run (module scripts from file://) says so in its box", async () => {
-  const browser = await chromium.launch(CHROMIUM);
+  const browser = await chromium.launch(TEST_CHROMIUM);
   try {
     const page = await browser.newPage();
     await page.goto(`file://${root}www/examples/figures.html`);
