@@ -6,7 +6,7 @@ import { mkdir } from "node:fs/promises";
 import { readFileSync } from "node:fs";
 import { join } from "node:path";
 import { chromium } from "playwright-core";
-import { CHROMIUM, TEST_CHROMIUM, serve } from "../../scripts/static-server.mjs";
+import { TEST_CHROMIUM, serve } from "../../scripts/static-server.mjs";
 
 export const root = new URL("../../", import.meta.url).pathname;
 export const artifacts = join(root, "test-artifacts");
@@ -14,8 +14,6 @@ export const artifacts = join(root, "test-artifacts");
 let server;
 let origin;
 let browser;
-/** The whole Chromium, launched for the tests that ask for it (`blank({ whole: true })`). */
-let whole;
 
 /** Starts the server and the browser before the file's tests, and stops them after. */
 export function setup() {
@@ -27,7 +25,6 @@ export function setup() {
   });
   after(async () => {
     await browser?.close();
-    await whole?.close();
     server?.close();
   });
 }
@@ -54,6 +51,17 @@ export async function visit(page, query, { still = false } = {}) {
   await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
 }
 
+/** For a test of what a page does with no input at all, as `init`: the headless shell
+ *  (TEST_CHROMIUM) sends a new page a pointer move at (0, 0) as it loads (its cursor resting over
+ *  the page; the whole browser sends none), which a page takes for its reader arriving. This
+ *  holds back, ahead of the page's own listeners, the pointer and mouse events at (0, 0), where
+ *  no test points. */
+export const withoutShellPointer = () => {
+  for (const type of ["pointerover", "pointerenter", "pointermove", "mouseover", "mouseenter", "mousemove"]) {
+    addEventListener(type, (event) => event.clientX === 0 && event.clientY === 0 && event.stopImmediatePropagation(), { capture: true });
+  }
+};
+
 /** The reader arrives: the pointer moves over the page (a page's motion waits for it). */
 export const engage = async (page) => {
   // Two moves: a pointer already at the first point (a reload) would send no event.
@@ -64,13 +72,10 @@ export const engage = async (page) => {
 /** As `open`, but the page is left blank: the caller loads what it wants, from `origin()`.
  *  The page prefers reduced motion, so it plays only when told to, unless `moving`: a playing
  *  page costs Chromium here about a core of software rasterising, and most tests read a page
- *  that need not move. In the headless shell (TEST_CHROMIUM) a new page may get a pointer
- *  move at (0, 0) as it loads, which a page takes for its reader arriving; a test of what a page
- *  does with no input at all asks for the whole browser, `whole`, which sends none. */
-export async function blank({ init, prepare, moving = false, whole: inWhole = false, ...options } = {}) {
+ *  that need not move. */
+export async function blank({ init, prepare, moving = false, ...options } = {}) {
   const reducedMotion = moving ? "no-preference" : "reduce";
-  if (inWhole) whole ??= await chromium.launch(CHROMIUM);
-  const context = await (inWhole ? whole : browser).newContext({ viewport: { width: 1280, height: 900 }, deviceScaleFactor: 1, reducedMotion, ...options });
+  const context = await browser.newContext({ viewport: { width: 1280, height: 900 }, deviceScaleFactor: 1, reducedMotion, ...options });
   if (init) await context.addInitScript(init);
   if (prepare) await prepare(context);
   const page = await context.newPage();

@@ -352,12 +352,12 @@ test("no empty figure: a page's sweep fills itself once the page is interactive,
 });
 
 test("a page moves once its reader is there: still at load (its first frame, no time in its address), moving at the first input; a first press of Play or Space plays", async () => {
-  const { engage } = await import("./browser.mjs");
+  const { engage, withoutShellPointer } = await import("./browser.mjs");
   /** The page's time and its Play button's word, a moment apart. */
   const now = (page) => page.evaluate(() => ({ t: Number(document.querySelector("#readout").textContent.match(/t = ([\d.]+)/)?.[1]),
     play: document.querySelector("#play").textContent, address: location.search }));
   for (const { html } of PAGES.filter((page) => page.name !== "learn")) {
-    const { page, context, problems } = await open(html, { moving: true, still: true, whole: true });
+    const { page, context, problems } = await open(html, { moving: true, still: true, init: withoutShellPointer });
     try {
       await page.waitForTimeout(800);
       const still = await now(page);
@@ -374,7 +374,7 @@ test("a page moves once its reader is there: still at load (its first frame, no 
   }
   // The first input is the reader taking the controls: it plays, and the wait does not undo it.
   for (const press of [(page) => page.click("#play"), (page) => page.keyboard.press("Space")]) {
-    const { page, context } = await open("sync.html", { moving: true, still: true, whole: true });
+    const { page, context } = await open("sync.html", { moving: true, still: true, init: withoutShellPointer });
     try {
       await press(page);
       await page.waitForTimeout(600);
