@@ -10,8 +10,7 @@ use kli_wasm::sync::read_g2o_text;
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::wasm_bindgen_test;
 
-mod common;
-use common::{field, floats, nested, object, refused};
+use crate::common::{field, floats, nested, object, refused};
 
 const CSAIL: &str = include_str!("../../../tests/fixtures/posegraphs/CSAIL.g2o");
 const SMALL_GRID: &str = include_str!("../../../tests/fixtures/posegraphs/smallGrid3D.g2o");

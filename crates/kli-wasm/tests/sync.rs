@@ -8,8 +8,7 @@ use kli_wasm::sync::{JsSyncFlow, read_g2o_text, synchronize_rotations};
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::wasm_bindgen_test;
 
-mod common;
-use common::{field, floats, nested, object, refused};
+use crate::common::{field, floats, nested, object, refused};
 
 const S60: f64 = 0.5; // sin 30°
 const C60: f64 = 0.866_025_403_784_438_6; // cos 30°

@@ -1,6 +1,6 @@
 //! What the `kli/sync` suites (`sync.rs`, `poses.rs`) share: plain objects and arrays built from
 //! Rust, fields read back, and a thrown Error taken apart.
-// Each suite that includes this module uses a part of it.
+// Each suite that uses this module uses a part of it.
 #![allow(dead_code)]
 
 use js_sys::{Array, Float64Array, Object, Reflect};

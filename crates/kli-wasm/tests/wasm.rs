@@ -1,0 +1,11 @@
+//! The npm package's API in wasm under Node (`make test-wasm-node`), an entry a module, each
+//! compiled with its entry's feature.
+
+mod average;
+#[cfg(all(target_arch = "wasm32", feature = "sync"))]
+mod common;
+mod poses;
+mod spline;
+mod swarm;
+mod sync;
+mod web;
