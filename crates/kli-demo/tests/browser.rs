@@ -18,6 +18,8 @@ use web_sys::{CanvasRenderingContext2d, HtmlCanvasElement};
 
 wasm_bindgen_test_configure!(run_in_browser);
 
+mod map_parts;
+
 const WHITE: [u8; 3] = [255, 255, 255];
 
 /// `#rrggbb` as bytes.
