@@ -293,16 +293,18 @@ E2E_EARLY := $(addprefix tests/e2e/,bundlers.test.mjs single.test.mjs links.test
 E2E_LATE := $(filter-out $(E2E_EARLY),$(wildcard tests/e2e/*.test.mjs))
 # After E2E_EARLY, the web lane of `make test` used to wait for the Rust lane (100 s on a fresh
 # clone, 2026-11-28, a third of a core idle while the Rust lane ran its tests on one thread or
-# two): it now takes the other files one at a time, the smaller first so that the one still
-# running when the Rust lane ends holds the end back least, for as long as the Rust lane runs
+# two): it now takes the other files one at a time, for as long as the Rust lane runs
 # (RUST_RUNNING), listing each in E2E_RAN; `test-page-late` after the lanes leaves those out.
-# How many fit depends on the machine: on a slow one the Rust lane ends first and none run here.
-# average.test.mjs leads: its longest test waits 15 s for the page to play to its end, a core
-# idle that the Rust lane takes here but nothing would after it (last, it ran 18 s past the
-# Rust lane with the machine 50–80% idle).
-E2E_FLEX := $(addprefix tests/e2e/,average.test.mjs examples.test.mjs exports.test.mjs hostile-load.test.mjs \
-              slides.test.mjs swarm.test.mjs keyframes.test.mjs embed.test.mjs first-picture.test.mjs video.test.mjs \
-              fuzz.test.mjs sync.test.mjs learn.test.mjs page.test.mjs contract.test.mjs)
+# The longer first (their times alone, in the headless shell: 32 s down to 3 s), so that the one
+# still running when the Rust lane ends is a short one: the machine is half idle until it ends
+# (smaller first, fuzz.test.mjs, 35 s, began 16 s before the Rust lane's end, and the machine
+# stayed 37–71% busy for the 20 s until it ended). How many fit depends on the machine: on a slow
+# one the Rust lane ends first and none run here. average.test.mjs leads: its longest test waits
+# 15 s for the page to play to its end, a core idle that the Rust lane takes here but nothing
+# would after it (last, it ran 18 s past the Rust lane with the machine 50–80% idle).
+E2E_FLEX := $(addprefix tests/e2e/,average.test.mjs page.test.mjs fuzz.test.mjs contract.test.mjs \
+              first-picture.test.mjs sync.test.mjs learn.test.mjs hostile-load.test.mjs swarm.test.mjs video.test.mjs \
+              keyframes.test.mjs slides.test.mjs embed.test.mjs exports.test.mjs examples.test.mjs)
 ifneq ($(sort $(E2E_FLEX)),$(sort $(E2E_LATE)))
 $(error E2E_FLEX must list every end-to-end file not in E2E_EARLY: $(filter-out $(E2E_FLEX),$(E2E_LATE)) missing)
 endif
