@@ -74,37 +74,31 @@ export function isKliError(value: unknown): value is KliError;
 export default "${gzipSync(readFileSync(at(`pkg/${m}_bg.wasm`)), { level: 9 }).toString("base64")}";
 `);
   const fetchLine = `module_or_path = new URL('${m}_bg.wasm', import.meta.url);`;
-  const glueNow = manifest(`pkg/${m}.js`);
-  if (!glueNow.includes("__kliFallback")) {
-    if (!glueNow.includes(fetchLine)) throw new Error(`pkg/${m}.js: wasm-bindgen's default path changed shape (no "${fetchLine}")`);
-    writeFileSync(at(`pkg/${m}.js`), `${glueNow.replace(fetchLine,
-      `module_or_path = await __kliFallback(new URL('${m}_bg.wasm', import.meta.url), () => import('./${inline}'));`)}
+  const fallback = `
 /**
  * The response for the .wasm at \`url\`, or, where it cannot be had (fetch failed, an error
  * status, or HTML served in its place by a dev server's fallback), the module's inlined copy.
  * @param {URL} url
- * @param {(() => Promise<{ default: string }>) | null} inline null where there is none (${m}.production.js)
+ * @param {() => Promise<{ default: string }>} inline
  */
 async function __kliFallback(url, inline) {
-    let failure;
     try {
         const response = await fetch(url);
-        const type = response.headers.get('Content-Type') || '';
-        if (response.ok && !type.includes('text/html')) return response;
-        failure = response.ok ? \`HTML was served in its place\` : \`status \${response.status}\`;
-    } catch (error) {
+        if (response.ok && !(response.headers.get('Content-Type') || '').includes('text/html')) return response;
+    } catch {
         // file: URLs, offline, a bundler's missing file: the inlined copy below
-        failure = String(error?.message ?? error);
-    }
-    if (!inline) {
-        throw Object.assign(new Error(\`${entryName(m)} could not load its WebAssembly from \${url} (\${failure}): serve ${m}_bg.wasm there (a production build emits it beside its scripts), or pass its URL or bytes as init({ module_or_path })\`), { argument: "${entryName(m)}", kind: "not-initialised" });
     }
     const { default: base64 } = await inline();
     const gzipped = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
     const stream = new Blob([gzipped]).stream().pipeThrough(new DecompressionStream('gzip'));
     return new Uint8Array(await new Response(stream).arrayBuffer());
 }
-`);
+`;
+  const glueNow = manifest(`pkg/${m}.js`);
+  if (!glueNow.includes("__kliFallback")) {
+    if (!glueNow.includes(fetchLine)) throw new Error(`pkg/${m}.js: wasm-bindgen's default path changed shape (no "${fetchLine}")`);
+    writeFileSync(at(`pkg/${m}.js`), `${glueNow.replace(fetchLine,
+      `module_or_path = await __kliFallback(new URL('${m}_bg.wasm', import.meta.url), () => import('./${inline}'));`)}${fallback}`);
   }
   // kli/three and kli/gltf reach kli/spline and kli/average through the registry, never by
   // importing them (crates/kli-wasm/js/resample.js): each registers what it lends when imported.
@@ -120,13 +114,32 @@ __kliEntries['kli/${m}'] = { ${lends}, ready: () => wasm !== unready };
   // A production build (Vite's and webpack's, which resolve the export condition `production`)
   // emits the .wasm beside its scripts, so the inlined copy would only be dead weight in its
   // output (54 KB for kli/spline): this glue has no fallback, and where the file cannot be
-  // fetched init() says which file, from where, and what to do.
+  // fetched init() says which file, from where, and what to do. Each glue holds only its own
+  // loader (with the other's code too, every entry's JavaScript grew by about 200 B gzipped).
   const full = manifest(`pkg/${m}.js`);
   const withFallback = `__kliFallback(new URL('${m}_bg.wasm', import.meta.url), () => import('./${inline}'))`;
-  if (!full.includes(withFallback)) throw new Error(`pkg/${m}.js: no fallback call to replace for ${m}.production.js`);
+  if (!full.includes(withFallback) || !full.includes(fallback)) throw new Error(`pkg/${m}.js: no fallback to replace for ${m}.production.js`);
+  const fetchOnly = `
+/**
+ * The response for the .wasm at \`url\`; where it cannot be had (fetch failed, an error status,
+ * or HTML served in its place), an Error that says which file, from where, and what to do.
+ * @param {URL} url
+ */
+async function __kliFetch(url) {
+    let failure;
+    try {
+        const response = await fetch(url);
+        if (response.ok && !(response.headers.get('Content-Type') || '').includes('text/html')) return response;
+        failure = response.ok ? 'HTML was served in its place' : \`status \${response.status}\`;
+    } catch (error) {
+        failure = String(error?.message ?? error);
+    }
+    throw Object.assign(new Error(\`${entryName(m)} could not load its WebAssembly from \${url} (\${failure}): serve ${m}_bg.wasm there (a production build emits it beside its scripts), or pass its URL or bytes as init({ module_or_path })\`), { argument: "${entryName(m)}", kind: "not-initialised" });
+}
+`;
   writeFileSync(at(`pkg/${m}.production.js`), `// ${m}.js without the inlined .wasm (the export condition \`production\`: a bundler's production build,
 // which emits the .wasm beside its scripts). Generated by scripts/package-json.mjs.
-${full.replace(withFallback, `__kliFallback(new URL('${m}_bg.wasm', import.meta.url), null)`)}`);
+${full.replace(withFallback, `__kliFetch(new URL('${m}_bg.wasm', import.meta.url))`).replace(fallback, fetchOnly)}`);
   writeFileSync(at(`pkg/${m}.node.js`), `// Node (and SSR, Vitest): the same module, with init() reading the .wasm beside this file
 // from disk when given nothing, where the browser entry would fetch it (fetch cannot read file:).
 import init from "./${m}.js";

@@ -71,11 +71,18 @@ test("the production glue has no inlined copy: where the .wasm cannot be fetched
     assert.equal(conditions.production, `./${m}.production.js`);
     const glue = readFileSync(join(dir, `${m}.production.js`), "utf8");
     assert.ok(!/import\(['"][^'"]*inline/.test(glue), `${m}.production.js imports an inlined copy`);
-    // The same module otherwise: every export of the full glue, byte for byte but the fallback line.
-    const full = readFileSync(join(dir, `${m}.js`), "utf8").split("\n");
-    const lean = glue.split("\n").slice(2);
+    // The same module otherwise: every export of the full glue, byte for byte but the loader's
+    // call and the loader itself (the fallback to the inlined copy in the one, the refusal by
+    // name in the other: each glue holds only its own).
+    const loader = /\n\/\*\*\n \* The response for the \.wasm[^]*?\nasync function (__kli\w+)[^]*?\n\}\n/;
+    const fullText = readFileSync(join(dir, `${m}.js`), "utf8");
+    assert.equal(fullText.match(loader)?.[1], "__kliFallback", m);
+    assert.equal(glue.match(loader)?.[1], "__kliFetch", m);
+    const full = fullText.replace(loader, "\n").split("\n");
+    const lean = glue.replace(loader, "\n").split("\n").slice(2);
     assert.equal(lean.length, full.length, m);
     assert.equal(lean.filter((line, i) => line !== full[i]).length, 1, m);
+    assert.ok(!full.join("\n").includes("could not load its WebAssembly"), `${m}.js holds the production glue's refusal`);
     // In Node fetch cannot read file: URLs: the browser's production glue refuses, by name.
     const { default: init } = await import(join(dir, `${m}.production.js`));
     await assert.rejects(init(), (error) => {
