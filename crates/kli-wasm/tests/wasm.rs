@@ -1,5 +1,5 @@
-//! The npm package's API in wasm under Node (`make test-wasm-node`), an entry a module, each
-//! compiled with its entry's feature.
+//! The npm package's API in wasm under Node (`make test-wasm-node`): an entry a module, each
+//! present where its entry's feature is on.
 
 mod average;
 #[cfg(all(target_arch = "wasm32", feature = "sync"))]
