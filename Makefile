@@ -315,7 +315,7 @@ E2E_LATE := $(filter-out $(E2E_EARLY),$(wildcard tests/e2e/*.test.mjs))
 # 15 s for the page to play to its end, a core idle that the Rust lane takes here but nothing
 # would after it (last, it ran 18 s past the Rust lane with the machine 50–80% idle).
 E2E_FLEX := $(addprefix tests/e2e/,average.test.mjs page.test.mjs fuzz.test.mjs contract.test.mjs \
-              first-picture.test.mjs sync.test.mjs learn.test.mjs hostile-load.test.mjs swarm.test.mjs video.test.mjs \
+              first-picture.test.mjs learn.test.mjs poses.test.mjs sync.test.mjs hostile-load.test.mjs swarm.test.mjs video.test.mjs \
               keyframes.test.mjs slides.test.mjs embed.test.mjs exports.test.mjs examples.test.mjs)
 ifneq ($(sort $(E2E_FLEX)),$(sort $(E2E_LATE)))
 $(error E2E_FLEX must list every end-to-end file not in E2E_EARLY: $(filter-out $(E2E_FLEX),$(E2E_LATE)) missing)
@@ -344,7 +344,7 @@ test-page-rest:
 # os.availableParallelism() − 1), each with its own server and Chromium: in the headless shell a
 # file leaves a core idle part of the time (its pages waiting on timers and frames), and the four
 # files left after the lanes took 58–61 s four at a time against 67–69 s two at a time, on a
-# quiet machine. The longer first, as in E2E_FLEX (in alphabetical order sync.test.mjs, 25 s,
+# quiet machine. The longer first, as in E2E_FLEX (in alphabetical order sync.test.mjs, then 25 s,
 # began last and ran on with the machine 20–56% busy). No file times the machine: how long the
 # pages' tasks take on hostile input is the benchmark's (bench/long-tasks.mjs); the tests hold
 # them only to a hang's bound, which the files beside them leave far off.
