@@ -323,15 +323,17 @@ endif
 RUST_RUNNING := target/lane-rust.running
 E2E_READY := target/e2e-ready
 E2E_CLAIMS := target/e2e-claims
+# Claims the end-to-end file $$file for the lane that runs it: true for one lane only.
+CLAIM_FILE = { mkdir -p $(E2E_CLAIMS); mkdir $(E2E_CLAIMS)/$$(basename $$file) 2>/dev/null; }
 # The files of E2E_FLEX not yet claimed, each claimed as it is printed.
-CLAIM = for file in $(E2E_FLEX); do mkdir -p $(E2E_CLAIMS); if mkdir $(E2E_CLAIMS)/$$(basename $$file) 2>/dev/null; then echo $$file; fi; done
+CLAIM = for file in $(E2E_FLEX); do if $(CLAIM_FILE); then echo $$file; fi; done
 test-page: test-page-early test-page-late
 test-page-early: pkg www single setup-browser
 	@$(if $(E2E_FILL),touch $(E2E_READY))
 	node --test --test-concurrency=1 $(E2E_EARLY)
 	@for file in $(if $(E2E_FILL),$(E2E_FLEX)); do \
 	  [ -e $(RUST_RUNNING) ] || break; \
-	  mkdir -p $(E2E_CLAIMS); mkdir $(E2E_CLAIMS)/$$(basename $$file) 2>/dev/null || continue; \
+	  $(CLAIM_FILE) || continue; \
 	  echo "the Rust lane still runs: $$file now"; \
 	  node --test $$file; \
 	done
