@@ -226,8 +226,8 @@ lint: lint-rust lint-wasm-portable lint-js publish-check
 # only code for wasm32 alone is its allocator, which these builds leave out, so the lints see the
 # same code, and with kli-rotations selected too (its dev-dependencies, proptest's bitflags
 # `std` above all) the dependencies resolve as in the first clippy and are not checked again.
-# For wasm32 they were checked for these runs alone, faer for sync's: 89 s of the Rust lane on CI
-# (2026-11-28), against 20 s natively.
+# For wasm32 they were checked for these runs alone, faer for sync's: after the first clippy, on
+# a quiet machine, 46 s and 67 core-seconds against 12 s and 19 (2026-11-28).
 LINT_ENTRIES := api $(ENTRIES)
 lint-rust: setup-rust
 	cargo fmt --all --check
