@@ -280,18 +280,19 @@ test-wasm-node: setup-rust clippy-canary
 	WASM_BINDGEN_TEST_ONLY_NODE=1 $(WASM_CLIPPY) cargo test -p kli-wasm --all-features --target $(TARGET) --tests
 
 # The build without simd128 (the plain [f64; 2] lanes, for engines without wasm SIMD), linted for
-# wasm32, tests included: it builds and stays warning-free. In target/ beside the other wasm32
-# checks, whose artifacts its flags leave alone (cargo names each set apart), so the host's proc
-# macros and build scripts are built once for both (in a directory of its own it took 183 s,
-# here 73 s, on a busy machine). What it computes is checked natively, where the
-# plain lanes are under test too: each of their operations bit for bit against the same one on
+# wasm32, tests included: it builds and stays warning-free. The lanes are kli-rotations' (src/lanes.rs,
+# its only code that simd128 changes; kli-wasm has none), so kli-rotations alone, whose one
+# dependency here is glam: with kli-wasm and its entries' features, wasm-bindgen, js-sys and the
+# host's macros were checked again for these flags alone (after the first clippy, 15.6 s and 27.9
+# core-seconds against 2.1 s and 2.6, 2026-11-28). What it computes is checked natively, where
+# the plain lanes are under test too: each of their operations bit for bit against the same one on
 # each f64 (src/lanes.rs), and the batch kernels, one source generic over the lanes, give the
 # same bits on them as on the lanes in use (src/batch/fast.rs). Running the whole wasm suite on
 # them once more took 105–169 s of `make test`.
 # Without `sync`, which uses no lanes and would check faer once more.
 lint-wasm-portable: setup-rust
 	CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-C target-feature=-simd128" \
-	cargo clippy -p kli-wasm --all-targets --features swarm,spline,average --target $(TARGET) -- -D warnings
+	cargo clippy -p kli-rotations --all-targets --no-default-features --target $(TARGET) -- -D warnings
 
 test-wasm-browser: setup-rust setup-browser clippy-canary
 	WASM_BINDGEN_TEST_ONLY_WEB=1 $(WASM_CLIPPY) cargo test -p kli-demo --target $(TARGET) --tests
