@@ -334,6 +334,8 @@ E2E_CLAIMS := target/e2e-claims
 CLAIM_FILE = { mkdir -p $(E2E_CLAIMS); mkdir $(E2E_CLAIMS)/$$(basename $$file) 2>/dev/null; }
 # The files of E2E_FLEX not yet claimed, each claimed as it is printed.
 CLAIM = for file in $(E2E_FLEX); do if $(CLAIM_FILE); then echo $$file; fi; done
+# Runs the end-to-end files in $$files (none: nothing), four at a time (test-page-late says why).
+RUN_FOUR = if [ -n "$$files" ]; then node --test --test-concurrency=4 $$files; fi
 test-page: test-page-early test-page-late
 test-page-early: pkg www single setup-browser
 	@$(if $(E2E_FILL),touch $(E2E_READY))
@@ -348,7 +350,8 @@ test-page-early: pkg www single setup-browser
 # the end-to-end files no lane has claimed, four at a time (as test-page-late).
 test-page-rest:
 	@files=$$($(CLAIM)); \
-	if [ -n "$$files" ]; then echo "the Rust lane is done: "$$files; node --test --test-concurrency=4 $$files; fi
+	if [ -n "$$files" ]; then echo "the Rust lane is done: "$$files; fi; \
+	$(RUN_FOUR)
 # The other files four at a time (Node 20's runner takes one at a time on 2 cores:
 # os.availableParallelism() − 1), each with its own server and Chromium: in the headless shell a
 # file leaves a core idle part of the time (its pages waiting on timers and frames), and the four
@@ -360,7 +363,7 @@ test-page-rest:
 test-page-late: pkg www single setup-browser
 	@files="$(E2E_FLEX)"; \
 	if [ -n "$(E2E_SKIP_RAN)" ]; then files=$$($(CLAIM)); fi; \
-	if [ -n "$$files" ]; then node --test --test-concurrency=4 $$files; fi
+	$(RUN_FOUR)
 
 # Benchmarks, not tests: nothing here is asserted by `make test`.
 bench: pkg www setup-browser

@@ -74,6 +74,8 @@ export function isKliError(value: unknown): value is KliError;
 export default "${gzipSync(readFileSync(at(`pkg/${m}_bg.wasm`)), { level: 9 }).toString("base64")}";
 `);
   const fetchLine = `module_or_path = new URL('${m}_bg.wasm', import.meta.url);`;
+  // The fetched response is the .wasm: both loaders' test (a dev server's fallback serves HTML).
+  const usable = "        if (response.ok && !(response.headers.get('Content-Type') || '').includes('text/html')) return response;\n";
   const fallback = `
 /**
  * The response for the .wasm at \`url\`, or, where it cannot be had (fetch failed, an error
@@ -84,8 +86,7 @@ export default "${gzipSync(readFileSync(at(`pkg/${m}_bg.wasm`)), { level: 9 }).t
 async function __kliFallback(url, inline) {
     try {
         const response = await fetch(url);
-        if (response.ok && !(response.headers.get('Content-Type') || '').includes('text/html')) return response;
-    } catch {
+${usable}    } catch {
         // file: URLs, offline, a bundler's missing file: the inlined copy below
     }
     const { default: base64 } = await inline();
@@ -129,8 +130,7 @@ async function __kliFetch(url) {
     let failure;
     try {
         const response = await fetch(url);
-        if (response.ok && !(response.headers.get('Content-Type') || '').includes('text/html')) return response;
-        failure = response.ok ? 'HTML was served in its place' : \`status \${response.status}\`;
+${usable}        failure = response.ok ? 'HTML was served in its place' : \`status \${response.status}\`;
     } catch (error) {
         failure = String(error?.message ?? error);
     }
