@@ -222,7 +222,7 @@ function showMap(/** @type {Host} */ host) {
       ? figure(s.lowerBound, exp)
       : `${figure(s.lowerBound, exp)}: this map is within ${figure(s.cost - s.lowerBound, exp)} of the best there is`],
     ["Rank of the staircase", String(s.rank)],
-    ["Trust-region steps", String(s.iterations)],
+    ["Solver steps", String(s.iterations)],
     ["Median edge misfit", figure(s.medianMisfit, (x) => `${x.toFixed(2)} σ`)],
     ...(Number.isFinite(s.truthErrorOptimum)
       ? [["Distance from the true path (RMS): initial, optimum", `${s.truthErrorInitial.toFixed(2)} m, ${s.truthErrorOptimum.toFixed(2)} m`]]

@@ -96,7 +96,7 @@ export interface SynchronizedPoses {
   /** Σ κ_ij ‖R_j − R_i R̃_ij‖²_F + τ_ij ‖t_j − t_i − R_i t̃_ij‖² with the caller's weights
    *  (SE-Sync's cost, no ½). */
   cost: number;
-  /** Trust-region steps taken, at every level of the staircase. */
+  /** Steps taken (Newton's and the trust region's), at every level of the staircase. */
   iterations: number;
   certificate: PoseCertificate;
 }

@@ -11,7 +11,7 @@ use faer::sparse::Pair;
 use glam::DQuat;
 
 use super::reduced::Reduced;
-use super::sparse::Lower;
+use super::sparse::{Layout, Lower};
 use super::stiefel::{Stack, to_rotations};
 
 /// Every `R_i` of the chordal estimate (`R_0 = I`), or `None` if the anchored connection
@@ -49,7 +49,7 @@ pub(super) fn chordal(problem: &Reduced) -> Option<Vec<DQuat>> {
             }
         }
     }
-    let factor = Lower::new(rows, &pairs).factor(&values)?;
+    let factor = Lower::new(rows, &pairs, Layout::Auto).factor(&values)?;
     factor.solve(&mut rhs, d);
     let mut x = Stack::zeros(d, n, d);
     for a in 0..d {

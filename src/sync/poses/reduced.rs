@@ -24,7 +24,7 @@
 
 use faer::sparse::Pair;
 
-use super::sparse::{Factor, Lower};
+use super::sparse::{Factor, Layout, Lower};
 use super::stiefel::{Block, Stack};
 
 /// One measurement: `T̃_ij ≈ T_i⁻¹ T_j` with `R̃_ij` (`d × d`, unused entries 0), `t̃_ij` (z = 0 in
@@ -87,7 +87,8 @@ impl Reduced {
         }
         let laplacian_pairs = pairs.len();
         // n − 1 ≥ 1 translation rows; a node other than 0 with no edge cannot occur (connected).
-        let laplacian = Lower::new(n - 1, &pairs).factor(&values[..laplacian_pairs])?;
+        let laplacian =
+            Lower::new(n - 1, &pairs, Layout::Auto).factor(&values[..laplacian_pairs])?;
         // M: the same L_τ entries, then −V's transpose below them, then the rotation block.
         let rot = |i: usize, a: usize| n - 1 + d * i + a;
         for e in &edges {
@@ -133,7 +134,7 @@ impl Reduced {
                 }
             }
         }
-        let full = Lower::new(n - 1 + d * n, &pairs);
+        let full = Lower::new(n - 1 + d * n, &pairs, Layout::Auto);
         Some(Reduced { d, n, edges, scale, laplacian, full, base: values, shift_at })
     }
 
