@@ -12,9 +12,9 @@
 //! 1. the translations are eliminated in closed form, leaving `tr(R Q Rᵀ)` (`reduced`);
 //! 2. the chordal start (`chordal`);
 //! 3. the rank-`r` relaxation on `St(d, r)ⁿ` (`stiefel`), minimised by a Riemannian trust region
-//!    with truncated conjugate gradients (`trust`), from `r = d`; at `r = d` in 2D by Newton's
-//!    method with the translations kept (`newton`: a sparse factorisation a step), the trust
-//!    region going on from there only if it did not converge;
+//!    with truncated conjugate gradients (`trust`), from `r = d`; in 2D at ranks 2 and 3 by
+//!    Newton's method with the translations kept (`newton`: a sparse factorisation a step), the
+//!    trust region going on from there only if it did not converge;
 //! 4. the certificate `λ_min(Q − Λ) ≥ −tol`, and where it fails the Riemannian staircase: rank
 //!    `r + 1` and a step along the eigenvector of `λ_min` (`staircase`);
 //! 5. rounding to `SO(d)ⁿ`, a last pass at rank `d` (as in 3), the translations
@@ -436,11 +436,11 @@ fn solve(
     })
 }
 
-/// One level's local optimisation from `x`, counting its steps into `iterations`: at rank `d` in
-/// 2D Newton's method first (`newton`: on city10000 in wasm 421 against 647 ms, on w10000 0.77
-/// against 1.53 s), then the trust region from where it stopped unless it converged; in 3D, where
-/// each Newton step factors six unknowns a pose, the trust region alone (sphere2500 in wasm took
-/// 585 ms with Newton against 315 without).
+/// One level's local optimisation from `x`, counting its steps into `iterations`: in 2D at ranks
+/// 2 and 3 Newton's method first (`newton`: on city10000 in wasm 421 against 647 ms, on w10000
+/// 0.77 against 1.53 s), then the trust region from where it stopped unless it converged; in 3D,
+/// where each Newton step factors six unknowns a pose, the trust region alone (sphere2500 in wasm
+/// took 585 ms with Newton against 315 without).
 fn optimise(
     problem: &Reduced,
     preconditioner: &trust::Preconditioner,
@@ -451,7 +451,7 @@ fn optimise(
 ) -> Stack {
     let rank = x.r;
     let mut x = x;
-    if rank == problem.d && problem.d == 2 {
+    if problem.d == 2 && newton::applies(problem.d, rank) {
         let before = *iterations;
         let refined = newton::refine(problem, &x, gradient, &mut |k| {
             observe(PoseStage::Step { rank, iterations: before + k })

@@ -1,32 +1,40 @@
-//! Riemannian Newton on `SO(d)ⁿ × ℝ^{dn}` for the pose-graph cost with its translations kept,
-//! damped as Levenberg–Marquardt (Absil, Mahony and Sepulchre 2008, §6.2; Nielsen's damping
-//! update, 1999): the rank-`d` level of the staircase, where every tight graph ends.
+//! Riemannian Newton on the pose-graph cost with its translations kept, damped as
+//! Levenberg–Marquardt (Absil, Mahony and Sepulchre 2008, §6.2; Nielsen's damping update, 1999),
+//! at rank `r ≤ 3` where `St(d, r)` has no directions that leave the cost unchanged (`r ≤ d + 1`):
+//! the pose graphs of the plane at ranks 2 and 3.
 //!
 //! The trust region works on the cost with the translations eliminated, `tr(Xᵀ Q X)`, whose `Q`
-//! is dense: its Hessian can only be applied, so each step is conjugate gradients (parking-garage:
-//! 5 steps, 171 products, each a triangular solve with `M`'s factor; slower there than GTSAM's
-//! Levenberg–Marquardt). With the translations kept, `f` is a sum over the edges and its Hessian is
-//! sparse, the graph's pattern in blocks of `p + d` (`p = d(d − 1)/2` rotation coordinates and the
-//! `d` of a translation): one sparse Cholesky factorisation solves a step exactly, and a handful of
-//! steps from the chordal start reach rounding (quadratic convergence).
+//! is dense: its Hessian can only be applied, so each step is conjugate gradients (city10000: 5
+//! steps, each a few dozen triangular solves with `M`'s factor). With the translations kept, `f`
+//! is a sum over the edges and its Hessian is sparse, the graph's pattern in blocks of `p + r` (`p
+//! = r(r − 1)/2` rotation coordinates and the `r` of a translation): one sparse Cholesky
+//! factorisation solves a step exactly, and a handful of steps from the chordal start reach
+//! rounding (quadratic convergence).
 //!
-//! Coordinates at `(R, t)`: `R_i ← R_i exp([ω_i])` (`[ω]` = `Σ ω_k G_k`, `G_k` the generators of
-//! `so(d)`), `t_i ← t_i + δ_i`; node 0 is held fixed (the gauge). `exp` is the exponential of the
-//! bi-invariant metric, so the Hessian of `f` pulled back through it is the Riemannian Hessian.
-//! On an edge `(i, j)`, with `A = R_j − R_i R̃_ij` and `b = t_j − t_i − R_i t̃_ij` at the point:
+//! SE-Sync's rank-`r` problem with its translations (Rosen et al., IJRR 2019, Problem 4 relaxed
+//! as in §4.1): each pose is `Y_i` (`r × d`, orthonormal columns: `X_i = Y_iᵀ`; at `r = d` a
+//! rotation) and `t_i ∈ ℝʳ`, and `f = Σ κ_ij ‖Y_j − Y_i R̃_ij‖²_F + τ_ij ‖t_j − t_i − Y_i t̃_ij‖²`.
+//! Coordinates at `(Y, t)`: `Y_i ← exp([Ω_i]) Y_i` (`[Ω]` = `Σ Ω_k G_k`, `G_k` the generators of
+//! `so(r)`; `O(r)` moves `St(d, r)` onto itself, and at `r ≤ d + 1` no `[Ω] ≠ 0` fixes `Y_i`),
+//! `t_i ← t_i + δ_i`; node 0 is held fixed (the gauge). `exp` is the exponential of the
+//! bi-invariant metric, so the Hessian of `f` pulled back through it is the Riemannian Hessian at
+//! a critical point. On an edge `(i, j)`, with `A = Y_j − Y_i R̃_ij` and `b = t_j − t_i − Y_i t̃_ij`
+//! at the point:
 //!
-//! - `∂A/∂ω_jk = R_j G_k`, `∂A/∂ω_ik = −R_i G_k R̃_ij`; `∂b/∂δ_j = I`, `∂b/∂δ_i = −I`,
-//!   `∂b/∂ω_ik = −R_i G_k t̃_ij`;
+//! - `∂A/∂Ω_jk = G_k Y_j`, `∂A/∂Ω_ik = −G_k Y_i R̃_ij`; `∂b/∂δ_j = I`, `∂b/∂δ_i = −I`,
+//!   `∂b/∂Ω_ik = −G_k Y_i t̃_ij`;
 //! - the gradient `2 Jᵀ W r` and the Gauss–Newton part `2 Jᵀ W J` (`W`: `κ` on `A`'s entries, `τ` on
 //!   `b`'s);
-//! - plus the second-order terms of `exp([ω]) = I + [ω] + ½ [ω]² + …`, with
-//!   `S_kl = ½ (G_k G_l + G_l G_k)`: `2κ ⟨A, R_j S_kl⟩` in `ω_j`'s block,
-//!   `−2κ ⟨A, R_i S_kl R̃_ij⟩ − 2τ ⟨b, R_i S_kl t̃_ij⟩` in `ω_i`'s.
+//! - plus the second-order terms of `exp([Ω]) = I + [Ω] + ½ [Ω]² + …`, with
+//!   `S_kl = ½ (G_k G_l + G_l G_k)`: `2κ ⟨A, S_kl Y_j⟩` in `Ω_j`'s block,
+//!   `−2κ ⟨A, S_kl Y_i R̃_ij⟩ − 2τ ⟨b, S_kl Y_i t̃_ij⟩` in `Ω_i`'s.
 //!
 //! Each step solves `(H + μ D) δ = −g` (`D` the Gauss–Newton diagonal, Marquardt's scaling: radians
 //! and metres weighed alike); `μ` starts at 0, Newton's step, grows where the factorisation fails
-//! or a step raises `f`, and shrinks by Nielsen's factor when a step is taken. It stops when the
-//! gradient is below the caller's tolerance or stops halving near it, or after
+//! or a step raises `f`, and shrinks by Nielsen's factor when a step is taken, to 0 when the model
+//! foretold the step within 10%. After each step the translations are solved afresh for the new
+//! rotations. It stops when the gradient is below the caller's tolerance or stops halving near
+//! it, after a step whose predicted decrease is within `f`'s rounding, or after
 //! [`MAX_ITERATIONS`] steps; the point it returns is never worse than its start, and the trust
 //! region and the certificate take it from there.
 
@@ -39,7 +47,7 @@ use super::stiefel::{Block, Stack};
 /// At most this many Newton steps (a tight graph from the chordal start takes a handful).
 pub(super) const MAX_ITERATIONS: usize = 100;
 
-/// Where the method stopped: the rotations as a rank-`d` point (`X_i = R_iᵀ`) and the steps taken.
+/// Where the method stopped: the point (`X_i = Y_iᵀ`) and the steps taken.
 pub(super) struct Refined {
     pub x: Stack,
     pub iterations: usize,
@@ -48,10 +56,16 @@ pub(super) struct Refined {
     pub converged: bool,
 }
 
-/// `so(d)`'s generators: `[e_x]×`, `[e_y]×`, `[e_z]×` in 3D; in 2D `[e_z]×`'s upper 2 × 2 block.
-fn generators(d: usize) -> Vec<Block> {
+/// Whether Newton's method applies at rank `rank` in dimension `d` (the module's documentation).
+pub(super) fn applies(d: usize, rank: usize) -> bool {
+    rank <= 3 && rank <= d + 1
+}
+
+/// `so(r)`'s generators: `[e_x]×`, `[e_y]×`, `[e_z]×` for `r = 3`; for `r = 2` `[e_z]×`'s upper
+/// 2 × 2 block.
+fn generators(r: usize) -> Vec<Block> {
     let z = [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]];
-    if d == 2 {
+    if r == 2 {
         return vec![z];
     }
     let x = [[0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]];
@@ -59,39 +73,39 @@ fn generators(d: usize) -> Vec<Block> {
     vec![x, y, z]
 }
 
-pub(super) fn mul(a: &Block, b: &Block, d: usize) -> Block {
+/// The `m × n` product of `a` (`m × k`) and `b` (`k × n`).
+fn mul(a: &Block, b: &Block, (m, k, n): (usize, usize, usize)) -> Block {
     let mut out = [[0.0; 3]; 3];
-    for r in 0..d {
-        for c in 0..d {
-            out[r][c] = (0..d).map(|k| a[r][k] * b[k][c]).sum();
+    for r in 0..m {
+        for c in 0..n {
+            out[r][c] = (0..k).map(|l| a[r][l] * b[l][c]).sum();
         }
     }
     out
 }
 
-fn times(a: &Block, v: &[f64; 3], d: usize) -> [f64; 3] {
-    std::array::from_fn(|r| if r < d { (0..d).map(|k| a[r][k] * v[k]).sum() } else { 0.0 })
+/// `a v` for `a` of `m × k`.
+fn times(a: &Block, v: &[f64; 3], (m, k): (usize, usize)) -> [f64; 3] {
+    std::array::from_fn(|r| if r < m { (0..k).map(|l| a[r][l] * v[l]).sum() } else { 0.0 })
 }
 
-fn inner(a: &Block, b: &Block, d: usize) -> f64 {
-    (0..d).flat_map(|r| (0..d).map(move |c| (r, c))).map(|(r, c)| a[r][c] * b[r][c]).sum()
-}
-
-/// `exp([ω])`: Rodrigues' formula in 3D, the rotation by `ω₀` in 2D.
-pub(super) fn exp(omega: &[f64], d: usize) -> Block {
-    if d == 2 {
+/// `exp([Ω])` (`r × r`): Rodrigues' formula for `r = 3`, the rotation by `Ω₀` for `r = 2`.
+pub(super) fn exp(omega: &[f64], r: usize) -> Block {
+    if r == 2 {
         let (s, c) = omega[0].sin_cos();
         return [[c, -s, 0.0], [s, c, 0.0], [0.0; 3]];
     }
     let m = glam::DMat3::from_quat(glam::DQuat::from_scaled_axis(glam::DVec3::new(
         omega[0], omega[1], omega[2],
     )));
-    std::array::from_fn(|r| std::array::from_fn(|c| m.col(c)[r]))
+    std::array::from_fn(|a| std::array::from_fn(|c| m.col(c)[a]))
 }
 
-/// The Newton system's pattern: node `i ≥ 1`'s unknowns are rows `v (i − 1) …`, `v = p + d`.
+/// The Newton system's pattern at rank `r`: node `i ≥ 1`'s unknowns are rows `v (i − 1) …`,
+/// `v = p + r`.
 pub(super) struct System {
     d: usize,
+    pub r: usize,
     pub p: usize,
     pub v: usize,
     lower: Lower,
@@ -105,10 +119,10 @@ pub(super) struct System {
 }
 
 impl System {
-    pub(super) fn new(problem: &Reduced) -> System {
+    pub(super) fn new(problem: &Reduced, r: usize) -> System {
         let (d, n) = (problem.d, problem.n);
-        let p = d * (d - 1) / 2;
-        let v = p + d;
+        let p = r * (r - 1) / 2;
+        let v = p + r;
         let mut pairs = Vec::new();
         let mut diagonal_at = vec![0; n];
         let mut pivots = Vec::with_capacity(v * (n - 1));
@@ -142,6 +156,7 @@ impl System {
         let len = pairs.len();
         System {
             d,
+            r,
             p,
             v,
             lower: Lower::new(v * (n - 1), &pairs, Layout::Blocks(v)),
@@ -160,10 +175,10 @@ impl System {
         &self,
         values: &[f64],
         x: &[f64],
-        n: usize,
         edges: &[super::reduced::Edge],
     ) -> Vec<f64> {
         let v = self.v;
+        let n = self.diagonal_at.len();
         let mut y = vec![0.0; x.len()];
         let entry = |row: usize, col: usize, value: f64, y: &mut Vec<f64>| {
             y[row] += value * x[col];
@@ -195,114 +210,122 @@ impl System {
     }
 }
 
-/// The poses' cost `f` (the module's sum, with the solver's weights).
-pub(super) fn cost(problem: &Reduced, r: &[Block], t: &[[f64; 3]]) -> f64 {
+/// The cost `f` at rank `r` (the module's sum, with the solver's weights): `y[i]` is `Y_i`
+/// (`r × d`), `t[i]` is `t_i` (`r`).
+pub(super) fn cost(problem: &Reduced, r: usize, y: &[Block], t: &[[f64; 3]]) -> f64 {
     let d = problem.d;
     let mut f = 0.0;
     for e in &problem.edges {
-        let rr = mul(&r[e.i], &e.rotation, d);
-        let rt = times(&r[e.i], &e.t, d);
-        for a in 0..d {
+        let yr = mul(&y[e.i], &e.rotation, (r, d, d));
+        let yt = times(&y[e.i], &e.t, (r, d));
+        for a in 0..r {
             for b in 0..d {
-                f += e.kappa * (r[e.j][a][b] - rr[a][b]).powi(2);
+                f += e.kappa * (y[e.j][a][b] - yr[a][b]).powi(2);
             }
-            f += e.tau * (t[e.j][a] - t[e.i][a] - rt[a]).powi(2);
+            f += e.tau * (t[e.j][a] - t[e.i][a] - yt[a]).powi(2);
         }
     }
     f
 }
 
-/// The gradient (node 0's left out) and the Hessian's listed values, and `D`, at `(r, t)`.
+/// The gradient (node 0's left out) and the Hessian's listed values, and `D`, at `(y, t)`.
 pub(super) fn model(
     system: &System,
     problem: &Reduced,
-    r: &[Block],
+    y: &[Block],
     t: &[[f64; 3]],
 ) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
-    let (d, p, v) = (system.d, system.p, system.v);
+    let (d, r, p, v) = (system.d, system.r, system.p, system.v);
     let n = problem.n;
-    let g_k = generators(d);
+    let square = (r, r, r);
+    let g_k = generators(r);
     // S_kl = ½ (G_k G_l + G_l G_k).
     let s_kl: Vec<Vec<Block>> = (0..p)
         .map(|k| {
             (0..p)
                 .map(|l| {
-                    let (a, b) = (mul(&g_k[k], &g_k[l], d), mul(&g_k[l], &g_k[k], d));
-                    std::array::from_fn(|x| std::array::from_fn(|y| 0.5 * (a[x][y] + b[x][y])))
+                    let (a, b) = (mul(&g_k[k], &g_k[l], square), mul(&g_k[l], &g_k[k], square));
+                    std::array::from_fn(|x| std::array::from_fn(|z| 0.5 * (a[x][z] + b[x][z])))
                 })
                 .collect()
         })
         .collect();
     let mut gradient = vec![0.0; v * (n - 1)];
     let mut values = vec![0.0; system.len];
-    let rows = d * d + d;
+    // A's r·d entries row by row, then b's r.
+    let rows = r * d + r;
+    let on_a: Vec<usize> = (0..p).chain(v..v + p).collect();
+    let on_b: Vec<usize> = (0..v).chain(v + p..2 * v).collect();
     for (k, e) in problem.edges.iter().enumerate() {
-        let (ri, rj) = (&r[e.i], &r[e.j]);
-        let rr = mul(ri, &e.rotation, d);
-        let rt = times(ri, &e.t, d);
-        // The residual r0 (A row by row, then b) and its Jacobian, columns (ω_i, δ_i, ω_j, δ_j).
+        let (yi, yj) = (&y[e.i], &y[e.j]);
+        let yr = mul(yi, &e.rotation, (r, d, d));
+        let yt = times(yi, &e.t, (r, d));
+        // The residual (A, then b) and its Jacobian, columns (Ω_i, δ_i, Ω_j, δ_j).
         let mut residual = [0.0; 12];
         let mut weight = [0.0; 12];
         let mut jacobian = [[0.0; 12]; 12];
-        for a in 0..d {
+        for a in 0..r {
             for b in 0..d {
-                residual[a * d + b] = rj[a][b] - rr[a][b];
+                residual[a * d + b] = yj[a][b] - yr[a][b];
                 weight[a * d + b] = e.kappa;
             }
-            residual[d * d + a] = t[e.j][a] - t[e.i][a] - rt[a];
-            weight[d * d + a] = e.tau;
+            residual[r * d + a] = t[e.j][a] - t[e.i][a] - yt[a];
+            weight[r * d + a] = e.tau;
         }
         for (c, g) in g_k.iter().enumerate() {
-            let dj = mul(rj, g, d);
-            let di = mul(&mul(ri, g, d), &e.rotation, d);
-            let dt = times(&mul(ri, g, d), &e.t, d);
-            for a in 0..d {
+            let dj = mul(g, yj, (r, r, d));
+            let gi = mul(g, yi, (r, r, d));
+            let di = mul(&gi, &e.rotation, (r, d, d));
+            let dt = times(&gi, &e.t, (r, d));
+            for a in 0..r {
                 for b in 0..d {
                     jacobian[a * d + b][c] = -di[a][b];
                     jacobian[a * d + b][v + c] = dj[a][b];
                 }
-                jacobian[d * d + a][c] = -dt[a];
+                jacobian[r * d + a][c] = -dt[a];
             }
         }
-        for a in 0..d {
-            jacobian[d * d + a][p + a] = -1.0;
-            jacobian[d * d + a][v + p + a] = 1.0;
+        for a in 0..r {
+            jacobian[r * d + a][p + a] = -1.0;
+            jacobian[r * d + a][v + p + a] = 1.0;
         }
-        // 2 Jᵀ W J and 2 Jᵀ W r over each row's non-zero columns: A's rows touch ω_i and ω_j,
-        // b's ω_i, δ_i and δ_j.
+        // 2 Jᵀ W J and 2 Jᵀ W r over each row's non-zero columns: A's rows touch Ω_i and Ω_j,
+        // b's Ω_i, δ_i and δ_j.
         let mut local = [[0.0; 12]; 12];
         let mut local_g = [0.0; 12];
-        let on_a: Vec<usize> = (0..p).chain(v..v + p).collect();
-        let on_b: Vec<usize> = (0..v).chain(v + p..2 * v).collect();
         for q in 0..rows {
-            let columns = if q < d * d { &on_a } else { &on_b };
+            let columns = if q < r * d { &on_a } else { &on_b };
             let w = 2.0 * weight[q];
             for &x in columns {
                 let wx = w * jacobian[q][x];
                 local_g[x] += wx * residual[q];
-                for &y in columns.iter().filter(|&&y| y <= x) {
-                    local[x][y] += wx * jacobian[q][y];
+                for &z in columns.iter().filter(|&&z| z <= x) {
+                    local[x][z] += wx * jacobian[q][z];
                 }
             }
         }
         for x in 0..2 * v {
-            for y in 0..x {
-                local[y][x] = local[x][y];
+            for z in 0..x {
+                local[z][x] = local[x][z];
             }
         }
-        let a_block: Block = std::array::from_fn(|x| {
-            std::array::from_fn(|y| if x < d && y < d { residual[x * d + y] } else { 0.0 })
-        });
-        let b_vec: [f64; 3] =
-            std::array::from_fn(|x| if x < d { residual[d * d + x] } else { 0.0 });
         for x in 0..p {
-            for y in 0..p {
-                let s = &s_kl[x][y];
-                local[v + x][v + y] += 2.0 * e.kappa * inner(&a_block, &mul(rj, s, d), d);
-                let ris = mul(ri, s, d);
-                let ris_t = times(&ris, &e.t, d);
-                local[x][y] -= 2.0 * e.kappa * inner(&a_block, &mul(&ris, &e.rotation, d), d)
-                    + 2.0 * e.tau * (0..d).map(|a| b_vec[a] * ris_t[a]).sum::<f64>();
+            for z in 0..p {
+                let s = &s_kl[x][z];
+                let sj = mul(s, yj, (r, r, d));
+                let si = mul(s, yi, (r, r, d));
+                let sir = mul(&si, &e.rotation, (r, d, d));
+                let sit = times(&si, &e.t, (r, d));
+                let (mut on_j, mut on_i) = (0.0, 0.0);
+                for a in 0..r {
+                    for b in 0..d {
+                        on_j += residual[a * d + b] * sj[a][b];
+                        on_i += e.kappa * residual[a * d + b] * sir[a][b];
+                    }
+                    on_i += e.tau * residual[r * d + a] * sit[a];
+                }
+                local[v + x][v + z] += 2.0 * e.kappa * on_j;
+                local[x][z] -= 2.0 * on_i;
             }
         }
         // Scatter: the gradient and the diagonal blocks of the free ends, then the block (i, j).
@@ -335,41 +358,45 @@ pub(super) fn model(
     (gradient, values, diagonal)
 }
 
-/// The damping after a refused factorisation or a rejected step (Nielsen): `μ ← max(νμ, 10⁻¹²)`
-/// and `ν ← 2ν`.
-fn grown(mu: f64, nu: f64) -> (f64, f64) {
-    ((mu * nu).max(1e-12), 2.0 * nu)
+/// The least damping (`μ` relative to `D`, the Gauss–Newton diagonal).
+const LEAST_DAMPING: f64 = 1e-12;
+
+/// The damping after a refused factorisation or a rejected step: from Newton's own step (`μ = 0`)
+/// a tenth of `factored`, the last damping with which a step was taken (the least if none was),
+/// rather than up from the least again (w20000 at rank 3: five factorisations refused or steps
+/// rejected a step); then Nielsen's `μ ← max(νμ, least)`, `ν ← 2ν`.
+fn grown(mu: f64, nu: f64, factored: f64) -> (f64, f64) {
+    if mu == 0.0 {
+        return ((factored / 10.0).max(LEAST_DAMPING), 2.0);
+    }
+    ((mu * nu).max(LEAST_DAMPING), 2.0 * nu)
 }
 
-/// Newton's method from the rotations of the rank-`d` point `x` (the translations optimal for
-/// them), until the gradient's norm is below `tolerance`, or rounding ends it.
+/// Newton's method from the point `x` (the translations optimal for it), at its rank, which
+/// [`applies`], until the gradient's norm is below `tolerance`, or rounding ends it.
 pub(super) fn refine(
     problem: &Reduced,
     x: &Stack,
     tolerance: f64,
     step_begins: &mut dyn FnMut(usize),
 ) -> Refined {
-    let (d, n) = (problem.d, problem.n);
-    let system = System::new(problem);
-    let mut r: Vec<Block> = (0..n)
-        .map(|i| {
-            std::array::from_fn(|a| {
-                std::array::from_fn(|c| if a < d && c < d { x.at(d * i + c, a) } else { 0.0 })
-            })
-        })
-        .collect();
-    let mut t = translations(problem, &r);
-    let mut f = cost(problem, &r, &t);
+    let (d, n, r) = (problem.d, problem.n, x.r);
+    let system = System::new(problem, r);
+    let mut y = blocks(x);
+    let mut t = translations(problem, &y, r);
+    let mut f = cost(problem, r, &y, &t);
     // f's rounding: 4 ulps a term.
     let noise = |f: f64| 4.0 * f64::EPSILON * f.abs() * (problem.edges.len() as f64).sqrt();
     let (mut mu, mut nu) = (0.0, 2.0);
+    // The last damping > 0 with which a step was taken.
+    let mut factored: f64 = 0.0;
     let mut iterations = 0;
     let mut last = f64::INFINITY;
     let converged = loop {
         if iterations >= MAX_ITERATIONS {
             break false;
         }
-        let (g, values, diagonal) = model(&system, problem, &r, &t);
+        let (g, values, diagonal) = model(&system, problem, &y, &t);
         let size = g.iter().map(|x| x * x).sum::<f64>().sqrt();
         if !size.is_finite() {
             break false;
@@ -382,30 +409,30 @@ pub(super) fn refine(
         iterations += 1;
         step_begins(iterations);
         let mut taken = None;
-        // At most ~60 doublings of μ: from 1e-12 to 1e6.
+        // At most 64 growths of μ (ν doubling each time, so far beyond any scale).
         for _ in 0..64 {
             let mut shifted = values.clone();
             for (&at, &dk) in system.pivots.iter().zip(&diagonal) {
                 shifted[at] += mu * dk;
             }
             let Some(factor) = system.lower.factor(&shifted) else {
-                (mu, nu) = grown(mu, nu);
+                (mu, nu) = grown(mu, nu, factored);
                 continue;
             };
             let mut step: Vec<f64> = g.iter().map(|x| -x).collect();
             factor.solve(&mut step, 1);
-            let mut r_trial = r.clone();
+            let mut y_trial = y.clone();
             for i in 1..n {
                 let at = system.v * (i - 1);
-                r_trial[i] = mul(&r[i], &exp(&step[at..at + system.p], d), d);
+                y_trial[i] = mul(&exp(&step[at..at + system.p], r), &y[i], (r, r, d));
             }
             // The step's rotations with their own optimal translations: never worse than the
-            // step's translations, and the ω part of the step is then Newton's step on the cost
+            // step's translations, and the Ω part of the step is then Newton's step on the cost
             // with the translations eliminated (the Schur complement of H on the rotations is
             // that cost's Hessian where ∂f/∂t = 0), quadratically convergent where the
             // translations' own steps, through a long chain, were not.
-            let t_trial = translations(problem, &r_trial);
-            let f_trial = cost(problem, &r_trial, &t_trial);
+            let t_trial = translations(problem, &y_trial, r);
+            let f_trial = cost(problem, r, &y_trial, &t_trial);
             // The damped model's decrease, ½ (μ δᵀDδ − gᵀδ) > 0.
             let damped: f64 = (0..step.len()).map(|k| diagonal[k] * step[k] * step[k]).sum();
             let slope: f64 = g.iter().zip(&step).map(|(a, b)| a * b).sum();
@@ -415,10 +442,13 @@ pub(super) fn refine(
             let rho = if change.abs() <= noise(f) { 1.0 } else { change / predicted };
             if rho.is_finite() && rho > 0.0 {
                 taken = Some(predicted <= noise(f));
-                (r, t, f) = (r_trial, t_trial, f_trial);
-                // A step the model foretold within 10% is followed by Newton's own: damping
-                // would only slow it where the Hessian is ill-conditioned (a long chain's
-                // translations), which μ D weighs most.
+                (y, t, f) = (y_trial, t_trial, f_trial);
+                if mu > 0.0 {
+                    factored = mu;
+                }
+                // A step the model foretold within 10% is followed by Newton's own (μ = 0):
+                // Nielsen's factor, a third at best, kept μ D weighing on a long chain's
+                // ill-conditioned directions for many steps.
                 mu = if (rho - 1.0).abs() < 0.1 {
                     0.0
                 } else {
@@ -427,7 +457,7 @@ pub(super) fn refine(
                 nu = 2.0;
                 break;
             }
-            (mu, nu) = grown(mu, nu);
+            (mu, nu) = grown(mu, nu, factored);
         }
         match taken {
             // A step the model said would lower f by no more than its rounding: the last.
@@ -436,25 +466,37 @@ pub(super) fn refine(
             None => break false,
         }
     };
-    Refined { x: point(d, &r), iterations, converged }
+    Refined { x: point(d, r, &y), iterations, converged }
 }
 
-/// The rotations as a rank-`d` point: block `i` is `R_iᵀ`.
-fn point(d: usize, r: &[Block]) -> Stack {
-    let mut x = Stack::zeros(d, r.len(), d);
-    for (i, ri) in r.iter().enumerate() {
+/// Each block `Y_i = X_iᵀ` of `x` (`r × d`).
+pub(super) fn blocks(x: &Stack) -> Vec<Block> {
+    let (d, r) = (x.d, x.r);
+    (0..x.n)
+        .map(|i| {
+            std::array::from_fn(|c| {
+                std::array::from_fn(|a| if c < r && a < d { x.at(d * i + a, c) } else { 0.0 })
+            })
+        })
+        .collect()
+}
+
+/// The point whose blocks are `Y_i`: `X_i = Y_iᵀ`.
+fn point(d: usize, r: usize, y: &[Block]) -> Stack {
+    let mut x = Stack::zeros(d, y.len(), r);
+    for (i, yi) in y.iter().enumerate() {
         for a in 0..d {
-            for c in 0..d {
-                *x.at_mut(d * i + a, c) = ri[c][a];
+            for c in 0..r {
+                *x.at_mut(d * i + a, c) = yi[c][a];
             }
         }
     }
     x
 }
 
-/// The translations that minimise `f` for the rotations `r` (`t_0 = 0`).
-fn translations(problem: &Reduced, r: &[Block]) -> Vec<[f64; 3]> {
-    let (d, n) = (problem.d, problem.n);
-    let z = problem.translations(&point(d, r));
-    (0..n).map(|k| std::array::from_fn(|a| if a < d { z[a * n + k] } else { 0.0 })).collect()
+/// The translations that minimise `f` for the blocks `y` (`t_0 = 0`), each in `ℝʳ`.
+pub(super) fn translations(problem: &Reduced, y: &[Block], r: usize) -> Vec<[f64; 3]> {
+    let n = problem.n;
+    let z = problem.translations(&point(problem.d, r, y));
+    (0..n).map(|k| std::array::from_fn(|a| if a < r { z[a * n + k] } else { 0.0 })).collect()
 }

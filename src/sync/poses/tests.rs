@@ -751,67 +751,72 @@ fn observing_a_solve_reports_its_stages_and_changes_nothing() {
     }
 }
 
-/// Newton's gradient and Hessian (translations kept, `R_i exp([ω_i])`, `t_i + δ_i`, node 0
-/// fixed) against central differences of the cost summed as written (`pose_cost`, in the
-/// caller's form), along random directions at random poses, in 2D and 3D: `gᵀx` and `xᵀ H x`.
+/// Newton's gradient and Hessian (translations kept, `Y_i ← exp([Ω_i]) Y_i`, `t_i + δ_i`, node 0
+/// fixed) against central differences of the cost, along random directions at random points, in
+/// 2D at ranks 2 and 3 and in 3D: `gᵀx` and `xᵀ H x`. The cost itself: at rank `d` against
+/// `pose_cost` (the caller's form), and at every rank, with the translations solved, against the
+/// eliminated `tr(Xᵀ Q X)`.
 #[test]
 fn newtons_gradient_and_hessian_match_finite_differences() {
-    for (d, seed) in [(2, 31), (3, 32), (3, 33)] {
+    for (d, r, seed) in [(2, 2, 31), (2, 3, 34), (3, 3, 32), (3, 3, 33)] {
         let n = 6;
         let graph = random_graph(d, n, 11, seed);
         let problem = reduced(&graph);
-        let system = newton::System::new(&problem);
+        let system = newton::System::new(&problem, r);
         let (p, v) = (system.p, system.v);
         let mut random = Random::new(seed);
+        // At rank d, rotations (random_point's blocks may be reflections).
         let rotations: Vec<DQuat> = (0..n).map(|_| rotation(&mut random, d)).collect();
-        let positions: Vec<DVec3> = (0..n)
-            .map(|_| {
-                let t = random.gaussian3() * 2.0;
-                if d == 2 { DVec3::new(t.x, t.y, 0.0) } else { t }
-            })
+        let x =
+            if r == d { from_rotations(d, &rotations) } else { random_point(d, n, r, &mut random) };
+        let y = newton::blocks(&x);
+        let t: Vec<[f64; 3]> = (0..n)
+            .map(|_| std::array::from_fn(|a| if a < r { 2.0 * random.gaussian() } else { 0.0 }))
             .collect();
+        let optimal = newton::translations(&problem, &y, r);
+        let eliminated = problem.cost(&x).0;
+        let kept = newton::cost(&problem, r, &y, &optimal);
+        assert!(
+            (kept - eliminated).abs() <= 1e-12 * eliminated,
+            "{d}D, {r}: {kept} vs {eliminated}"
+        );
+        if r == d {
+            let positions: Vec<DVec3> = t.iter().map(|t| DVec3::new(t[0], t[1], t[2])).collect();
+            let direct = pose_cost(&graph, &graph.relative, &rotations, &positions);
+            let ours = newton::cost(&problem, r, &y, &t);
+            assert!((ours - direct).abs() <= 1e-12 * direct, "{d}D: {ours} vs {direct}");
+        }
         let direction: Vec<f64> = (0..v * (n - 1)).map(|_| random.gaussian()).collect();
-        // The poses moved by h along the direction, as glam matrices.
-        let moved = |h: f64| -> (Vec<DQuat>, Vec<DVec3>) {
-            let mut q = rotations.clone();
-            let mut t = positions.clone();
+        // exp(h [Ω]) by glam (r = 3) or by its angle (r = 2), Y_i and t_i moved by h.
+        let f = |h: f64| {
+            let mut moved = y.clone();
+            let mut shifted = t.clone();
             for i in 1..n {
                 let at = v * (i - 1);
                 let w = &direction[at..at + p];
-                let step = if d == 2 {
-                    DQuat::from_rotation_z(h * w[0])
+                let e = if r == 2 {
+                    DMat3::from_rotation_z(h * w[0])
                 } else {
-                    DQuat::from_scaled_axis(h * DVec3::new(w[0], w[1], w[2]))
+                    DMat3::from_quat(DQuat::from_scaled_axis(h * DVec3::new(w[0], w[1], w[2])))
                 };
-                q[i] *= step;
-                for a in 0..d {
-                    t[i][a] += h * direction[at + p + a];
+                for a in 0..r {
+                    for b in 0..d {
+                        moved[i][a][b] = (0..r).map(|k| e.col(k)[a] * y[i][k][b]).sum();
+                    }
+                    shifted[i][a] += h * direction[at + p + a];
                 }
             }
-            (q, t)
+            newton::cost(&problem, r, &moved, &shifted)
         };
-        let f = |h: f64| {
-            let (q, t) = moved(h);
-            pose_cost(&graph, &graph.relative, &q, &t)
-        };
-        let block = |q: DQuat| -> stiefel::Block {
-            let m = DMat3::from_quat(q);
-            std::array::from_fn(|a| {
-                std::array::from_fn(|b| if a < d && b < d { m.col(b)[a] } else { 0.0 })
-            })
-        };
-        let r: Vec<stiefel::Block> = rotations.iter().map(|&q| block(q)).collect();
-        let t: Vec<[f64; 3]> = positions.iter().map(|t| [t.x, t.y, t.z]).collect();
-        assert!((newton::cost(&problem, &r, &t) - f(0.0)).abs() <= 1e-12 * f(0.0));
-        let (g, values, _) = newton::model(&system, &problem, &r, &t);
-        let hx = system.apply(&values, &direction, n, &problem.edges);
+        let (g, values, _) = newton::model(&system, &problem, &y, &t);
+        let hx = system.apply(&values, &direction, &problem.edges);
         let gx: f64 = g.iter().zip(&direction).map(|(a, b)| a * b).sum();
         let xhx: f64 = hx.iter().zip(&direction).map(|(a, b)| a * b).sum();
         let h = 1e-4;
         let first = (f(h) - f(-h)) / (2.0 * h);
         let second = (f(h) - 2.0 * f(0.0) + f(-h)) / (h * h);
-        assert!((first - gx).abs() <= 1e-6 * gx.abs().max(1.0), "{d}D: {first} vs {gx}");
-        assert!((second - xhx).abs() <= 1e-4 * xhx.abs().max(1.0), "{d}D: {second} vs {xhx}");
+        assert!((first - gx).abs() <= 1e-6 * gx.abs().max(1.0), "{d}D, {r}: {first} vs {gx}");
+        assert!((second - xhx).abs() <= 1e-4 * xhx.abs().max(1.0), "{d}D, {r}: {second} vs {xhx}");
     }
 }
 
