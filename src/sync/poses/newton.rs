@@ -228,7 +228,8 @@ pub(super) fn cost(problem: &Reduced, r: usize, y: &[Block], t: &[[f64; 3]]) -> 
     f
 }
 
-/// The gradient (node 0's left out) and the Hessian's listed values, and `D`, at `(y, t)`.
+/// The gradient (node 0's left out), the Hessian's listed values, and `D` (the Gauss–Newton
+/// diagonal), at `(y, t)`.
 pub(super) fn model(
     system: &System,
     problem: &Reduced,
@@ -251,6 +252,7 @@ pub(super) fn model(
         })
         .collect();
     let mut gradient = vec![0.0; v * (n - 1)];
+    let mut scale = vec![0.0; v * (n - 1)];
     let mut values = vec![0.0; system.len];
     // A's r·d entries row by row, then b's r.
     let rows = r * d + r;
@@ -309,6 +311,16 @@ pub(super) fn model(
                 local[z][x] = local[x][z];
             }
         }
+        // D, the damping's scale: the Gauss–Newton diagonal, positive, where the second-order
+        // terms below may make H's own diagonal negative (then no μ D would make H + μ D
+        // positive definite).
+        for (end, offset) in [(e.i, 0), (e.j, v)] {
+            if end != 0 {
+                for s in 0..v {
+                    scale[v * (end - 1) + s] += local[offset + s][offset + s];
+                }
+            }
+        }
         for x in 0..p {
             for z in 0..p {
                 let s = &s_kl[x][z];
@@ -354,8 +366,7 @@ pub(super) fn model(
             }
         }
     }
-    let diagonal = system.pivots.iter().map(|&at| values[at]).collect();
-    (gradient, values, diagonal)
+    (gradient, values, scale)
 }
 
 /// The least damping (`μ` relative to `D`, the Gauss–Newton diagonal).
@@ -441,7 +452,9 @@ pub(super) fn refine(
             // A change within f's rounding is judged by the model.
             let rho = if change.abs() <= noise(f) { 1.0 } else { change / predicted };
             if rho.is_finite() && rho > 0.0 {
-                taken = Some(predicted <= noise(f));
+                // Converged only on Newton's own step: a damped one predicts little because μ
+                // holds it back, not because f has nothing left to give.
+                taken = Some(mu == 0.0 && predicted <= noise(f));
                 (y, t, f) = (y_trial, t_trial, f_trial);
                 if mu > 0.0 {
                     factored = mu;

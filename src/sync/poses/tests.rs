@@ -823,8 +823,8 @@ fn newtons_gradient_and_hessian_match_finite_differences() {
 /// Newton's method (translations kept) and the trust region (translations eliminated) are two
 /// methods on two forms of one cost: from the chordal start of noisy graphs, 2D and 3D, Newton
 /// converges in a handful of steps to the trust region's minimum (the cost to 1e-10, where the
-/// reduced gradient is at rounding), and from a random start it never ends above where it
-/// began.
+/// reduced gradient is at rounding), and from a random start, where the Hessian is indefinite,
+/// its damping takes it to a critical point below where it began.
 #[test]
 fn newton_reaches_the_trust_regions_minimum() {
     for (d, seed, sigma) in [(2, 51, 0.05), (3, 52, 0.05), (2, 53, 0.3), (3, 54, 0.3)] {
@@ -851,5 +851,30 @@ fn newton_reaches_the_trust_regions_minimum() {
         let far = from_rotations(d, &(0..25).map(|_| rotation(&mut random, d)).collect::<Vec<_>>());
         let from_far = newton::refine(&problem, &far, gradient, &mut |_| {});
         assert!(problem.cost(&from_far.x).0 <= problem.cost(&far).0, "{d}D σ {sigma}: rose");
+        // From there the Hessian is indefinite: only the damping gets Newton to a critical point.
+        assert!(from_far.converged, "{d}D σ {sigma}: from a random start, not converged");
+        let far_gradient = trust::Model::at(&problem, from_far.x.clone()).gradient.norm();
+        assert!(far_gradient <= 1e3 * gradient, "{d}D σ {sigma}: gradient {far_gradient}");
+    }
+}
+
+/// Newton from random points of random graphs (measurements no poses fit), 2D at ranks 2 and 3:
+/// the Hessian is indefinite there, and only the damping (`μ` over the Gauss–Newton diagonal)
+/// takes the method to a critical point, below where it began.
+#[test]
+fn newtons_damping_reaches_a_critical_point_from_anywhere() {
+    for (n, m, seed) in [(25, 60, 61), (12, 40, 63), (30, 30, 64)] {
+        let graph = random_graph(2, n, m, seed);
+        let problem = reduced(&graph);
+        let gradient = GRADIENT * problem.scale * ((2 * problem.n) as f64).sqrt();
+        let mut random = Random::new(seed);
+        for r in [2, 3] {
+            let far = random_point(2, n, r, &mut random);
+            let out = newton::refine(&problem, &far, gradient, &mut |_| {});
+            assert!(out.converged, "n {n}, m {m}, rank {r}: not converged");
+            assert!(problem.cost(&out.x).0 <= problem.cost(&far).0, "n {n}, rank {r}: rose");
+            let size = trust::Model::at(&problem, out.x.clone()).gradient.norm();
+            assert!(size <= 1e3 * gradient, "n {n}, m {m}, rank {r}: gradient {size}");
+        }
     }
 }
