@@ -30,8 +30,10 @@
 //!   `−2κ ⟨A, S_kl Y_i R̃_ij⟩ − 2τ ⟨b, S_kl Y_i t̃_ij⟩` in `Ω_i`'s.
 //!
 //! Each step solves `(H + μ D) δ = −g` (`D` the Gauss–Newton diagonal, Marquardt's scaling: radians
-//! and metres weighed alike); `μ` starts at 0, Newton's step, grows where the factorisation fails
-//! or a step raises `f`, and shrinks by Nielsen's factor when a step is taken, to 0 when the model
+//! and metres weighed alike); `μ` starts at 0, Newton's step, grows tenfold where the factorisation
+//! fails (Marquardt's factor) and by Nielsen's where a step raises `f` even halved five times (a
+//! backtracking line search: each trial a rotation update, the translations and `f`, cheap beside a
+//! factorisation), and shrinks by Nielsen's factor when a step is taken, to 0 when the model
 //! foretold the step within 10%. After each step the translations are solved afresh for the new
 //! rotations. It stops when the gradient is below the caller's tolerance or stops halving near
 //! it, after a step whose predicted decrease is within `f`'s rounding, or after
@@ -372,15 +374,38 @@ pub(super) fn model(
 /// The least damping (`μ` relative to `D`, the Gauss–Newton diagonal).
 const LEAST_DAMPING: f64 = 1e-12;
 
-/// The damping after a refused factorisation or a rejected step: from Newton's own step (`μ = 0`)
-/// a tenth of `factored`, the last damping with which a step was taken (the least if none was),
-/// rather than up from the least again (w20000 at rank 3: five factorisations refused or steps
-/// rejected a step); then Nielsen's `μ ← max(νμ, least)`, `ν ← 2ν`.
+/// How often a rejected step is halved before `μ` grows: down to 1/32 of it. Near the saddle the
+/// staircase escaped from (w20000 at rank 3), Newton's own step, and the lightly damped ones,
+/// overshoot along directions of little curvature, where a shorter step of the same direction
+/// lowers `f`; each halving costs the translations and `f` (4 ms there), a growth of `μ` another
+/// factorisation (100 ms).
+const HALVINGS: usize = 5;
+
+/// The damping after a refused factorisation: `H + μD` is not positive definite, short of it by
+/// a factor nothing measures, so tenfold (Marquardt's factor; from Newton's own step, `μ = 0`, a
+/// tenth of `factored`, the last damping with which a step was taken, or the least). Nielsen's
+/// growth, made for rejected steps, began at ×2 and took five refusals from the least damping to
+/// w20000's scale at rank 3, each most of a factorisation.
+fn refused(mu: f64, factored: f64) -> f64 {
+    if mu == 0.0 { (factored / 10.0).max(LEAST_DAMPING) } else { 10.0 * mu }
+}
+
+/// The damping after a step that raised `f` even halved: from Newton's own step (`μ = 0`) a tenth
+/// of `factored` (the least if no damped step was taken), rather than up from the least again
+/// (w20000 at rank 3: five factorisations refused or steps rejected a step); then Nielsen's
+/// `μ ← max(νμ, least)`, `ν ← 2ν`.
 fn grown(mu: f64, nu: f64, factored: f64) -> (f64, f64) {
     if mu == 0.0 {
         return ((factored / 10.0).max(LEAST_DAMPING), 2.0);
     }
     ((mu * nu).max(LEAST_DAMPING), 2.0 * nu)
+}
+
+/// The decrease `m(0) − m(αδ)` of Newton's model `m(δ) = f + gᵀδ + ½ δᵀHδ` along the damped step
+/// `δ`, `(H + μD) δ = −g`, from its `δᵀDδ` (`damped`) and `gᵀδ` (`slope`): with `δᵀHδ = −gᵀδ −
+/// μ δᵀDδ`, `α (½ α μ δᵀDδ − (1 − ½ α) gᵀδ)`; at `α = 1`, `½ (μ δᵀDδ − gᵀδ)` > 0.
+pub(super) fn decrease(alpha: f64, mu: f64, damped: f64, slope: f64) -> f64 {
+    alpha * (0.5 * alpha * mu * damped - (1.0 - 0.5 * alpha) * slope)
 }
 
 /// Newton's method from the point `x` (the translations optimal for it), at its rank, which
@@ -427,34 +452,47 @@ pub(super) fn refine(
                 shifted[at] += mu * dk;
             }
             let Some(factor) = system.lower.factor(&shifted) else {
-                (mu, nu) = grown(mu, nu, factored);
+                mu = refused(mu, factored);
                 continue;
             };
             let mut step: Vec<f64> = g.iter().map(|x| -x).collect();
             factor.solve(&mut step, 1);
-            let mut y_trial = y.clone();
-            for i in 1..n {
-                let at = system.v * (i - 1);
-                y_trial[i] = mul(&exp(&step[at..at + system.p], r), &y[i], (r, r, d));
-            }
-            // The step's rotations with their own optimal translations: never worse than the
-            // step's translations, and the Ω part of the step is then Newton's step on the cost
-            // with the translations eliminated (the Schur complement of H on the rotations is
-            // that cost's Hessian where ∂f/∂t = 0), quadratically convergent where the
-            // translations' own steps, through a long chain, were not.
-            let t_trial = translations(problem, &y_trial, r);
-            let f_trial = cost(problem, r, &y_trial, &t_trial);
-            // The damped model's decrease, ½ (μ δᵀDδ − gᵀδ) > 0.
             let damped: f64 = (0..step.len()).map(|k| diagonal[k] * step[k] * step[k]).sum();
             let slope: f64 = g.iter().zip(&step).map(|(a, b)| a * b).sum();
-            let predicted = 0.5 * (mu * damped - slope);
-            let change = f - f_trial;
-            // A change within f's rounding is judged by the model.
-            let rho = if change.abs() <= noise(f) { 1.0 } else { change / predicted };
+            let mut alpha = 1.0;
+            let (mut y_trial, mut t_trial, mut f_trial, mut predicted, mut rho);
+            let mut halvings = 0;
+            loop {
+                y_trial = y.clone();
+                let mut omega = vec![0.0; system.p];
+                for i in 1..n {
+                    let at = system.v * (i - 1);
+                    for (o, s) in omega.iter_mut().zip(&step[at..at + system.p]) {
+                        *o = alpha * s;
+                    }
+                    y_trial[i] = mul(&exp(&omega, r), &y[i], (r, r, d));
+                }
+                // The step's rotations with their own optimal translations: never worse than the
+                // step's translations, and the Ω part of the step is then Newton's step on the
+                // cost with the translations eliminated (the Schur complement of H on the
+                // rotations is that cost's Hessian where ∂f/∂t = 0), quadratically convergent
+                // where the translations' own steps, through a long chain, were not.
+                t_trial = translations(problem, &y_trial, r);
+                f_trial = cost(problem, r, &y_trial, &t_trial);
+                predicted = decrease(alpha, mu, damped, slope);
+                let change = f - f_trial;
+                // A change within f's rounding is judged by the model.
+                rho = if change.abs() <= noise(f) { 1.0 } else { change / predicted };
+                if (rho.is_finite() && rho > 0.0) || halvings == HALVINGS {
+                    break;
+                }
+                alpha *= 0.5;
+                halvings += 1;
+            }
             if rho.is_finite() && rho > 0.0 {
                 // Converged only on Newton's own step: a damped one predicts little because μ
                 // holds it back, not because f has nothing left to give.
-                taken = Some(mu == 0.0 && predicted <= noise(f));
+                taken = Some(mu == 0.0 && halvings == 0 && predicted <= noise(f));
                 (y, t, f) = (y_trial, t_trial, f_trial);
                 if mu > 0.0 {
                     factored = mu;

@@ -820,6 +820,40 @@ fn newtons_gradient_and_hessian_match_finite_differences() {
     }
 }
 
+/// The model's decrease along a shortened damped step, as the halvings judge it, against the
+/// quadratic model written out with the Hessian: for a random `δ` and `μ`, `g` is set so that `δ`
+/// solves `(H + μD) δ = −g`, and `m(0) − m(αδ) = −α gᵀδ − ½ α² δᵀHδ`.
+#[test]
+fn newtons_decrease_along_a_halved_step_is_the_models() {
+    for (r, seed) in [(2, 71), (3, 72)] {
+        let n = 7;
+        let graph = random_graph(2, n, 12, seed);
+        let problem = reduced(&graph);
+        let system = newton::System::new(&problem, r);
+        let mut random = Random::new(seed);
+        let x = random_point(2, n, r, &mut random);
+        let y = newton::blocks(&x);
+        let t = newton::translations(&problem, &y, r);
+        let (_, values, diagonal) = newton::model(&system, &problem, &y, &t);
+        let delta: Vec<f64> = (0..system.v * (n - 1)).map(|_| random.gaussian()).collect();
+        let h_delta = system.apply(&values, &delta, &problem.edges);
+        let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(a, b)| a * b).sum::<f64>();
+        let d_delta: Vec<f64> = diagonal.iter().zip(&delta).map(|(d, x)| d * x).collect();
+        for mu in [0.0, 1e-3, 0.7] {
+            let g: Vec<f64> = h_delta.iter().zip(&d_delta).map(|(h, dd)| -(h + mu * dd)).collect();
+            let (slope, curvature) = (dot(&g, &delta), dot(&delta, &h_delta));
+            for alpha in [1.0, 0.5, 0.125, 1.0 / 32.0] {
+                let model = -alpha * slope - 0.5 * alpha * alpha * curvature;
+                let ours = newton::decrease(alpha, mu, dot(&delta, &d_delta), slope);
+                assert!(
+                    (ours - model).abs() <= 1e-10 * model.abs().max(1.0),
+                    "rank {r}, μ {mu}, α {alpha}: {ours} against {model}"
+                );
+            }
+        }
+    }
+}
+
 /// Newton's method (translations kept) and the trust region (translations eliminated) are two
 /// methods on two forms of one cost: from the chordal start of noisy graphs, 2D and 3D, Newton
 /// converges in a handful of steps to the trust region's minimum (the cost to 1e-10, where the
