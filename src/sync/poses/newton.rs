@@ -517,7 +517,7 @@ pub(super) fn refine(
                 // A step the model foretold, or bettered, to within a quarter is followed by
                 // Newton's own (μ = 0; Marquardt's threshold for good agreement): Nielsen's factor,
                 // a third at best, kept μ D weighing on a long chain's ill-conditioned directions
-                // for many steps. (Within 10% only, as before, w20000 took 3.7 s natively against
+                // for many steps. (With "within 10%" instead, w20000 took 3.7 s natively against
                 // 3.4 s: its damped steps from the chordal start do 10–30% better than foretold.)
                 mu = if rho > 0.75 {
                     0.0
