@@ -402,7 +402,7 @@ const LEAST_DAMPING: f64 = 1e-12;
 /// overshoot along directions of little curvature, where a shorter step of the same direction
 /// lowers `f`; each halving costs the translations and `f` (4 ms there), a growth of `μ` another
 /// factorisation (100 ms).
-const HALVINGS: usize = 5;
+pub(super) const HALVINGS: usize = 5;
 
 /// The damping after a refused factorisation or a step that raised `f` even halved: from Newton's
 /// own step (`μ = 0`) a tenth of `factored`, the last damping with which a step was taken (the
@@ -423,6 +423,44 @@ fn grown(mu: f64, nu: f64, factored: f64) -> (f64, f64) {
 /// μ δᵀDδ`, `α (½ α μ δᵀDδ − (1 − ½ α) gᵀδ)`; at `α = 1`, `½ (μ δᵀDδ − gᵀδ)` > 0.
 pub(super) fn decrease(alpha: f64, mu: f64, damped: f64, slope: f64) -> f64 {
     alpha * (0.5 * alpha * mu * damped - (1.0 - 0.5 * alpha) * slope)
+}
+
+/// Whether a trial with this `ρ` (its change in `f` over the model's) is taken: it lowered `f`.
+pub(super) fn lowers(rho: f64) -> bool {
+    rho.is_finite() && rho > 0.0
+}
+
+/// A backtracking line search along a step: `trial(α)` at `α = 1, ½, ¼, …` until one [`lowers`]
+/// `f` or the step has been halved [`HALVINGS`] times; the last trial, its `ρ` and the halvings.
+pub(super) fn backtrack<T>(mut trial: impl FnMut(f64) -> (T, f64)) -> (T, f64, usize) {
+    let mut alpha = 1.0;
+    let mut halvings = 0;
+    loop {
+        let (out, rho) = trial(alpha);
+        if lowers(rho) || halvings == HALVINGS {
+            return (out, rho, halvings);
+        }
+        alpha *= 0.5;
+        halvings += 1;
+    }
+}
+
+/// Whether a step taken ends the method: Newton's own (`μ = 0`, not halved) whose model said it
+/// would lower `f` by no more than `f`'s rounding, `noise`. A damped or halved step predicts little
+/// because `μ` or the halving held it back, not because `f` has nothing left to give.
+pub(super) fn last_step(mu: f64, halvings: usize, predicted: f64, noise: f64) -> bool {
+    mu == 0.0 && halvings == 0 && predicted <= noise
+}
+
+/// The damping after a step taken with `ρ`: a step the model foretold, or bettered, to within a
+/// quarter is followed by Newton's own (`μ = 0`; Marquardt's threshold for good agreement), since
+/// Nielsen's factor, a third at best, kept `μD` weighing on a long chain's ill-conditioned
+/// directions for many steps (and with "within 10%" instead w20000 took 3.7 s natively against
+/// 3.4 s: its damped steps from the chordal start do 10–30% better than foretold); otherwise
+/// Nielsen's `μ · max(⅓, 1 − (2ρ − 1)³)`, whose floor of a third is then never reached (at `ρ ≤
+/// 0.75` the factor is at least 0.875).
+pub(super) fn damping_after(mu: f64, rho: f64) -> f64 {
+    if rho > 0.75 { 0.0 } else { mu * (1.0 - (2.0 * rho - 1.0).powi(3)) }
 }
 
 /// Newton's method from the point `x` (the translations optimal for it), at its rank, which
@@ -476,11 +514,8 @@ pub(super) fn refine(
             factor.solve(&mut step, 1);
             let damped: f64 = (0..step.len()).map(|k| diagonal[k] * step[k] * step[k]).sum();
             let slope: f64 = g.iter().zip(&step).map(|(a, b)| a * b).sum();
-            let mut alpha = 1.0;
-            let (mut y_trial, mut t_trial, mut f_trial, mut predicted, mut rho);
-            let mut halvings = 0;
-            loop {
-                y_trial = y.clone();
+            let ((y_trial, t_trial, f_trial, predicted), rho, halvings) = backtrack(|alpha| {
+                let mut y_trial = y.clone();
                 let mut omega = vec![0.0; system.p];
                 for i in 1..n {
                     let at = system.v * (i - 1);
@@ -494,36 +529,21 @@ pub(super) fn refine(
                 // cost with the translations eliminated (the Schur complement of H on the
                 // rotations is that cost's Hessian where ∂f/∂t = 0), quadratically convergent
                 // where the translations' own steps, through a long chain, were not.
-                t_trial = translations(problem, &y_trial, r);
-                f_trial = cost(problem, r, &y_trial, &t_trial);
-                predicted = decrease(alpha, mu, damped, slope);
+                let t_trial = translations(problem, &y_trial, r);
+                let f_trial = cost(problem, r, &y_trial, &t_trial);
+                let predicted = decrease(alpha, mu, damped, slope);
                 let change = f - f_trial;
                 // A change within f's rounding is judged by the model.
-                rho = if change.abs() <= noise(f) { 1.0 } else { change / predicted };
-                if (rho.is_finite() && rho > 0.0) || halvings == HALVINGS {
-                    break;
-                }
-                alpha *= 0.5;
-                halvings += 1;
-            }
-            if rho.is_finite() && rho > 0.0 {
-                // Converged only on Newton's own step: a damped one predicts little because μ
-                // holds it back, not because f has nothing left to give.
-                taken = Some(mu == 0.0 && halvings == 0 && predicted <= noise(f));
+                let rho = if change.abs() <= noise(f) { 1.0 } else { change / predicted };
+                ((y_trial, t_trial, f_trial, predicted), rho)
+            });
+            if lowers(rho) {
+                taken = Some(last_step(mu, halvings, predicted, noise(f)));
                 (y, t, f) = (y_trial, t_trial, f_trial);
                 if mu > 0.0 {
                     factored = mu;
                 }
-                // A step the model foretold, or bettered, to within a quarter is followed by
-                // Newton's own (μ = 0; Marquardt's threshold for good agreement): Nielsen's factor,
-                // a third at best, kept μ D weighing on a long chain's ill-conditioned directions
-                // for many steps. (With "within 10%" instead, w20000 took 3.7 s natively against
-                // 3.4 s: its damped steps from the chordal start do 10–30% better than foretold.)
-                mu = if rho > 0.75 {
-                    0.0
-                } else {
-                    mu * (1.0_f64 / 3.0).max(1.0 - (2.0 * rho - 1.0).powi(3))
-                };
+                mu = damping_after(mu, rho);
                 nu = 2.0;
                 break;
             }

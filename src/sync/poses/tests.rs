@@ -854,6 +854,54 @@ fn newtons_decrease_along_a_halved_step_is_the_models() {
     }
 }
 
+/// The line search along a rejected step: it takes the first of `α = 1, ½, ¼, …` that lowers `f`
+/// (here `f(α) = (α − 0.2)² − 0.04` from `f(0) = 0`, lowered from `α < 0.4`: at `¼`), gives up
+/// after [`newton::HALVINGS`] halvings (a step that never lowers `f`), and takes a `ρ` that is not
+/// a number for a rise.
+#[test]
+fn newtons_line_search_halves_a_rejected_step_until_it_lowers_f() {
+    let mut tried = Vec::new();
+    let (alpha, rho, halvings) = newton::backtrack(|alpha| {
+        tried.push(alpha);
+        let f = (alpha - 0.2_f64).powi(2) - 0.04;
+        (alpha, -f / alpha)
+    });
+    assert_eq!((alpha, halvings), (0.25, 2));
+    assert_eq!(tried, [1.0, 0.5, 0.25]);
+    assert!((rho - 0.15).abs() < 1e-12, "ρ {rho}");
+    let mut count = 0;
+    let (alpha, rho, halvings) = newton::backtrack(|alpha| {
+        count += 1;
+        (alpha, if count % 2 == 0 { f64::NAN } else { -1.0 })
+    });
+    assert_eq!(halvings, newton::HALVINGS);
+    assert_eq!(count, newton::HALVINGS + 1);
+    assert_eq!(alpha, 0.5_f64.powi(newton::HALVINGS as i32));
+    assert!(!newton::lowers(rho));
+    assert!(!newton::lowers(0.0) && !newton::lowers(f64::INFINITY) && newton::lowers(1e-300));
+}
+
+/// The damping after a step (Nielsen 1999, with Marquardt's threshold for Newton's own step):
+/// `ρ > 0.75` returns Newton's own step, `μ = 0`; otherwise `μ · (1 − (2ρ − 1)³)`; and only
+/// Newton's own step, neither damped nor halved, predicting no more than `f`'s rounding, ends the
+/// method.
+#[test]
+fn newtons_damping_after_a_step_and_its_last_step() {
+    let mu = 1e-3;
+    assert_eq!(newton::damping_after(mu, 0.76), 0.0);
+    assert_eq!(newton::damping_after(mu, 1.4), 0.0);
+    for (rho, factor) in [(0.75, 0.875), (0.6, 1.0 - 0.2_f64.powi(3)), (0.5, 1.0), (0.1, 1.512)] {
+        let after = newton::damping_after(mu, rho);
+        assert!((after - mu * factor).abs() <= 1e-15, "ρ {rho}: {after} against {}", mu * factor);
+    }
+    assert!((newton::damping_after(mu, 0.7) - mu * (1.0 - 0.4_f64.powi(3))).abs() <= 1e-15);
+    assert!(newton::last_step(0.0, 0, 1e-16, 1e-15));
+    assert!(newton::last_step(0.0, 0, 1e-15, 1e-15));
+    assert!(!newton::last_step(0.0, 0, 2e-15, 1e-15));
+    assert!(!newton::last_step(1e-9, 0, 1e-16, 1e-15));
+    assert!(!newton::last_step(0.0, 1, 1e-16, 1e-15));
+}
+
 /// Newton's method (translations kept) and the trust region (translations eliminated) are two
 /// methods on two forms of one cost: from the chordal start of noisy graphs, 2D and 3D, Newton
 /// converges in a handful of steps to the trust region's minimum (the cost to 1e-10, where the
