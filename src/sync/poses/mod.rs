@@ -108,8 +108,9 @@ pub enum PoseStage {
     Chordal,
     /// Minimising the rank-`rank` relaxation, after `iterations` steps at lower ranks.
     Optimising { rank: usize, iterations: usize },
-    /// A step (Newton's or the trust region's) at rank `rank`, the `iterations`-th of the whole solve (each level's
-    /// and the last pass's counted together, as [`SynchronizedPoses::iterations`] counts them).
+    /// A step (Newton's or the trust region's) at rank `rank`, the `iterations`-th of the whole
+    /// solve (each level's and the last pass's counted together, as
+    /// [`SynchronizedPoses::iterations`] counts them).
     Step { rank: usize, iterations: usize },
     /// The certificate `λ_min(Q − Λ)` at rank `rank` (Lanczos).
     Certifying { rank: usize },

@@ -26,9 +26,8 @@ use faer::{Conj, MatMut, Par, Side};
 /// (its 60 or so factorisations of up to 120,000 unknowns); the graphs that factor a few times
 /// within ±5%.
 pub(super) struct Lower {
+    /// The triangle [`read_side`] names.
     pattern: SymbolicSparseColMat<usize>,
-    /// The triangle `pattern` holds.
-    side: Side,
     /// The slot in the pattern's values of each listed entry.
     slots: Vec<usize>,
     ordering: Arc<Ordering>,
@@ -58,6 +57,24 @@ pub(super) enum Layout {
     Blocks(usize),
 }
 
+/// `order` sorted stably by `key` (below `size`).
+fn counting_sort(size: usize, order: &[usize], key: impl Fn(usize) -> usize) -> Vec<usize> {
+    let mut starts = vec![0usize; size + 1];
+    for &k in order {
+        starts[key(k) + 1] += 1;
+    }
+    for c in 0..size {
+        starts[c + 1] += starts[c];
+    }
+    let mut sorted = vec![0usize; order.len()];
+    for &k in order {
+        let at = &mut starts[key(k)];
+        sorted[*at] = k;
+        *at += 1;
+    }
+    sorted
+}
+
 /// The compressed columns of the entries `pairs` (repeats allowed) and each entry's slot in them:
 /// two stable counting sorts (by row, then by column) and one pass merging repeats, in `O(nnz +
 /// size)`. (faer's `try_new_from_indices` sorts by comparison: on w10000 that sort was a tenth of
@@ -66,25 +83,9 @@ fn compressed(
     size: usize,
     pairs: &[Pair<usize, usize>],
 ) -> (SymbolicSparseColMat<usize>, Vec<usize>) {
-    let by = |order: &[usize], key: &dyn Fn(usize) -> usize| -> Vec<usize> {
-        let mut starts = vec![0usize; size + 1];
-        for &k in order {
-            starts[key(k) + 1] += 1;
-        }
-        for c in 0..size {
-            starts[c + 1] += starts[c];
-        }
-        let mut sorted = vec![0usize; order.len()];
-        for &k in order {
-            let at = &mut starts[key(k)];
-            sorted[*at] = k;
-            *at += 1;
-        }
-        sorted
-    };
     let listed: Vec<usize> = (0..pairs.len()).collect();
-    let by_row = by(&listed, &|k| pairs[k].row);
-    let order = by(&by_row, &|k| pairs[k].col);
+    let by_row = counting_sort(size, &listed, |k| pairs[k].row);
+    let order = counting_sort(size, &by_row, |k| pairs[k].col);
     let mut col_ptr = vec![0usize; size + 1];
     let mut row_idx = Vec::with_capacity(pairs.len());
     let mut slots = vec![0usize; pairs.len()];
@@ -102,6 +103,15 @@ fn compressed(
         col_ptr[c + 1] += col_ptr[c];
     }
     (SymbolicSparseColMat::new_checked(size, size, col_ptr, None, row_idx), slots)
+}
+
+/// The triangle faer's numeric factorisation reads: the upper for its simplicial form, the lower
+/// for its supernodal one (the other it would transpose first, each time).
+fn read_side(cholesky: &SymbolicCholesky<usize>) -> Side {
+    match cholesky.raw() {
+        SymbolicCholeskyRaw::Simplicial(_) => Side::Upper,
+        SymbolicCholeskyRaw::Supernodal(_) => Side::Lower,
+    }
 }
 
 /// faer's minimum degree ordering of the entries `pairs`: row `k` goes to `inverse[k]`.
@@ -163,18 +173,15 @@ impl Lower {
             Default::default(),
         )
         .expect("a square pattern has a symbolic Cholesky factorisation");
-        // The numeric factorisation reads the upper triangle for its simplicial form, the lower
-        // for its supernodal one (the other it would transpose first, each time).
-        let (pattern, side, slots) = match cholesky.raw() {
-            SymbolicCholeskyRaw::Simplicial(_) => (pattern, Side::Upper, slots),
-            SymbolicCholeskyRaw::Supernodal(_) => {
+        let (pattern, slots) = match read_side(&cholesky) {
+            Side::Upper => (pattern, slots),
+            Side::Lower => {
                 let lower: Vec<Pair<usize, usize>> =
                     upper.iter().map(|p| Pair { row: p.col, col: p.row }).collect();
-                let (pattern, slots) = compressed(size, &lower);
-                (pattern, Side::Lower, slots)
+                compressed(size, &lower)
             }
         };
-        Lower { pattern, side, slots, ordering: Arc::new(Ordering { inverse, cholesky }) }
+        Lower { pattern, slots, ordering: Arc::new(Ordering { inverse, cholesky }) }
     }
 
     /// The Cholesky factor of the matrix whose listed entries are `values` (in the order of the
@@ -197,7 +204,7 @@ impl Lower {
             .factorize_numeric_llt(
                 &mut out,
                 matrix,
-                self.side,
+                read_side(cholesky),
                 Default::default(),
                 Par::Seq,
                 MemStack::new(&mut buffer),
