@@ -8,12 +8,11 @@
 //! with a block-Jacobi preconditioner instead: those graphs are well conditioned, and a
 //! solve takes a few dozen sparse products.
 
-use faer::sparse::linalg::solvers::{Llt, SymbolicLlt};
-use faer::sparse::{Argsort, Pair, SparseColMat, SymbolicSparseColMat};
-use faer::{MatMut, Side};
+use faer::sparse::Pair;
 use glam::{DMat3, DVec3};
 
 use super::graph::Graph;
+use super::sparse::{self, Layout, Lower};
 
 /// A symmetric 3n×3n matrix: `diag[i]` is the block `(i, i)`, `off[k]` the block `(i, j)` of
 /// edge `k = (i, j)` (its transpose is the block `(j, i)`; parallel edges add up).
@@ -87,13 +86,12 @@ pub(crate) fn add(y: &mut [f64], i: usize, v: DVec3) {
 }
 
 /// The lower triangle of a block matrix with one node's rows and columns left out (or none):
-/// which scalar entry each value goes to, and faer's symbolic Cholesky of that structure.
+/// which scalar entry each value goes to, and its symbolic Cholesky factorisation.
 pub(crate) struct Pattern {
     /// Each node's block row, `None` for the node left out.
     index: Vec<Option<usize>>,
-    symbolic: SymbolicSparseColMat<usize>,
-    argsort: Argsort<usize>,
-    llt: SymbolicLlt<usize>,
+    /// The entries as [`walk`] lists them.
+    lower: Lower,
     /// Whether the Cholesky factor holds more than [`FILL`] times the matrix's entries.
     fills: bool,
 }
@@ -104,7 +102,7 @@ const FILL: usize = 20;
 
 /// A numeric factorisation `A + shift I = L Lᵀ` that succeeded: `A + shift I` is positive
 /// definite to the working precision.
-pub(crate) struct Factor(Llt<usize, f64>);
+pub(crate) struct Factor(sparse::Factor);
 
 impl Pattern {
     /// The pattern of `graph`'s block matrices without node `left_out`'s block row and column.
@@ -119,23 +117,9 @@ impl Pattern {
         }
         let mut pairs = Vec::new();
         visit(graph, &index, |row, col| pairs.push(Pair { row, col }));
-        let (symbolic, argsort) =
-            SymbolicSparseColMat::try_new_from_indices(3 * size, 3 * size, &pairs)
-                .expect("block indices are below the dimension by construction");
-        let llt = SymbolicLlt::try_new(symbolic.as_ref(), Side::Lower)
-            .expect("a square pattern has a symbolic Cholesky factorisation");
-        // The factor's size, from a second symbolic analysis (SymbolicLlt does not report it;
-        // the analysis costs a fraction of one numeric factorisation).
-        let factor_size = faer::sparse::linalg::cholesky::factorize_symbolic_cholesky(
-            symbolic.as_ref(),
-            Side::Lower,
-            Default::default(),
-            Default::default(),
-        )
-        .map(|s| s.len_val())
-        .unwrap_or(usize::MAX);
-        let fills = factor_size > FILL.saturating_mul(pairs.len());
-        Pattern { index, symbolic, argsort, llt, fills }
+        let lower = Lower::new(3 * size, &pairs, Layout::Auto);
+        let fills = lower.factor_len() > FILL.saturating_mul(pairs.len());
+        Pattern { index, lower, fills }
     }
 
     /// Node `i`'s block row, `None` for the node left out.
@@ -157,12 +141,7 @@ impl Pattern {
                 Entry::Edge { edge, row, col, transposed: true } => a.off[edge].col(row)[col],
             })
         });
-        if values.iter().any(|v| !v.is_finite()) {
-            return None;
-        }
-        let matrix =
-            SparseColMat::new_from_argsort(self.symbolic.clone(), &self.argsort, &values).ok()?;
-        Llt::try_new_with_symbolic(self.llt.clone(), matrix.as_ref(), Side::Lower).ok().map(Factor)
+        self.lower.factor(&values).map(Factor)
     }
 }
 
@@ -292,9 +271,7 @@ pub(super) enum Solved {
 impl Factor {
     /// Solves `(A + shift I) x = b` in place.
     pub fn solve(&self, b: &mut [f64]) {
-        use faer::prelude::Solve;
-        let n = b.len();
-        self.0.solve_in_place(MatMut::from_column_major_slice_mut(b, n, 1));
+        self.0.solve(b, 1);
     }
 }
 

@@ -33,6 +33,7 @@ mod lanczos;
 mod newton;
 mod poses;
 mod robust;
+mod sparse;
 mod spectral;
 #[cfg(test)]
 mod tests;

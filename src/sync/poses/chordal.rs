@@ -11,8 +11,8 @@ use faer::sparse::Pair;
 use glam::DQuat;
 
 use super::reduced::Reduced;
-use super::sparse::{Layout, Lower};
 use super::stiefel::{Stack, to_rotations};
+use crate::sync::sparse::{Layout, Lower};
 
 /// Every `R_i` of the chordal estimate (`R_0 = I`), or `None` if the anchored connection
 /// Laplacian cannot be factored.

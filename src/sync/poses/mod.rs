@@ -26,7 +26,6 @@
 mod chordal;
 mod newton;
 mod reduced;
-mod sparse;
 mod staircase;
 mod stiefel;
 #[cfg(test)]

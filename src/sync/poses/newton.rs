@@ -43,8 +43,8 @@
 use faer::sparse::Pair;
 
 use super::reduced::Reduced;
-use super::sparse::{Layout, Lower};
 use super::stiefel::{Block, Stack};
+use crate::sync::sparse::{Layout, Lower};
 
 /// At most this many Newton steps (a tight graph from the chordal start takes a handful).
 pub(super) const MAX_ITERATIONS: usize = 100;

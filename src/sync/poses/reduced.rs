@@ -24,8 +24,8 @@
 
 use faer::sparse::Pair;
 
-use super::sparse::{Factor, Layout, Lower};
 use super::stiefel::{Block, Stack};
+use crate::sync::sparse::{Factor, Layout, Lower};
 
 /// One measurement: `T̃_ij ≈ T_i⁻¹ T_j` with `R̃_ij` (`d × d`, unused entries 0), `t̃_ij` (z = 0 in
 /// 2D), and its weights.

@@ -33,9 +33,9 @@
 //! step, so it is not used there.
 
 use super::reduced::Reduced;
-use super::sparse::Factor;
 use super::staircase::shifted;
 use super::stiefel::{Stack, multipliers, project, retract};
+use crate::sync::sparse::Factor;
 
 /// At most this many trust-region steps on one level of the staircase.
 pub(super) const MAX_ITERATIONS: usize = 300;

@@ -1,8 +1,9 @@
 //! Sparse symmetric matrices with a fixed pattern, factorised by faer's sparse Cholesky (with its
-//! fill-reducing ordering): the anchored translational Laplacian `L_τ`, the anchored rotational
-//! connection Laplacian of the chordal start, the full pose-graph matrix `M` of SE-Sync's
-//! eq. (20), shifted on its rotation block for the preconditioner and the certificate, and the
-//! Newton system of `newton`.
+//! fill-reducing ordering). For rotations, the graph's 3×3 block matrices (`blocks::Pattern`: the
+//! connection Laplacian, the certificate's `S`, the Newton system); for pose graphs, the anchored
+//! translational Laplacian `L_τ`, the anchored rotational connection Laplacian of the chordal
+//! start, the full pose-graph matrix `M` of SE-Sync's eq. (20), shifted on its rotation block for
+//! the preconditioner and the certificate, and the Newton system of `poses::newton`.
 //!
 //! The pattern (and faer's symbolic analysis) is built once; each numeric factorisation takes the
 //! values in the order the pattern's entries were listed, duplicates added up.
@@ -182,6 +183,11 @@ impl Lower {
             }
         };
         Lower { pattern, slots, ordering: Arc::new(Ordering { inverse, cholesky }) }
+    }
+
+    /// How many entries the Cholesky factor holds (its fill).
+    pub fn factor_len(&self) -> usize {
+        self.ordering.cholesky.len_val()
     }
 
     /// The Cholesky factor of the matrix whose listed entries are `values` (in the order of the
