@@ -12,7 +12,7 @@ use faer::sparse::Pair;
 use glam::{DMat3, DVec3};
 
 use super::graph::Graph;
-use super::sparse::{self, Layout, Lower};
+use super::sparse::{Factor, Layout, Lower};
 
 /// A symmetric 3n×3n matrix: `diag[i]` is the block `(i, i)`, `off[k]` the block `(i, j)` of
 /// edge `k = (i, j)` (its transpose is the block `(j, i)`; parallel edges add up).
@@ -100,10 +100,6 @@ pub(crate) struct Pattern {
 /// holds 8.5 times its matrix's entries, a random graph of degree 12 on 1,000 nodes 52 times.
 const FILL: usize = 20;
 
-/// A numeric factorisation `A + shift I = L Lᵀ` that succeeded: `A + shift I` is positive
-/// definite to the working precision.
-pub(crate) struct Factor(sparse::Factor);
-
 impl Pattern {
     /// The pattern of `graph`'s block matrices without node `left_out`'s block row and column.
     pub fn new(graph: &Graph, left_out: Option<usize>) -> Pattern {
@@ -141,7 +137,7 @@ impl Pattern {
                 Entry::Edge { edge, row, col, transposed: true } => a.off[edge].col(row)[col],
             })
         });
-        self.lower.factor(&values).map(Factor)
+        self.lower.factor(&values)
     }
 }
 
@@ -177,7 +173,7 @@ impl Pattern {
                 reduced[3 * r..3 * r + 3].copy_from_slice(&b[3 * i..3 * i + 3]);
             }
         }
-        factor.solve(&mut reduced);
+        factor.solve(&mut reduced, 1);
         let mut x = vec![0.0; b.len()];
         for (i, slot) in self.index.iter().enumerate() {
             if let Some(r) = slot {
@@ -266,13 +262,6 @@ pub(super) enum Solved {
     Indefinite,
     /// Not converged in the steps allowed.
     Slow,
-}
-
-impl Factor {
-    /// Solves `(A + shift I) x = b` in place.
-    pub fn solve(&self, b: &mut [f64]) {
-        self.0.solve(b, 1);
-    }
 }
 
 /// One stored value of the lower triangle, in the order the pattern lists them.

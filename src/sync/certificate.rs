@@ -103,7 +103,7 @@ pub(crate) fn certify(graph: &Graph, pattern: &Pattern, q: &[DQuat]) -> Certific
             3 * n,
             |x, out| {
                 out.copy_from_slice(x);
-                f.solve(out);
+                f.solve(out, 1);
             },
             &y,
             1,

@@ -80,7 +80,7 @@ pub(crate) fn spectral(graph: &Graph, pattern: &Pattern) -> (Vec<DQuat>, usize) 
     };
     let (v, steps) = three(3 * n, |x, y| {
         y.copy_from_slice(x);
-        factor.solve(y);
+        factor.solve(y, 1);
     });
     (round(&v, n), steps)
 }

@@ -618,7 +618,7 @@ fn conjugate_gradients_solve_as_cholesky_does_where_the_factor_fills_in() {
     let by_cg = pattern.solve(&s.graph, &h, 1e-3, &b, 1e-12).unwrap();
     let factor = pattern.factor(&s.graph, &h, 1e-3).unwrap();
     let mut by_cholesky = b[3..].to_vec();
-    factor.solve(&mut by_cholesky);
+    factor.solve(&mut by_cholesky, 1);
     let gap = by_cg[3..].iter().zip(&by_cholesky).map(|(a, c)| (a - c).abs()).fold(0.0, f64::max);
     assert!(gap < 1e-9, "{gap}");
     assert!(by_cg[..3].iter().all(|&x| x == 0.0));
@@ -649,7 +649,7 @@ fn conjugate_gradients_converge_on_their_own_and_refuse_an_indefinite_matrix() {
     let b: Vec<f64> = (0..1800).map(|_| random.gaussian()).collect();
     let factor = pattern.factor(&s.graph, &h, 1e-3).unwrap();
     let mut by_cholesky = b[3..].to_vec();
-    factor.solve(&mut by_cholesky);
+    factor.solve(&mut by_cholesky, 1);
     for tolerance in [1e-6, 1e-12] {
         let blocks::Solved::Yes(x) = pattern.conjugate_gradients(&s.graph, &h, 1e-3, &b, tolerance)
         else {
