@@ -11,7 +11,9 @@
 use std::sync::Arc;
 
 use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::sparse::linalg::SupernodalThreshold;
 use faer::sparse::linalg::amd;
+use faer::sparse::linalg::cholesky::CholeskySymbolicParams;
 use faer::sparse::linalg::cholesky::{
     LltRef, SymbolicCholesky, SymbolicCholeskyRaw, SymmetricOrdering, factorize_symbolic_cholesky,
 };
@@ -51,7 +53,8 @@ pub(super) struct Factor {
 /// `v × v` blocks, on the blocks, each kept whole (the Newton system's: natively w20000's rank 3
 /// took 3.25 s against 4.17 s ordered by the entries, its rank 2 0.76 against 0.82 s, w10000's
 /// 0.34 against 0.39 s). Either way faer chooses between its simplicial (column by column) and
-/// supernodal (dense blocks) factorisations from the ratio of flops to the factor's entries.
+/// supernodal (dense blocks) factorisations from the ratio of flops to the factor's entries
+/// (for blocks, natively, at a lower ratio: `BLOCKS_SUPERNODAL`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) enum Layout {
     Auto,
@@ -105,6 +108,17 @@ fn compressed(
     }
     (SymbolicSparseColMat::new_checked(size, size, col_ptr, None, row_idx), slots)
 }
+
+/// Where a matrix of dense blocks turns supernodal, natively: at a quarter of faer's own ratio of
+/// flops to the factor's entries. The Newton systems of the large 2D graphs sit between the two,
+/// where faer's simplicial factorisation, column by column, spent 44% of w20000's time. Natively
+/// w20000 took 3.32 → 2.58 s, w10000 571 → 463 ms, the other graphs within 3% (one run each).
+/// In wasm faer's dense kernels are slower, and the same choice made w20000 slower (3.38 →
+/// 3.73 s, medians of 3, alternately), so there faer's own ratio stays.
+#[cfg(not(target_arch = "wasm32"))]
+const BLOCKS_SUPERNODAL: SupernodalThreshold = SupernodalThreshold(0.25);
+#[cfg(target_arch = "wasm32")]
+const BLOCKS_SUPERNODAL: SupernodalThreshold = SupernodalThreshold::AUTO;
 
 /// The triangle faer's numeric factorisation reads: the upper for its simplicial form, the lower
 /// for its supernodal one (the other it would transpose first, each time).
@@ -171,7 +185,13 @@ impl Lower {
             pattern.as_ref(),
             Side::Upper,
             SymmetricOrdering::Identity,
-            Default::default(),
+            CholeskySymbolicParams {
+                supernodal_flop_ratio_threshold: match layout {
+                    Layout::Auto => SupernodalThreshold::AUTO,
+                    Layout::Blocks(_) => BLOCKS_SUPERNODAL,
+                },
+                ..Default::default()
+            },
         )
         .expect("a square pattern has a symbolic Cholesky factorisation");
         let (pattern, slots) = match read_side(&cholesky) {
@@ -287,6 +307,58 @@ mod tests {
             let faers =
                 faer::sparse::SparseColMat::new_from_argsort(theirs, &argsort, &values).unwrap();
             assert_eq!(summed, faers.val(), "{size}, {count}");
+        }
+    }
+    /// Both of faer's forms, each read from its own triangle, solve `A x = b` (checked by
+    /// multiplying back) under both orderings: a chain of blocks factors column by column; all
+    /// blocks coupled to all factor in dense supernodes once there are enough of them (faer's
+    /// ratio of flops to entries, about a third of the size here, above 40), and natively sooner
+    /// as blocks (above 10: `BLOCKS_SUPERNODAL`).
+    #[test]
+    fn both_forms_solve_under_both_orderings() {
+        let v = 3;
+        let native = !cfg!(target_arch = "wasm32");
+        for (blocks, dense, auto, as_blocks) in
+            [(40, false, false, false), (24, true, false, native), (50, true, true, true)]
+        {
+            let size = v * blocks;
+            let coupled = |i: usize, j: usize| dense || i.abs_diff(j) <= 1;
+            let mut dense_a = vec![0.0; size * size];
+            for r in 0..size {
+                for c in 0..r {
+                    if coupled(r / v, c / v) {
+                        let value = ((r * 7 + c * 13) % 11) as f64 / 11.0 - 0.5;
+                        dense_a[r * size + c] = value;
+                        dense_a[c * size + r] = value;
+                    }
+                }
+            }
+            for r in 0..size {
+                dense_a[r * size + r] =
+                    1.0 + (0..size).map(|c| dense_a[r * size + c].abs()).sum::<f64>();
+            }
+            let (mut pairs, mut values) = (Vec::new(), Vec::new());
+            for r in 0..size {
+                for c in 0..=r {
+                    if dense_a[r * size + c] != 0.0 {
+                        pairs.push(Pair { row: r, col: c });
+                        values.push(dense_a[r * size + c]);
+                    }
+                }
+            }
+            let b: Vec<f64> = (0..size).map(|k| (k % 5) as f64 - 2.0).collect();
+            for layout in [Layout::Auto, Layout::Blocks(v)] {
+                let lower = Lower::new(size, &pairs, layout);
+                let supernodal = read_side(&lower.ordering.cholesky) == Side::Lower;
+                let expected = if layout == Layout::Auto { auto } else { as_blocks };
+                assert_eq!(supernodal, expected, "{layout:?}, {blocks} blocks, dense {dense}");
+                let mut x = b.clone();
+                lower.factor(&values).unwrap().solve(&mut x, 1);
+                for r in 0..size {
+                    let ax: f64 = (0..size).map(|c| dense_a[r * size + c] * x[c]).sum();
+                    assert!((ax - b[r]).abs() < 1e-10, "{layout:?}, dense {dense}: row {r}");
+                }
+            }
         }
     }
 }
