@@ -189,7 +189,7 @@ test("an exercise opens, sets its figure, and its answer is the one the figure t
   const { page, context, problems } = await open("learn.html");
   // One more digit of ε: T* grows by about ln 10.
   const digits = page.locator("details.exercise", { hasText: "one more digit" });
-  await digits.locator("summary").click();
+  await digits.locator(":scope > summary").click();
   await digits.locator("a.set").click();
   await page.waitForURL(/digits=6/);
   const want = predicted(1e-6);
@@ -202,13 +202,13 @@ test("an exercise opens, sets its figure, and its answer is the one the figure t
   assert.equal(await page.getAttribute("#time", "max"), "15");
   // Halfway along the arc: φ = 30° at t = ln(tan 30° / tan 15°) = 0.768.
   const half = page.locator("details.exercise", { hasText: "halfway along the arc" });
-  await half.locator("summary").click();
+  await half.locator(":scope > summary").click();
   await half.locator("a.set").click();
   assert.equal(await text(page, "#readout"), "t = 0.77 / 15.00");
   assert.equal(Math.log(Math.tan(Math.PI / 6) / Math.tan(Math.PI / 12)).toFixed(3), "0.768");
   assert.match(await text(page, "#kli-out"), new RegExp(`^At t = 0\\.77, φ = ${phiDegrees(0.77).toFixed(2)}°, s = 0\\.50`));
   // Gimbal lock: the axes 0° apart; a full turn: q = −1; NLERP behind SLERP at s = 0.25.
-  await page.locator("details.exercise", { hasText: "pitch 90°" }).locator("summary").click();
+  await page.locator("details.exercise", { hasText: "pitch 90°" }).locator(":scope > summary").click();
   await page.locator("details.exercise", { hasText: "pitch 90°" }).locator("a.set").click();
   assert.equal(await text(page, "#lock-out"), "0.0°");
   await page.click("a.set[href='?angle=360#cover']");
@@ -216,18 +216,35 @@ test("an exercise opens, sets its figure, and its answer is the one the figure t
   assert.equal(await page.getAttribute("[name=angle]", "aria-valuetext"), "360° about z");
   // A turn by 120° about the diagonal, which the figure does not show at load (a quarter turn
   // about z, tested above): cos 60° + sin 60° (i + j + k)/√3, each part 0.5.
+  // Opening the question does not give its answer away: that takes a second press.
   const turn = page.locator("details.exercise", { hasText: "120° about the diagonal" });
-  await turn.locator("summary").click();
+  await turn.locator(":scope > summary").click();
+  const answer = turn.locator("details.answer p");
+  assert.equal(await answer.isVisible(), false, "the answer shows as the question opens");
+  // Its link sets the figure above, off screen once the question is read, and brings it in.
+  await page.evaluate(() => document.querySelector("#turn details.exercise")?.scrollIntoView({ block: "start" }));
+  const figureOut = () => page.evaluate(() => {
+    const box = document.querySelector("#turn figure")?.getBoundingClientRect();
+    return !box || box.bottom < 0 || box.top > innerHeight;
+  });
+  assert.equal(await figureOut(), true, "the figure should be off screen before the link");
   await turn.locator("a.set").click();
+  await page.waitForFunction(() => {
+    const box = document.querySelector("#turn figure")?.getBoundingClientRect();
+    return box && box.bottom > 0 && box.top < innerHeight;
+  });
   const part = (Math.sin(Math.PI / 3) / Math.sqrt(3)).toFixed(3);
   assert.equal(await text(page, "#turn-out"), `q = ${Math.cos(Math.PI / 3).toFixed(3)} + ${part} i + ${part} j + ${part} k`);
-  await page.locator("details.exercise", { hasText: "s = 0.25" }).locator("summary").click();
+  await turn.locator("details.answer > summary").click();
+  assert.match(await answer.textContent(), /q = 0\.5 \+ 0\.5 i \+ 0\.5 j \+ 0\.5 k/);
+  assert.equal(await answer.isVisible(), true);
+  await page.locator("details.exercise", { hasText: "s = 0.25" }).locator(":scope > summary").click();
   await page.locator("details.exercise", { hasText: "s = 0.25" }).locator("a.set").click();
   const nlerp = (Math.atan2(0.25 * Math.sin(Math.PI / 3), 0.75 + 0.25 * Math.cos(Math.PI / 3)) * 180) / Math.PI;
   assert.equal(await text(page, "#slerp-out"), `At s = 0.25 SLERP is 15.00° along the arc, NLERP ${nlerp.toFixed(2)}°.`);
   // A roll leaves the Hopf point where it was.
   const before = await text(page, "#hopf-out");
-  await page.locator("details.exercise", { hasText: "roll by 180°" }).locator("summary").click();
+  await page.locator("details.exercise", { hasText: "roll by 180°" }).locator(":scope > summary").click();
   await page.locator("details.exercise", { hasText: "roll by 180°" }).locator("a.set").click();
   const after = await text(page, "#hopf-out");
   assert.equal(after.slice(0, after.indexOf(";")), before.slice(0, before.indexOf(";")));
@@ -308,7 +325,7 @@ test("the turning rate through the keyframes: drawn, quoted as the smoothness sl
   assert.match(svg, /^<svg[^]*\|ω\(t\)\|, the turning rate[^]*KLI chain, smoothness 0\.05/);
   // The exercise: predict the jump at k2, where |ω| is the same on both sides; its link sets 0.
   const exercise = page.locator("details.exercise", { hasText: "Does ω jump at k2" });
-  await exercise.locator("summary").click();
+  await exercise.locator(":scope > summary").click();
   await exercise.locator("a.set").click();
   await page.waitForURL(/smooth=0(&|#|$)/);
   assert.equal(await page.inputValue("[name=smoothness]"), "0");
@@ -343,7 +360,7 @@ test("the swarm: 200 rotations gather at K = 1; its exercise's push, K = −1, b
   const gathered = await figure("1");
   assert.ok(Math.abs(gathered - pull.end) < 2e-3, `${gathered} against ${pull.end}`);
   const exercise = page.locator("details.exercise", { hasText: "Do they fly apart" });
-  await exercise.locator("summary").click();
+  await exercise.locator(":scope > summary").click();
   await exercise.locator("button.set-figure").click();
   const balanced = await figure("-1");
   assert.ok(Math.abs(balanced - push.end) < 1e-3, `${balanced} against ${push.end}`);

@@ -176,6 +176,16 @@ function playFromStart(/** @type {Host} */ host) {
   if (!page.playing) page.play();
 }
 
+/** The last figure before `element` in its section, or null. */
+function figureBefore(/** @type {Element | null} */ element) {
+  const figures = element?.closest("section")?.querySelectorAll("figure") ?? [];
+  let last = null;
+  for (const figure of figures) {
+    if (element && figure.compareDocumentPosition(element) & Node.DOCUMENT_POSITION_FOLLOWING) last = figure;
+  }
+  return last;
+}
+
 /** The exercises' links, the buttons of the clock, printing with the answers, and the figures'
  *  own start as they come into view. */
 function wireTour(/** @type {Host} */ host) {
@@ -187,6 +197,13 @@ function wireTour(/** @type {Host} */ host) {
       if (Object.keys(state).length) host.apply({ ...host.state, ...state });
       if (a.dataset.t !== undefined) host.seek(Number(a.dataset.t));
       if (a.dataset.play) playFromStart(host);
+      // An exercise's link changes the figure above it, often off screen by then: bring it in.
+      const figure = a.closest("details.exercise") ? figureBefore(a.closest("details.exercise")) : null;
+      const box = figure?.getBoundingClientRect();
+      if (figure && box && (box.bottom < 0 || box.top > innerHeight)) {
+        const still = matchMedia("(prefers-reduced-motion: reduce)").matches;
+        figure.scrollIntoView({ block: "center", behavior: still ? "auto" : "smooth" });
+      }
     });
   }
   for (const button of document.querySelectorAll("button.play-from")) {
@@ -213,6 +230,10 @@ function wireTour(/** @type {Host} */ host) {
       const item = document.createElement("li");
       const question = Object.assign(document.createElement("p"), { className: "question", textContent: summary?.textContent ?? "" });
       item.append(question, ...[...exercise.children].filter((child) => child !== summary).map((child) => child.cloneNode(true)));
+      // On paper the answer needs no press: its box gives way to what it holds.
+      for (const box of item.querySelectorAll("details.answer")) {
+        box.replaceWith(...[...box.children].filter((child) => child.tagName !== "SUMMARY"));
+      }
       // The copies are for paper: no second set of ids, no controls.
       for (const node of item.querySelectorAll("[id]")) node.removeAttribute("id");
       for (const node of item.querySelectorAll("a.set, button")) node.remove();

@@ -45,7 +45,8 @@ export const page = {
     ovaj vodič ga zove nagib, a „valjanje” čuva za dodatni okret oko nosa u odjeljku 5): <var>R</var> = <var>R<sub>z</sub></var>(skretanje)
     <var>R<sub>y</sub></var>(propinjanje) <var>R<sub>x</sub></var>(nagib). Pomjeri klizač propinjanja ispod prema 90° i
     gledaj kako se osa skretanja i osa nagiba približavaju. Na 90° one su jedna prava: skretanje i nagib sada rade
-    isto i jedan stepen slobode je izgubljen. To je <dfn id="def-gimbal">blokada kardana</dfn> (engl. gimbal lock), i
+    isto i jedan stepen slobode je izgubljen. To je <dfn id="def-gimbal">blokada kardana</dfn> (engl. gimbal lock; kardan je sklop ugniježđenih prstenova, od
+    kojih se svaki okreće oko jedne ose, koji drži kompas ili kameru), i
     svaki izbor tri ugla negdje naiđe na nju.`,
   "care.legend1": "Eulerovi uglovi",
   "care.p3":
@@ -54,6 +55,7 @@ export const page = {
     `Šta bismo htjeli umjesto toga: malo brojeva, jedan jednostavan uslov, bez blokade, proizvod za izvođenje jednog
     okreta za drugim i čist način da se ide <em>između</em> dvije rotacije. Kvaternioni daju sve to, i zato su ih
     preuzeli simulatori letenja i računarska grafika, kako rad podsjeća u svom uvodu.`,
+  "exercise.answer": "Prikaži odgovor",
   "care.question1": "Predvidi, pa provjeri: pri propinjanju od 90°, šta rade skretanje i nagib?",
   "care.p5":
     `Prvo pogodi. Zatim <a class="set" href="?pitch=90#care" data-state='{"pitch":90}'>postavi propinjanje na 90°</a>
@@ -79,8 +81,11 @@ export const page = {
     j + <var>u<sub>z</sub></var> k),`,
   "turn.p4":
     `i on okreće vektor <var>v</var>, zapisan kao <var>v<sub>x</sub></var> i + <var>v<sub>y</sub></var> j +
-    <var>v<sub>z</sub></var> k, u <var>q</var> <var>v</var> <var>q̄</var>. Ugao je prepolovljen jer <var>q</var>
-    djeluje dvaput, po jednom sa svake strane. Jedan okret za drugim je proizvod: <var>q</var>₂<var>q</var>₁ prvo
+    <var>v<sub>z</sub></var> k, u <var>q</var> <var>v</var> <var>q̄</var>. Provjeri to na prvom okretu sa slike, 90° oko <var>z</var>:
+    <var>q</var> = (1 + k)/√2 i <var>q̄</var> = (1 − k)/√2. Tada je <var>q</var> i = (i + ki)/√2 = (i + j)/√2, a
+    (i + j)(1 − k)/2 = (i − ik + j − jk)/2 = (i + j + j − i)/2 = j: nos, <var>x</var>, ide u <var>y</var>, četvrtina
+    punog okreta. Svaki od dva činioca, <var>q</var> slijeva i <var>q̄</var> zdesna, okreće za <var>θ</var>/2, i
+    zato <var>q</var> nosi pola ugla. Jedan okret za drugim je proizvod: <var>q</var>₂<var>q</var>₁ prvo
     okreće za <var>q</var>₁. Četiri broja i jedan uslov, |<var>q</var>| = 1, a ako ga zaokruživanje pokvari, dijeljenje <var>q</var> sa
     |<var>q</var>| ga vraća.`,
   "turn.caption1":
@@ -114,10 +119,14 @@ export const page = {
     <dfn id="def-double-cover">dvostruko natkrivanje</dfn>, i metoda na rotacijama mora ili zanemariti predznak ili
     reći koji uzima.`,
   "cover.p3":
-    `Ugao <var>φ</var> između dva jedinična kvaterniona, cos <var>φ</var> = <var>p</var>·<var>r</var> =
-    <var>p</var>₁<var>r</var>₁ + <var>p</var>₂<var>r</var>₂ + <var>p</var>₃<var>r</var>₃ +
-    <var>p</var>₄<var>r</var>₄, mjeri njihovu udaljenost: rotacija od <var>p</var> do <var>r</var> okreće za
-    2<var>φ</var>. Najkraći put po sferi je luk velikog kruga (presjeka sfere i ravni kroz njen centar), <dfn id="def-geodesic">geodezijska linija</dfn>.
+    `Čitaj svaki jedinični kvaternion <var>a</var> + <var>b</var> i + <var>c</var> j + <var>d</var> k kao vektor
+    (<var>a</var>, <var>b</var>, <var>c</var>, <var>d</var>) u R⁴. Za dva takva, <var>p</var> i <var>r</var>, ugao
+    <var>φ</var> između njih je uobičajeni, iz skalarnog proizvoda dva četverodimenzionalna vektora: cos
+    <var>φ</var> = <var>p</var>·<var>r</var>. On mjeri koliko su rotacije udaljene. Okret koji vodi <var>p</var> u
+    <var>r</var> je <var>r</var> <var>p̄</var>, a njegov realni dio je <var>p</var>·<var>r</var> = cos
+    <var>φ</var>; po odjeljku 2 realni dio cos(<var>θ</var>/2) znači okret za <var>θ</var>, pa rotacija od
+    <var>p</var> do <var>r</var> okreće za 2<var>φ</var>. (Kad je <var>p</var>·<var>r</var> &lt; 0, 2<var>φ</var>
+    je više od 180°, a ista rotacija je okret za 360° − 2<var>φ</var> na drugu stranu.) Najkraći put po sferi je luk velikog kruga (presjeka sfere i ravni kroz njen centar), <dfn id="def-geodesic">geodezijska linija</dfn>.
     Između dvije rotacije postoje dva takva luka, do <var>r</var> i do −<var>r</var>; „najkraći put” bira onaj za
     koji je <var>p</var>·<var>r</var> ≥ 0. <a href="#kli">KLI</a>, metoda iz rada (odjeljak 7), ne bira: kad je
     <var>p</var>·<var>r</var> &lt; 0, teče dužim putem, pa prvo promijeni predznak od <var>r</var> tako da bude
@@ -154,7 +163,7 @@ export const page = {
     odjeljku 7.`,
   "slerp.caption1":
     `Luk od <var>p</var> do <var>r</var>; oznake na svakih 0.1 od <var>s</var>, <span class="slerp">SLERP</span>-ove
-    spolja, NLERP-ove unutra; tetiva isprekidano.`,
+    spolja, NLERP-ove unutra; tetiva, duž od <var>p</var> do <var>r</var>, isprekidano.`,
   "slerp.legend1": "SLERP",
   "slerp.p4": `<output id="slerp-out">Pri s = 0.50 SLERP je 30.00° duž luka, NLERP 30.00°.</output>`,
   "slerp.question1": "Predvidi, pa provjeri: pri s = 0.25, je li NLERP ispred SLERP-a ili iza njega?",
@@ -177,7 +186,8 @@ export const page = {
     <var>h</var>(<var>p</var>) = (−1, 0, 0) i <var>h</var>(<var>r</var>) = (0, 1, 0).`,
   "hopf.p4":
     `Ono što ne može pokazati je valjanje oko nosa. Ovdje je valjanje <var>ρ</var> novi okret dodan okretu <var>q</var>
-    iz odjeljka 2: ista vrsta okreta kao nagib iz odjeljka 1, ali ne jedan od tri Eulerova ugla. Okreni avion oko
+    iz odjeljka 2. Okreće oko nosa, kao nagib iz odjeljka 1, ali se dodaje povrh okreta <var>q</var> umjesto da
+    bude jedan od tri ugla. Okreni avion oko
     nosa klizačem ispod: krilo se okreće, tačka ostaje. Zaokrenuta rotacija je <var>q</var> (cos(<var>ρ</var>/2) +
     sin(<var>ρ</var>/2) i), i može se čitati na dva načina. Po pravilu iz odjeljka 2 (desni činilac okreće prvi),
     ona se prvo valja oko ose <var>x</var> svijeta, gdje nos počinje, pa se okreće za <var>q</var>. Ili se prvo okreće
@@ -203,13 +213,17 @@ export const page = {
   "kuramoto.p1":
     `Krijesnice bljeskaju zajedno, ćelije predvodnika srčanog ritma kucaju zajedno. <dfn id="def-kuramoto">Kuramotov
     model</dfn> (Kuramoto, 1975) je najjednostavniji opis: <var>N</var> oscilatora s fazama <var>θ<sub>i</sub></var>
-    na kružnici, svaki sa svojom vlastitom frekvencijom <var>ω<sub>i</sub></var>, svaki privlačen prema ostalima:`,
+    na kružnici, svaki sa svojom vlastitom frekvencijom <var>ω<sub>i</sub></var>, svaki privlačen prema ostalima. Faza je mjesto
+    na kojem je oscilator u svom ciklusu, jedan ugao; vlastita frekvencija je brzina kojom se taj ugao okreće kad
+    ga ništa ne privlači. Ispod, crtica znači brzinu promjene u vremenu, <var>θ</var>′ =
+    d<var>θ</var>/d<var>t</var>, a suma ide po svakom <var>j</var>:`,
   "kuramoto.p2":
     `<var>θ<sub>i</sub></var>′ = <var>ω<sub>i</sub></var> + (<var>K</var>/<var>N</var>) Σ<sub><var>j</var></sub>
     sin(<var>θ<sub>j</sub></var> − <var>θ<sub>i</sub></var>).`,
   "kuramoto.p3":
     `Koliko se slažu, mjeri <dfn id="def-order">parametar reda</dfn>: dužina <var>R</var> njihove prosječne tačke,
-    (1/<var>N</var>) Σ e<sup>i<var>θ<sub>j</sub></var></sup>; 0 kad su raštrkani, 1 kad su usklađeni.
+    (1/<var>N</var>) Σ e<sup>i<var>θ<sub>j</sub></var></sup>; 0 kad su raštrkani, 1 kad su usklađeni (s različitim vlastitim frekvencijama ustali se malo ispod 1: brži
+    ostaju malo ispred).
     Ovdje je i imaginarna jedinica kompleksnih brojeva, i² = −1, a e<sup>i<var>θ</var></sup> = cos <var>θ</var> + i
     sin <var>θ</var> je tačka pod uglom <var>θ</var> na jediničnoj kružnici kompleksne ravni. To nije komponenta i
     kvaterniona iz odjeljka 2: kvaternion ima tri takve jedinice, i, j i k, a na S³ niže se usrednjavaju sami
@@ -222,7 +236,7 @@ export const page = {
     <strong>Pusti od t = 0</strong>.`,
   "kuramoto.caption1":
     `Faze na svojoj kružnici, strelica je njihova prosječna tačka; pored je <var>R</var>(<var>t</var>) do kraja trake
-    vremena (<var>t</var> = 12; kasnije ako se tolerancija <var>ε</var> iz odjeljka 7, tamo definisana, smanji), s označenim prikazanim trenutkom.`,
+    vremena, s označenim prikazanim trenutkom.`,
   "kuramoto.legend1": "Kuramotove faze",
   "kuramoto.p4": `<output id="phases-out">Pri t = 0.00, R = 0.049.</output>`,
   "kuramoto.p5":
@@ -275,7 +289,9 @@ export const page = {
   "kli.p3":
     `Za jedinični <var>q</var> je <var>q</var> <var>r̄</var> <var>q</var> = 2(<var>q</var>·<var>r</var>)<var>q</var>
     − <var>r</var>, pa je ovo jednostavno <var>q</var>′ = <var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>.
-    Slika pokazuje zašto to funkcioniše. (<var>q</var>·<var>r</var>)<var>q</var> je dio vektora <var>r</var> duž
+    (Zašto: <var>q</var> <var>r̄</var> i <var>r</var> <var>q̄</var> su konjugovani jedan drugom, pa je njihov zbir
+    dvostruki realni dio, <var>q</var> <var>r̄</var> + <var>r</var> <var>q̄</var> = 2(<var>q</var>·<var>r</var>);
+    pomnoži zdesna sa <var>q</var> i iskoristi <var>q̄</var> <var>q</var> = 1.) Slika pokazuje zašto to funkcioniše. (<var>q</var>·<var>r</var>)<var>q</var> je dio vektora <var>r</var> duž
     <var>q</var>; ostatak je okomit na <var>q</var>, tangenta sfere. Brzina okomita na <var>q</var> čuva
     |<var>q</var>| = 1, jer je d|<var>q</var>|²/d<var>t</var> = 2 <var>q</var>·<var>q</var>′ = 0. I leži u ravni
     vektora <var>q</var> i <var>r</var>, pa <var>q</var> nikad ne napušta veliki krug kroz <var>p</var> i
@@ -290,7 +306,8 @@ export const page = {
     `<strong>Iskrivljenje vremena.</strong> Neka je <var>φ</var>(<var>t</var>) ugao između <var>q</var>(<var>t</var>) i <var>r</var>.
     Tada je cos <var>φ</var> = <var>q</var>·<var>r</var>, a njegova brzina
     promjene je <var>q</var>′·<var>r</var> = 1 − (<var>q</var>·<var>r</var>)² = sin²<var>φ</var>. Ona je također
-    −sin <var>φ</var> · <var>φ</var>′, pa je <var>φ</var>′ = −sin <var>φ</var>, čije je rješenje tan(<var>φ</var>(<var>t</var>)/2) =
+    −sin <var>φ</var> · <var>φ</var>′, pa je <var>φ</var>′ = −sin <var>φ</var>. Promjenljive se razdvajaju, a ∫ d<var>φ</var>/sin <var>φ</var> = ln
+    tan(<var>φ</var>/2), pa je rješenje tan(<var>φ</var>(<var>t</var>)/2) =
     tan(<var>φ</var>₀/2) e<sup>−<var>t</var></sup>. Dakle, <var>q</var>(<var>t</var>) je tačka SLERP-a za
     <var>s</var>(<var>t</var>) = 1 − <var>φ</var>(<var>t</var>)/<var>φ</var>₀: tačno isti put kao SLERP, ali drugim
     tempom. Ovo <var>s</var>(<var>t</var>) je KLI-jevo <em>iskrivljenje vremena</em>: koliko je KLI odmakao duž
@@ -300,11 +317,12 @@ export const page = {
     samog kvaterniona <var>q</var> po sferi na početku, |<var>q</var>′|, jednaka je sin <var>φ</var>₀.)`,
   "kli.caption2":
     `Iskrivljenje vremena <var>s</var>(<var>t</var>) za <span class="kli">KLI</span> naspram <span class="slerp">SLERP</span>-a izvedenog
-    za isto vrijeme, <var>t</var>/<var>T</var>.`,
+    za isto vrijeme, <var>t</var>/<var>T</var>, gdje je <var>T</var> trenutak u kojem se Algoritam 1 zaustavlja (ispod).`,
   "kli.p6":
     `<dfn id="def-algorithm-1">Algoritam 1</dfn> iz rada računa tok korak po korak: počni od <var>q</var> =
     <var>p</var>; napravi korak dužine <var>δ</var> u vremenu (ovdje metodom RK4, odjeljak 8); stani čim je
-    ‖<var>r</var> − <var>q</var>‖ &lt; <var>ε</var>. Njegova dva parametra su tolerancija <dfn
+    ‖<var>r</var> − <var>q</var>‖ &lt; <var>ε</var> (dvostruke crte su dužina vektora u R⁴, ovdje
+    četverodimenzionalnog vektora <var>r</var> − <var>q</var>). Njegova dva parametra su tolerancija <dfn
     id="def-epsilon"><var>ε</var></dfn>, koliko blizu je dovoljno blizu, i vremenski korak <dfn
     id="def-delta"><var>δ</var></dfn>. Rad koristi <var>ε</var> = 10⁻⁵ i <var>δ</var> = 0.01 i navodi <var>T</var> =
     11.66. Odakle to dolazi: ‖<var>r</var> − <var>q</var>‖ = 2 sin(<var>φ</var>/2), pa tok prvi put dođe unutar
@@ -350,11 +368,13 @@ export const page = {
   "integrators.title1": `<span class="number">8</span> Integratori i odstupanje`,
   "integrators.p1":
     `Računar prati tok u koracima dužine <var>h</var> u vremenu: isto što i <var>δ</var> Algoritma 1 u odjeljku 7,
-    ovdje nazvano <var>h</var> jer ova slika ima svoj klizač. <strong>Eulerov</strong> korak, <var>q</var> +
+    ovdje nazvano <var>h</var> jer ova slika ima svoj klizač. <strong>Eulerov</strong> korak (isti Euler kao kod uglova i ose, njegova treća
+    ideja), <var>q</var> +
     <var>h</var> <var>q</var>′, ide duž tangente, a korak po tangenti uvijek napušta sferu: |<var>q</var> +
     <var>h</var><var>v</var>|² = 1 + <var>h</var>²|<var>v</var>|² kad je <var>v</var> okomit na <var>q</var>. <dfn
     id="def-rk4">RK4</dfn>, klasična Runge–Kutta metoda četvrtog reda, računa izvod četiri puta u jednom koraku i
-    uzima njihov ponderisani prosjek, (<var>k</var>₁ + 2<var>k</var>₂ + 2<var>k</var>₃ + <var>k</var>₄)/6; njena greška opada kao <var>h</var>⁴, a tako i njeno odstupanje od sfere.
+    uzima njihov ponderisani prosjek, (<var>k</var>₁ + 2<var>k</var>₂ + 2<var>k</var>₃ + <var>k</var>₄)/6, gdje su <var>k</var>₁ do <var>k</var>₄
+    četiri nagiba (nije riječ o kvaternionskoj jedinici k); njena greška opada kao <var>h</var>⁴, a tako i njeno odstupanje od sfere.
     <strong>Geodezijski</strong> korak uzima prirast metode RK4 kao okret duž velikog kruga, pa je |<var>q</var>| =
     1 po konstrukciji. Ovaj tok, zapisan kao <var>q</var>′ = <var>r</var> − (<var>q</var>·<var>r</var>)<var>q</var>
     (oblik koji ova stranica integrira; izvan sfere razlikuje se od −½(<var>q</var> <var>r̄</var> <var>q</var> −
@@ -365,7 +385,9 @@ export const page = {
     ne raste unedogled; kod drugih tokova može.`,
   "integrators.caption1":
     `| |<var>q</var>| − 1 | na primjeru iz rada za svaki integrator s korakom <var>h</var>, na logaritamskoj skali
-    (ono što je ispod 10⁻¹⁷ crta se na 10⁻¹⁷); izabrani je podebljan.`,
+    (ono što je ispod 10⁻¹⁷ crta se na 10⁻¹⁷); izabrani je podebljan. Pri kraju Eulerova linija može pasti ispod
+    linije RK4: s velikim korakom Euler ide ispred pravog toka i stiže ranije, a <var>q</var> koji se skoro
+    zaustavio više ne odstupa. To je greška u vremenu, a ne tačnost.`,
   "integrators.legend1": "Integratori",
   "integrators.p2":
     `<output id="drift-out">Najveće odstupanje pri h = 0.5: Euler 9.0e-2, RK4 1.5e-3, geodezijski 2.2e-16.</output>`,
@@ -524,7 +546,8 @@ export const page = {
     mjerenje razlikuje od trenutnog rješenja: plavo ispod 2°, tirkizno 2–5°, zeleno 5–15°, narandžasto 15–45°,
     crveno 45° ili više; pogrešna grana je isprekidana. Svaki čvor nosi iglu: svoju grešku (okret od svoje prave
     rotacije do rotacije iz rješenja, nakon jednog zajedničkog okreta koji cijelo rješenje najbolje poravna s
-    istinom) primijenjenu na osu <var>x</var> tijela, gledano odozgo. Igla pokazuje desno kad se čvor slaže s
+    istinom; mjerenja između parova ne mogu razlikovati okret svih čvorova zajedno, pa je rješenje određeno samo do
+    tog jednog okreta) primijenjenu na osu <var>x</var> tijela, gledano odozgo. Igla pokazuje desno kad se čvor slaže s
     istinom.`,
   "many.question1":
     `Predvidi, pa provjeri: na slici usrednjavanja, kad je pola mjerenja izuzetaka, koje sredine ostaju blizu istine?`,

@@ -47,7 +47,8 @@ export const page = {
     angle the roll; this tour calls it bank, and keeps “roll” for the extra turn about the nose in section 5): <var>R</var> = <var>R<sub>z</sub></var>(yaw)
     <var>R<sub>y</sub></var>(pitch) <var>R<sub>x</sub></var>(bank). Move the pitch towards 90° below and watch the
     yaw axis and the bank axis close in on each other. At 90° they are one line: yaw and bank now do the same thing
-    and one freedom is gone. That is <dfn id="def-gimbal">gimbal lock</dfn>, and every choice of three angles runs into
+    and one freedom is gone. That is <dfn id="def-gimbal">gimbal lock</dfn> (a gimbal is a set of nested rings, each turning about one
+    axis, that holds a compass or a camera), and every choice of three angles runs into
     it somewhere.`,
   "care.legend1": "Euler angles",
   "care.p3":
@@ -56,6 +57,7 @@ export const page = {
     `What we want instead: few numbers, one easy condition, no lock, a product for doing one turn after another, and
     a clean way to go <em>between</em> two rotations. Quaternions give all of that, which is why aircraft simulators
     and computer graphics took them up, as the paper recalls in its introduction.`,
+  "exercise.answer": "Show the answer",
   "care.question1": "Predict, then check: at pitch 90°, what do yaw and bank do?",
   "care.p5":
     `Make your guess first. Then <a class="set" href="?pitch=90#care" data-state='{"pitch":90}'>set the pitch to
@@ -80,8 +82,11 @@ export const page = {
     j + <var>u<sub>z</sub></var> k),`,
   "turn.p4":
     `and it turns a vector <var>v</var>, written as <var>v<sub>x</sub></var> i + <var>v<sub>y</sub></var> j +
-    <var>v<sub>z</sub></var> k, into <var>q</var> <var>v</var> <var>q̄</var>. The angle is halved because
-    <var>q</var> acts twice, once on each side. One turn after another is a product: <var>q</var>₂<var>q</var>₁
+    <var>v<sub>z</sub></var> k, into <var>q</var> <var>v</var> <var>q̄</var>. Try it on the figure's first turn, 90° about <var>z</var>:
+    <var>q</var> = (1 + k)/√2 and <var>q̄</var> = (1 − k)/√2. Then <var>q</var> i = (i + ki)/√2 = (i + j)/√2, and
+    (i + j)(1 − k)/2 = (i − ik + j − jk)/2 = (i + j + j − i)/2 = j: the nose, <var>x</var>, goes to <var>y</var>, a
+    quarter turn. Each of the two factors, <var>q</var> on the left and <var>q̄</var> on the right, turns by
+    <var>θ</var>/2, which is why <var>q</var> holds half the angle. One turn after another is a product: <var>q</var>₂<var>q</var>₁
     turns by <var>q</var>₁ first. Four numbers and one condition, |<var>q</var>| = 1, and if rounding spoils it, dividing <var>q</var> by
     |<var>q</var>| restores it.`,
   "turn.caption1":
@@ -116,10 +121,14 @@ export const page = {
     <dfn id="def-double-cover">double cover</dfn>, and a method on rotations must either ignore the sign or say which
     one it takes.`,
   "cover.p3":
-    `The angle <var>φ</var> between two unit quaternions, cos <var>φ</var> = <var>p</var>·<var>r</var> =
-    <var>p</var>₁<var>r</var>₁ + <var>p</var>₂<var>r</var>₂ + <var>p</var>₃<var>r</var>₃ +
-    <var>p</var>₄<var>r</var>₄, measures them: the rotation from <var>p</var> to <var>r</var> turns by
-    2<var>φ</var>. The shortest way along the sphere is an arc of a great circle (where the sphere meets a plane through its
+    `Read each unit quaternion <var>a</var> + <var>b</var> i + <var>c</var> j + <var>d</var> k as the vector
+    (<var>a</var>, <var>b</var>, <var>c</var>, <var>d</var>) of R⁴. For two of them, <var>p</var> and <var>r</var>,
+    the angle <var>φ</var> between them is the usual one, from the dot product of the two four-vectors: cos
+    <var>φ</var> = <var>p</var>·<var>r</var>. It measures how far apart the rotations are. The turn that takes
+    <var>p</var> to <var>r</var> is <var>r</var> <var>p̄</var>, whose real part is <var>p</var>·<var>r</var> = cos
+    <var>φ</var>; by section 2 a real part cos(<var>θ</var>/2) is a turn by <var>θ</var>, so the rotation from
+    <var>p</var> to <var>r</var> turns by 2<var>φ</var>. (When <var>p</var>·<var>r</var> &lt; 0, 2<var>φ</var> is
+    more than 180°, and the same rotation is the turn by 360° − 2<var>φ</var> the other way.) The shortest way along the sphere is an arc of a great circle (where the sphere meets a plane through its
     centre), a <dfn
     id="def-geodesic">geodesic</dfn>. Between two rotations there are two such arcs, to <var>r</var> and to
     −<var>r</var>; “the shortest path” takes the one with <var>p</var>·<var>r</var> ≥ 0. <a href="#kli">KLI</a>, the paper's
@@ -157,7 +166,7 @@ export const page = {
     section 7.`,
   "slerp.caption1":
     `The arc from <var>p</var> to <var>r</var>; ticks every 0.1 of <var>s</var>, <span class="slerp">SLERP</span>'s
-    outside, NLERP's inside; the chord dashed.`,
+    outside, NLERP's inside; the chord, the straight segment from <var>p</var> to <var>r</var>, dashed.`,
   "slerp.legend1": "SLERP",
   "slerp.p4": `<output id="slerp-out">At s = 0.50 SLERP is 30.00° along the arc, NLERP 30.00°.</output>`,
   "slerp.question1": "Predict, then check: at s = 0.25, is NLERP ahead of SLERP or behind it?",
@@ -180,7 +189,8 @@ export const page = {
     example, <var>h</var>(<var>p</var>) = (−1, 0, 0) and <var>h</var>(<var>r</var>) = (0, 1, 0).`,
   "hopf.p4":
     `What it cannot show is a roll about the nose. Here the roll <var>ρ</var> is a new turn added to section 2's turn
-    <var>q</var>: the same kind of turn as section 1's bank, but not one of three Euler angles. Roll the aircraft
+    <var>q</var>. It turns about the nose, as section 1's bank does, but it is added on top of <var>q</var> rather
+    than being one of three angles. Roll the aircraft
     below: the wing goes round, the dot stays. The rolled rotation is <var>q</var> (cos(<var>ρ</var>/2) +
     sin(<var>ρ</var>/2) i), and it reads two ways. By section 2's rule (the right-hand factor turns first), it rolls
     about the world's <var>x</var> axis, where the nose starts, and then turns by <var>q</var>. Or it turns by
@@ -206,13 +216,17 @@ export const page = {
   "kuramoto.p1":
     `Fireflies flash together, pacemaker cells beat together. The <dfn id="def-kuramoto">Kuramoto model</dfn>
     (Kuramoto, 1975) is the simplest account: <var>N</var> oscillators with phases <var>θ<sub>i</sub></var> on a
-    circle, each with its own natural frequency <var>ω<sub>i</sub></var>, each pulled towards the others:`,
+    circle, each with its own natural frequency <var>ω<sub>i</sub></var>, each pulled towards the others. A phase is
+    where an oscillator is in its cycle, an angle; its natural frequency is how fast that angle turns when nothing
+    pulls it. Below, a prime means the rate of change in time, <var>θ</var>′ = d<var>θ</var>/d<var>t</var>, and the
+    sum runs over every <var>j</var>:`,
   "kuramoto.p2":
     `<var>θ<sub>i</sub></var>′ = <var>ω<sub>i</sub></var> + (<var>K</var>/<var>N</var>) Σ<sub><var>j</var></sub>
     sin(<var>θ<sub>j</sub></var> − <var>θ<sub>i</sub></var>).`,
   "kuramoto.p3":
     `How much they agree is the <dfn id="def-order">order parameter</dfn>: the length <var>R</var> of their average
-    point, (1/<var>N</var>) Σ e<sup>i<var>θ<sub>j</sub></var></sup>; 0 when they are scattered, 1 when in step.
+    point, (1/<var>N</var>) Σ e<sup>i<var>θ<sub>j</sub></var></sup>; 0 when they are scattered, 1 when in step (with different natural frequencies it levels off a little below 1:
+    the fast ones stay a little ahead).
     Here i is the complex unit, i² = −1, and e<sup>i<var>θ</var></sup> = cos <var>θ</var> + i sin <var>θ</var> is
     the point at angle <var>θ</var> on the unit circle of the complex plane. It is not the quaternion part i of
     section 2: a quaternion has three such units, i, j and k, and on S³ below the average is taken of the quaternions
@@ -225,7 +239,7 @@ export const page = {
     from t = 0</strong>.`,
   "kuramoto.caption1":
     `The phases on their circle, the arrow their average point; beside it <var>R</var>(<var>t</var>) up to the
-    end of the time bar (<var>t</var> = 12; later if section 7's tolerance <var>ε</var>, defined there, is made smaller), the time on show marked.`,
+    end of the time bar, the time on show marked.`,
   "kuramoto.legend1": "Kuramoto phases",
   "kuramoto.p4": `<output id="phases-out">At t = 0.00, R = 0.049.</output>`,
   "kuramoto.p5":
@@ -276,8 +290,10 @@ export const page = {
     <var>p</var>. <span class="eq-no">(3)</span>`,
   "kli.p3":
     `For a unit <var>q</var>, <var>q</var> <var>r̄</var> <var>q</var> = 2(<var>q</var>·<var>r</var>)<var>q</var> −
-    <var>r</var>, so this is simply <var>q</var>′ = <var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>. The
-    figure shows why it works. (<var>q</var>·<var>r</var>)<var>q</var> is the part of <var>r</var> along
+    <var>r</var>, so this is simply <var>q</var>′ = <var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>. (Why:
+    <var>q</var> <var>r̄</var> and <var>r</var> <var>q̄</var> are each other's conjugates, so their sum is twice
+    their real part, <var>q</var> <var>r̄</var> + <var>r</var> <var>q̄</var> = 2(<var>q</var>·<var>r</var>);
+    multiply on the right by <var>q</var> and use <var>q̄</var> <var>q</var> = 1.) The figure shows why it works. (<var>q</var>·<var>r</var>)<var>q</var> is the part of <var>r</var> along
     <var>q</var>; what is left is square to <var>q</var>, a tangent of the sphere. A velocity square to <var>q</var>
     keeps |<var>q</var>| = 1, since d|<var>q</var>|²/d<var>t</var> = 2 <var>q</var>·<var>q</var>′ = 0. And it lies
     in the plane of <var>q</var> and <var>r</var>, so <var>q</var> never leaves the great circle through
@@ -291,7 +307,8 @@ export const page = {
     `<strong>The time warp.</strong> Call <var>φ</var>(<var>t</var>) the angle between <var>q</var>(<var>t</var>) and
     <var>r</var>. Then cos <var>φ</var> = <var>q</var>·<var>r</var>, and its rate of change is
     <var>q</var>′·<var>r</var> = 1 − (<var>q</var>·<var>r</var>)² = sin²<var>φ</var>. It is also −sin <var>φ</var>
-    · <var>φ</var>′, so <var>φ</var>′ = −sin <var>φ</var>, whose solution is tan(<var>φ</var>(<var>t</var>)/2) =
+    · <var>φ</var>′, so <var>φ</var>′ = −sin <var>φ</var>. This separates, and ∫ d<var>φ</var>/sin <var>φ</var> = ln
+    tan(<var>φ</var>/2), so its solution is tan(<var>φ</var>(<var>t</var>)/2) =
     tan(<var>φ</var>₀/2) e<sup>−<var>t</var></sup>. So <var>q</var>(<var>t</var>) is SLERP's point at
     <var>s</var>(<var>t</var>) = 1 − <var>φ</var>(<var>t</var>)/<var>φ</var>₀: the same path as SLERP, exactly, at
     another pace. This <var>s</var>(<var>t</var>) is KLI's <em>time warp</em>, how far along SLERP's arc it is at
@@ -300,11 +317,12 @@ export const page = {
     of <var>q</var> itself on the sphere at the start, |<var>q</var>′|, is sin <var>φ</var>₀.)`,
   "kli.caption2":
     `<span class="kli">KLI</span>'s time warp <var>s</var>(<var>t</var>) against <span class="slerp">SLERP</span> run over the
-    same time, <var>t</var>/<var>T</var>.`,
+    same time, <var>t</var>/<var>T</var>, where <var>T</var> is the time at which Algorithm 1 stops (below).`,
   "kli.p6":
     `<dfn id="def-algorithm-1">Algorithm 1</dfn> of the paper computes the flow step by step: start at <var>q</var> =
     <var>p</var>; take a step of length <var>δ</var> in time (here by RK4, section 8); stop once ‖<var>r</var> −
-    <var>q</var>‖ &lt; <var>ε</var>. Its two knobs are the tolerance <dfn id="def-epsilon"><var>ε</var></dfn>, how
+    <var>q</var>‖ &lt; <var>ε</var> (the double bars are the length of a vector of R⁴, here of the four-vector
+    <var>r</var> − <var>q</var>). Its two knobs are the tolerance <dfn id="def-epsilon"><var>ε</var></dfn>, how
     close is close enough, and the time step <dfn id="def-delta"><var>δ</var></dfn>. The paper uses <var>ε</var> =
     10⁻⁵ and <var>δ</var> = 0.01 and reports <var>T</var> = 11.66. Where that comes from: ‖<var>r</var> −
     <var>q</var>‖ = 2 sin(<var>φ</var>/2), so the flow first comes within <var>ε</var> at`,
@@ -349,12 +367,13 @@ export const page = {
   "integrators.title1": `<span class="number">8</span> Integrators and drift`,
   "integrators.p1":
     `A computer takes the flow in steps of length <var>h</var> in time: the same as Algorithm 1's <var>δ</var> in
-    section 7, called <var>h</var> here because this figure has its own slider. <strong>Euler's</strong> step,
+    section 7, called <var>h</var> here because this figure has its own slider. <strong>Euler's</strong> step (the same Euler as the angles and the axis, a third
+    idea of his),
     <var>q</var> + <var>h</var> <var>q</var>′, moves along the tangent, and a tangent step always leaves the sphere:
     |<var>q</var> + <var>h</var><var>v</var>|² = 1 + <var>h</var>²|<var>v</var>|² when <var>v</var> is square to
     <var>q</var>. <dfn id="def-rk4">RK4</dfn>, the classical fourth-order Runge–Kutta method, samples the slope four
     times in a step and takes their weighted average, (<var>k</var>₁ + 2<var>k</var>₂ + 2<var>k</var>₃ +
-    <var>k</var>₄)/6; its error shrinks like <var>h</var>⁴, and so does its drift off the sphere.
+    <var>k</var>₄)/6, where <var>k</var>₁ to <var>k</var>₄ are the four slopes (not the quaternion unit k); its error shrinks like <var>h</var>⁴, and so does its drift off the sphere.
     The <strong>geodesic</strong> step takes RK4's increment as a turn along the great circle, so |<var>q</var>| = 1
     by construction. This flow, written <var>q</var>′ = <var>r</var> − (<var>q</var>·<var>r</var>)<var>q</var> (the
     form this page integrates; off the sphere it differs from eq. 3's −½(<var>q</var> <var>r̄</var> <var>q</var> −
@@ -365,7 +384,9 @@ export const page = {
     not grow for ever; in other flows it can.`,
   "integrators.caption1":
     `| |<var>q</var>| − 1 | on the paper's example for each integrator at step <var>h</var>, on a log scale (what is
-    below 10⁻¹⁷ is drawn at 10⁻¹⁷); the chosen one thick.`,
+    below 10⁻¹⁷ is drawn at 10⁻¹⁷); the chosen one thick. Late in the run Euler's line can fall below RK4's: at a
+    large step Euler runs ahead of the true flow and arrives early, and a <var>q</var> that has all but stopped no
+    longer drifts. That is an error in time, not accuracy.`,
   "integrators.legend1": "Integrators",
   "integrators.p2":
     `<output id="drift-out">The largest drift at h = 0.5: Euler 9.0e-2, RK4 1.5e-3, geodesic 2.2e-16.</output>`,
@@ -521,7 +542,8 @@ export const page = {
     each node pulled towards where each of its edges says it should be. Each edge is coloured by how far its
     measurement disagrees with the current answer: blue under 2°, teal 2–5°, green 5–15°, orange 15–45°, red 45° or
     more; a wrong edge is dashed. Each node carries a needle: its error (the turn from its true rotation to the
-    answer's, after the one common turn that best lines the whole answer up with the truth) applied to the body's
+    answer's, after the one common turn that best lines the whole answer up with the truth; measurements between
+    pairs cannot tell a turn of every node together, so the answer is only fixed up to that one turn) applied to the body's
     <var>x</var> axis, seen from above. The needle points right once the node agrees with the truth.`,
   "many.question1":
     `Predict, then check: on the averaging figure, with half the measurements wild, which means stay near the truth?`,
