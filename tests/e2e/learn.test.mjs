@@ -384,6 +384,11 @@ test("reduced motion: nothing plays by itself, not even as a moving figure is re
   await page.click("button.play-from[data-figure=phases]");
   await page.waitForFunction(() => document.querySelector("#readout").textContent !== "t = 0.00 / 12.00", null, { timeout: 5000 });
   await page.click("#play");
+  // KLI's path has its own press beside it, which starts the motion from t = 0 where it is read.
+  await page.locator("#learn-kli").scrollIntoViewIfNeeded();
+  await page.click("button.play-from[data-figure=kli-path]");
+  await page.waitForFunction(() => /^t = 0\.[0-9]{2} \//.test(document.querySelector("#readout").textContent) && document.querySelector("#play").textContent !== "Play", null, { timeout: 5000 });
+  await page.click("#play");
   // The other pages' figures come still, at a time of their own, never autoplaying.
   await page.locator("#many").scrollIntoViewIfNeeded();
   await page.waitForFunction(() => customElements.get("kli-figure") !== undefined, null, { timeout: 10000 });
