@@ -428,7 +428,9 @@ export const page = {
     <dfn id="def-squad">Squad</dfn> (Shoemakeov splajn kvaterniona, uobičajena glatka kriva u softveru za animaciju,
     sastavljena od SLERP-ova između dodatnih kontrolnih tačaka; ljubičasto, isprekidano) i SLERP po dijelovima
     (tamno, tačkasto). Bijele tačke k0, k1, … su ključevi; k0 i k1 dijele jednu tačku, jer je prvi dio čisti okret oko nosa, koji
-    Hopfovo preslikavanje ne može pokazati (odjeljak 5).`,
+    Hopfovo preslikavanje ne može pokazati (odjeljak 5). Gledaj k2 i dio poslije njega: kako glatkoća raste, narandžasti lanac
+    zaobljava ugao koji SLERP pravi u k2 i napušta tačkasti luk. Male popunjene tačke koje se kreću su tačke svake
+    krive u trenutku <var>t</var>.`,
   "many.p10":
     `Slika iznad prikazuje kamo je okrenut nos, a ne koliko se brzo tijelo okreće, a gledalac vidi upravo prelom u toj
     brzini. Tijelo koje se okreće u svakom trenutku se okreće oko neke ose nekom brzinom. Njegova <dfn id="def-omega">brzina

@@ -426,7 +426,9 @@ export const page = {
     id="def-squad">Squad</dfn> (Shoemake's spline of quaternions, the usual smooth curve of animation software,
     built from SLERPs between extra control points; purple, dashed) and piecewise SLERP (dark, dotted). The white
     dots k0, k1, … are the keys; k0 and k1 share one dot, since the first piece is a pure turn about the nose, which
-    the Hopf map cannot show (section 5).`,
+    the Hopf map cannot show (section 5). Watch k2 and the piece after it: as smoothness grows, the orange chain rounds
+    the corner SLERP makes at k2 and leaves the dotted arc. The small filled dots that move are each curve's point at
+    the time <var>t</var>.`,
   "many.p10":
     `The figure above shows where the nose points, not how fast the object turns, and a kink in how fast is what a
     viewer sees. At each moment a turning object turns about some axis at some rate. Its <dfn id="def-omega">turning rate</dfn>, the
