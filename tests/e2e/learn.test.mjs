@@ -366,6 +366,7 @@ test("the swarm: 200 rotations gather at K = 1; its exercise's push, K = −1, b
   assert.ok(Math.abs(balanced - push.end) < 1e-3, `${balanced} against ${push.end}`);
   assert.equal(await page.inputValue('input[data-figure="fig-swarm"]'), "-1");
   assert.equal(await page.getAttribute('input[data-figure="fig-swarm"]', "aria-valuetext"), "K = -1");
+  assert.equal(await text(page, "#many output.figure-value"), "K = -1", "the value in sight beside its slider");
   const answer = await exercise.textContent();
   assert.match(answer, new RegExp(`the farthest by a turn of about ${Math.round(push.turn)}°`));
   assert.match(answer, new RegExp(`R = ${push.start.toFixed(3)} at the start`));

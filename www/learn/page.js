@@ -296,6 +296,9 @@ function loadOtherFigures() {
     if (slider) {
       slider.value = value;
       slider.setAttribute("aria-valuetext", words(attribute, Number(value)));
+      // The same words in sight, as every other slider of the tour shows its value.
+      const shown = slider.closest("label")?.nextElementSibling;
+      if (shown?.matches("output.figure-value")) shown.textContent = words(attribute, Number(value));
     }
   };
   for (const slider of section.querySelectorAll("input[data-figure]")) {
