@@ -45,8 +45,8 @@ export const page = {
     ovaj vodič ga zove nagib, a „valjanje” čuva za dodatni okret oko nosa u odjeljku 5): <var>R</var> = <var>R<sub>z</sub></var>(skretanje)
     <var>R<sub>y</sub></var>(propinjanje) <var>R<sub>x</sub></var>(nagib). Pomjeri klizač propinjanja ispod prema 90° i
     gledaj kako se osa skretanja i osa nagiba približavaju. Na 90° one su jedna prava: skretanje i nagib sada rade
-    isto i jedan stepen slobode je izgubljen. To je <dfn id="def-gimbal">blokada kardana</dfn> (engl. gimbal lock; kardan je sklop ugniježđenih prstenova, od
-    kojih se svaki okreće oko jedne ose, koji drži kompas ili kameru), i
+    isto i jedan stepen slobode je izgubljen. To je <dfn id="def-gimbal">blokada kardana</dfn> (engl. gimbal lock; kardan (kardanski ovjes) je sklop ugniježđenih
+    prstenova koji drži kompas ili kameru, a svaki se prsten okreće oko jedne ose), i
     svaki izbor tri ugla negdje naiđe na nju.`,
   "care.legend1": "Eulerovi uglovi",
   "care.p3":
@@ -82,10 +82,10 @@ export const page = {
   "turn.p4":
     `i on okreće vektor <var>v</var>, zapisan kao <var>v<sub>x</sub></var> i + <var>v<sub>y</sub></var> j +
     <var>v<sub>z</sub></var> k, u <var>q</var> <var>v</var> <var>q̄</var>. Provjeri to na prvom okretu sa slike, 90° oko <var>z</var>:
-    <var>q</var> = (1 + k)/√2 i <var>q̄</var> = (1 − k)/√2. Tada je <var>q</var> i = (i + ki)/√2 = (i + j)/√2, a
+    <var>q</var> = (1 + k)/√2, a <var>q̄</var> = (1 − k)/√2. Tada je <var>q</var> i = (i + ki)/√2 = (i + j)/√2, a
     (i + j)(1 − k)/2 = (i − ik + j − jk)/2 = (i + j + j − i)/2 = j: nos, <var>x</var>, ide u <var>y</var>, četvrtina
     punog okreta. Svaki od dva činioca, <var>q</var> slijeva i <var>q̄</var> zdesna, okreće za <var>θ</var>/2, i
-    zato <var>q</var> nosi pola ugla. Jedan okret za drugim je proizvod: <var>q</var>₂<var>q</var>₁ prvo
+    zato <var>q</var> sadrži polovinu ugla. Jedan okret za drugim je proizvod: <var>q</var>₂<var>q</var>₁ prvo
     okreće za <var>q</var>₁. Četiri broja i jedan uslov, |<var>q</var>| = 1, a ako ga zaokruživanje pokvari, dijeljenje <var>q</var> sa
     |<var>q</var>| ga vraća.`,
   "turn.caption1":
@@ -125,8 +125,8 @@ export const page = {
     <var>φ</var> = <var>p</var>·<var>r</var>. On mjeri koliko su rotacije udaljene. Okret koji vodi <var>p</var> u
     <var>r</var> je <var>r</var> <var>p̄</var>, a njegov realni dio je <var>p</var>·<var>r</var> = cos
     <var>φ</var>; po odjeljku 2 realni dio cos(<var>θ</var>/2) znači okret za <var>θ</var>, pa rotacija od
-    <var>p</var> do <var>r</var> okreće za 2<var>φ</var>. (Kad je <var>p</var>·<var>r</var> &lt; 0, 2<var>φ</var>
-    je više od 180°, a ista rotacija je okret za 360° − 2<var>φ</var> na drugu stranu.) Najkraći put po sferi je luk velikog kruga (presjeka sfere i ravni kroz njen centar), <dfn id="def-geodesic">geodezijska linija</dfn>.
+    <var>p</var> do <var>r</var> okreće za 2<var>φ</var>. (Kad je <var>p</var>·<var>r</var> &lt; 0, ugao 2<var>φ</var>
+    je veći od 180°, a ista rotacija je okret za 360° − 2<var>φ</var> u suprotnom smjeru.) Najkraći put po sferi je luk velikog kruga (presjeka sfere i ravni kroz njen centar), <dfn id="def-geodesic">geodezijska linija</dfn>.
     Između dvije rotacije postoje dva takva luka, do <var>r</var> i do −<var>r</var>; „najkraći put” bira onaj za
     koji je <var>p</var>·<var>r</var> ≥ 0. <a href="#kli">KLI</a>, metoda iz rada (odjeljak 7), ne bira: kad je
     <var>p</var>·<var>r</var> &lt; 0, teče dužim putem, pa prvo promijeni predznak od <var>r</var> tako da bude
@@ -213,10 +213,10 @@ export const page = {
   "kuramoto.p1":
     `Krijesnice bljeskaju zajedno, ćelije predvodnika srčanog ritma kucaju zajedno. <dfn id="def-kuramoto">Kuramotov
     model</dfn> (Kuramoto, 1975) je najjednostavniji opis: <var>N</var> oscilatora s fazama <var>θ<sub>i</sub></var>
-    na kružnici, svaki sa svojom vlastitom frekvencijom <var>ω<sub>i</sub></var>, svaki privlačen prema ostalima. Faza je mjesto
-    na kojem je oscilator u svom ciklusu, jedan ugao; vlastita frekvencija je brzina kojom se taj ugao okreće kad
-    ga ništa ne privlači. Ispod, crtica znači brzinu promjene u vremenu, <var>θ</var>′ =
-    d<var>θ</var>/d<var>t</var>, a suma ide po svakom <var>j</var>:`,
+    na kružnici, svaki sa svojom vlastitom frekvencijom <var>ω<sub>i</sub></var>, svaki privlačen prema ostalima. Faza je ugao
+    koji kaže gdje je oscilator u svom ciklusu; vlastita frekvencija je brzina kojom taj ugao raste kad
+    ga ništa ne privlači. U jednačini ispod prim (′) označava brzinu promjene u vremenu, <var>θ</var>′ =
+    d<var>θ</var>/d<var>t</var>, a zbir ide po svim <var>j</var>:`,
   "kuramoto.p2":
     `<var>θ<sub>i</sub></var>′ = <var>ω<sub>i</sub></var> + (<var>K</var>/<var>N</var>) Σ<sub><var>j</var></sub>
     sin(<var>θ<sub>j</sub></var> − <var>θ<sub>i</sub></var>).`,
@@ -289,8 +289,8 @@ export const page = {
   "kli.p3":
     `Za jedinični <var>q</var> je <var>q</var> <var>r̄</var> <var>q</var> = 2(<var>q</var>·<var>r</var>)<var>q</var>
     − <var>r</var>, pa je ovo jednostavno <var>q</var>′ = <var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>.
-    (Zašto: <var>q</var> <var>r̄</var> i <var>r</var> <var>q̄</var> su konjugovani jedan drugom, pa je njihov zbir
-    dvostruki realni dio, <var>q</var> <var>r̄</var> + <var>r</var> <var>q̄</var> = 2(<var>q</var>·<var>r</var>);
+    (Zašto: <var>q</var> <var>r̄</var> i <var>r</var> <var>q̄</var> su međusobno konjugovani, pa je njihov zbir
+    jednak dvostrukom realnom dijelu, <var>q</var> <var>r̄</var> + <var>r</var> <var>q̄</var> = 2(<var>q</var>·<var>r</var>);
     pomnoži zdesna sa <var>q</var> i iskoristi <var>q̄</var> <var>q</var> = 1.) Slika pokazuje zašto to funkcioniše. (<var>q</var>·<var>r</var>)<var>q</var> je dio vektora <var>r</var> duž
     <var>q</var>; ostatak je okomit na <var>q</var>, tangenta sfere. Brzina okomita na <var>q</var> čuva
     |<var>q</var>| = 1, jer je d|<var>q</var>|²/d<var>t</var> = 2 <var>q</var>·<var>q</var>′ = 0. I leži u ravni
@@ -321,7 +321,7 @@ export const page = {
   "kli.p6":
     `<dfn id="def-algorithm-1">Algoritam 1</dfn> iz rada računa tok korak po korak: počni od <var>q</var> =
     <var>p</var>; napravi korak dužine <var>δ</var> u vremenu (ovdje metodom RK4, odjeljak 8); stani čim je
-    ‖<var>r</var> − <var>q</var>‖ &lt; <var>ε</var> (dvostruke crte su dužina vektora u R⁴, ovdje
+    ‖<var>r</var> − <var>q</var>‖ &lt; <var>ε</var> (dvostruke crte označavaju dužinu vektora u R⁴, ovdje
     četverodimenzionalnog vektora <var>r</var> − <var>q</var>). Njegova dva parametra su tolerancija <dfn
     id="def-epsilon"><var>ε</var></dfn>, koliko blizu je dovoljno blizu, i vremenski korak <dfn
     id="def-delta"><var>δ</var></dfn>. Rad koristi <var>ε</var> = 10⁻⁵ i <var>δ</var> = 0.01 i navodi <var>T</var> =
@@ -374,7 +374,7 @@ export const page = {
     <var>h</var><var>v</var>|² = 1 + <var>h</var>²|<var>v</var>|² kad je <var>v</var> okomit na <var>q</var>. <dfn
     id="def-rk4">RK4</dfn>, klasična Runge–Kutta metoda četvrtog reda, računa izvod četiri puta u jednom koraku i
     uzima njihov ponderisani prosjek, (<var>k</var>₁ + 2<var>k</var>₂ + 2<var>k</var>₃ + <var>k</var>₄)/6, gdje su <var>k</var>₁ do <var>k</var>₄
-    četiri nagiba (nije riječ o kvaternionskoj jedinici k); njena greška opada kao <var>h</var>⁴, a tako i njeno odstupanje od sfere.
+    te četiri vrijednosti izvoda (a ne kvaternionska jedinica k); njena greška opada kao <var>h</var>⁴, a tako i njeno odstupanje od sfere.
     <strong>Geodezijski</strong> korak uzima prirast metode RK4 kao okret duž velikog kruga, pa je |<var>q</var>| =
     1 po konstrukciji. Ovaj tok, zapisan kao <var>q</var>′ = <var>r</var> − (<var>q</var>·<var>r</var>)<var>q</var>
     (oblik koji ova stranica integrira; izvan sfere razlikuje se od −½(<var>q</var> <var>r̄</var> <var>q</var> −
@@ -386,8 +386,8 @@ export const page = {
   "integrators.caption1":
     `| |<var>q</var>| − 1 | na primjeru iz rada za svaki integrator s korakom <var>h</var>, na logaritamskoj skali
     (ono što je ispod 10⁻¹⁷ crta se na 10⁻¹⁷); izabrani je podebljan. Pri kraju Eulerova linija može pasti ispod
-    linije RK4: s velikim korakom Euler ide ispred pravog toka i stiže ranije, a <var>q</var> koji se skoro
-    zaustavio više ne odstupa. To je greška u vremenu, a ne tačnost.`,
+    linije RK4: s velikim korakom Euler ide ispred tačnog toka i stiže ranije, a <var>q</var> koji se gotovo
+    zaustavio više se ne udaljava od sfere. To je greška u vremenu, a ne veća tačnost.`,
   "integrators.legend1": "Integratori",
   "integrators.p2":
     `<output id="drift-out">Najveće odstupanje pri h = 0.5: Euler 9.0e-2, RK4 1.5e-3, geodezijski 2.2e-16.</output>`,
@@ -548,8 +548,8 @@ export const page = {
     mjerenje razlikuje od trenutnog rješenja: plavo ispod 2°, tirkizno 2–5°, zeleno 5–15°, narandžasto 15–45°,
     crveno 45° ili više; pogrešna grana je isprekidana. Svaki čvor nosi iglu: svoju grešku (okret od svoje prave
     rotacije do rotacije iz rješenja, nakon jednog zajedničkog okreta koji cijelo rješenje najbolje poravna s
-    istinom; mjerenja između parova ne mogu razlikovati okret svih čvorova zajedno, pa je rješenje određeno samo do
-    tog jednog okreta) primijenjenu na osu <var>x</var> tijela, gledano odozgo. Igla pokazuje desno kad se čvor slaže s
+    istinom; mjerenja između parova ne mogu otkriti zajednički okret svih čvorova, pa je rješenje određeno samo do na
+    taj jedan okret) primijenjenu na osu <var>x</var> tijela, gledano odozgo. Igla pokazuje desno kad se čvor slaže s
     istinom.`,
   "many.question1":
     `Predvidi, pa provjeri: na slici usrednjavanja, kad je pola mjerenja izuzetaka, koje sredine ostaju blizu istine?`,

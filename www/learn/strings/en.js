@@ -386,7 +386,7 @@ export const page = {
     `| |<var>q</var>| − 1 | on the paper's example for each integrator at step <var>h</var>, on a log scale (what is
     below 10⁻¹⁷ is drawn at 10⁻¹⁷); the chosen one thick. Late in the run Euler's line can fall below RK4's: at a
     large step Euler runs ahead of the true flow and arrives early, and a <var>q</var> that has all but stopped no
-    longer drifts. That is an error in time, not accuracy.`,
+    longer drifts. That is an error in timing, not better accuracy.`,
   "integrators.legend1": "Integrators",
   "integrators.p2":
     `<output id="drift-out">The largest drift at h = 0.5: Euler 9.0e-2, RK4 1.5e-3, geodesic 2.2e-16.</output>`,
