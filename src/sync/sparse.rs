@@ -210,6 +210,12 @@ impl Lower {
         self.ordering.cholesky.len_val()
     }
 
+    /// The factor's entries over the lower triangle's own: 1 where the factorisation fills in
+    /// nothing (a tree), larger the more the graph's cycles interlock.
+    pub fn fill(&self) -> f64 {
+        self.factor_len() as f64 / self.pattern.row_idx().len().max(1) as f64
+    }
+
     /// The Cholesky factor of the matrix whose listed entries are `values` (in the order of the
     /// pattern's pairs), or `None` when it is not positive definite to the working precision (a
     /// pivot `≤ 0`, or a value that is not finite).

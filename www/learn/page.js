@@ -176,14 +176,16 @@ function playFromStart(/** @type {Host} */ host) {
   if (!page.playing) page.play();
 }
 
-/** The last figure before `element` in its section, or null. */
+/** The last figure before `element` in its section, or null: walking back from it, a figure
+ *  among the siblings or within one. */
 function figureBefore(/** @type {Element | null} */ element) {
-  const figures = element?.closest("section")?.querySelectorAll("figure") ?? [];
-  let last = null;
-  for (const figure of figures) {
-    if (element && figure.compareDocumentPosition(element) & Node.DOCUMENT_POSITION_FOLLOWING) last = figure;
+  for (let at = element?.previousElementSibling; at; at = at.previousElementSibling) {
+    if (at.matches("figure")) return at;
+    const inside = at.querySelectorAll("figure");
+    if (inside.length) return inside[inside.length - 1];
   }
-  return last;
+  const parent = element?.parentElement;
+  return parent && !parent.matches("section") ? figureBefore(parent) : null;
 }
 
 /** The exercises' links, the buttons of the clock, printing with the answers, and the figures'
@@ -295,10 +297,11 @@ function loadOtherFigures() {
     const slider = /** @type {HTMLInputElement | null} */ (section.querySelector(`input[data-figure="${id}"]`));
     if (slider) {
       slider.value = value;
-      slider.setAttribute("aria-valuetext", words(attribute, Number(value)));
+      const said = words(attribute, Number(value));
+      slider.setAttribute("aria-valuetext", said);
       // The same words in sight, as every other slider of the tour shows its value.
       const shown = slider.closest("label")?.nextElementSibling;
-      if (shown?.matches("output.figure-value")) shown.textContent = words(attribute, Number(value));
+      if (shown?.matches("output.figure-value")) shown.textContent = said;
     }
   };
   for (const slider of section.querySelectorAll("input[data-figure]")) {

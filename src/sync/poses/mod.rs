@@ -436,11 +436,25 @@ fn solve(
     })
 }
 
-/// One level's local optimisation from `x`, counting its steps into `iterations`: in 2D at ranks
-/// 2 and 3 Newton's method first (`newton`: on city10000 in wasm 421 against 647 ms, on w10000
-/// 0.77 against 1.53 s), then the trust region from where it stopped unless it converged; in 3D,
-/// where each Newton step factors six unknowns a pose, the trust region alone (sphere2500 in wasm
-/// took 585 ms with Newton against 315 without).
+/// Where a 3D graph's Newton steps pay: its graph's factorisation fills in at most this much
+/// ([`Reduced::fill`]). A graph of long chains with few loop closures fills in little, so
+/// Newton's factorisation of six unknowns a pose is cheap, and conditions the trust region's
+/// conjugate gradients badly (parking-garage, fill 1.54: 26–65 of them a step); a meshed one
+/// (sphere2500, fill 5.85) the other way round.
+const NEWTON_FILL_3D: f64 = 3.0;
+
+/// Whether Newton's method goes first at `rank` (`newton`): in 2D at ranks 2 and 3 (on
+/// city10000 in wasm 421 against 647 ms, on w10000 0.77 against 1.53 s); in 3D at rank 3 where
+/// the graph fills in little ([`NEWTON_FILL_3D`]): parking-garage's rank 3 natively 170 → 102 ms,
+/// its whole solve in wasm 261–269 → 206–225 ms (medians of 5, alternately), where sphere2500's
+/// whole solve took 587 against 326 ms in wasm, and smallGrid3D (fill 3.36) 46 against 10 ms.
+fn newton_first(problem: &Reduced, rank: usize) -> bool {
+    newton::applies(problem.d, rank) && (problem.d == 2 || problem.fill <= NEWTON_FILL_3D)
+}
+
+/// One level's local optimisation from `x`, counting its steps into `iterations`: Newton's method
+/// first where it pays ([`newton_first`]), then the trust region from where it stopped unless it
+/// converged.
 fn optimise(
     problem: &Reduced,
     preconditioner: &trust::Preconditioner,
@@ -451,7 +465,7 @@ fn optimise(
 ) -> Stack {
     let rank = x.r;
     let mut x = x;
-    if problem.d == 2 && newton::applies(problem.d, rank) {
+    if newton_first(problem, rank) {
         let before = *iterations;
         let refined = newton::refine(problem, &x, gradient, &mut |k| {
             observe(PoseStage::Step { rank, iterations: before + k })

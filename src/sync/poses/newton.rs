@@ -1,7 +1,8 @@
 //! Riemannian Newton on the pose-graph cost with its translations kept, damped as
 //! Levenberg–Marquardt (Absil, Mahony and Sepulchre 2008, §6.2; Nielsen's damping update, 1999),
 //! at rank `r ≤ 3` where `St(d, r)` has no directions that leave the cost unchanged (`r ≤ d + 1`):
-//! the pose graphs of the plane at ranks 2 and 3.
+//! the pose graphs of the plane at ranks 2 and 3, and 3D graphs at rank 3 where they fill in
+//! little (`NEWTON_FILL_3D`, in the parent module).
 //!
 //! The trust region works on the cost with the translations eliminated, `tr(Xᵀ Q X)`, whose `Q`
 //! is dense: its Hessian can only be applied, so each step is conjugate gradients (city10000: 5
@@ -240,12 +241,14 @@ pub(super) fn model(
     y: &[Block],
     t: &[[f64; 3]],
 ) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
-    // The plane's two ranks compiled each for its own sizes, every loop's bound a constant (3D
-    // uses the trust region; its tests take the general code): in wasm w20000 took 3.6–4.0 s
-    // against 4.0–4.4 s, w10000 623 against 684 ms, for 7 KB more of kli/sync gzipped (+2.7%).
+    // Each rank Newton is used at compiled for its own sizes, every loop's bound a constant: in
+    // wasm w20000 took 3.6–4.0 s against 4.0–4.4 s, w10000 623 against 684 ms, for 7 KB more of
+    // kli/sync gzipped (+2.7%); 3D's rank 3, parking-garage's whole solve 255–263 against
+    // 206–225 ms. Other sizes (the tests' `r < d`) take the general code.
     match (system.r, system.d) {
         (2, 2) => assemble(system, problem, y, t, 2, 2),
         (3, 2) => assemble(system, problem, y, t, 3, 2),
+        (3, 3) => assemble(system, problem, y, t, 3, 3),
         (r, d) => assemble(system, problem, y, t, r, d),
     }
 }

@@ -47,6 +47,9 @@ pub(super) struct Reduced {
     /// The largest diagonal entry of `L(G̃^ρ) + Σ̃`: the scale of `Q`, and of the tolerances.
     pub scale: f64,
     laplacian: Factor,
+    /// [`Lower::fill`] of `L_τ` (node 0 left out): how much a sparse factorisation on the graph's
+    /// pattern fills in.
+    pub fill: f64,
     full: Lower,
     /// `M`'s listed values, the rotation block's shift entries 0.
     base: Vec<f64>,
@@ -87,8 +90,9 @@ impl Reduced {
         }
         let laplacian_pairs = pairs.len();
         // n − 1 ≥ 1 translation rows; a node other than 0 with no edge cannot occur (connected).
-        let laplacian =
-            Lower::new(n - 1, &pairs, Layout::Auto).factor(&values[..laplacian_pairs])?;
+        let pattern = Lower::new(n - 1, &pairs, Layout::Auto);
+        let fill = pattern.fill();
+        let laplacian = pattern.factor(&values[..laplacian_pairs])?;
         // M: the same L_τ entries, then −V's transpose below them, then the rotation block.
         let rot = |i: usize, a: usize| n - 1 + d * i + a;
         for e in &edges {
@@ -135,7 +139,7 @@ impl Reduced {
             }
         }
         let full = Lower::new(n - 1 + d * n, &pairs, Layout::Auto);
-        Some(Reduced { d, n, edges, scale, laplacian, full, base: values, shift_at })
+        Some(Reduced { d, n, edges, scale, laplacian, fill, full, base: values, shift_at })
     }
 
     /// `L_τ⁻¹ (V X)` with node 0's row held at 0 (`n × r`, column-major): the translations

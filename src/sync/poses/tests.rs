@@ -960,3 +960,33 @@ fn newtons_damping_reaches_a_critical_point_from_anywhere() {
         }
     }
 }
+
+/// Newton's method goes first in 3D where the graph fills in little ([`NEWTON_FILL_3D`]): a ring
+/// with node 0 left out is a path, which a factorisation fills in not at all (fill exactly 1);
+/// smallGrid3D, a 5 × 5 × 5 lattice, fills in well beyond the bound. In 2D it always goes first,
+/// and above rank 3 (`St(3, 4)` has directions that leave the cost unchanged) never.
+#[test]
+fn newton_goes_first_where_the_graph_fills_in_little() {
+    let ring = reduced(&exact(3, 60, 0.0, 71).0);
+    assert_eq!(ring.fill, 1.0);
+    assert!(newton_first(&ring, 3));
+    assert!(!newton_first(&ring, 4));
+    let grid = fixture("smallGrid3D");
+    let lattice = reduced(&grid);
+    assert!(lattice.fill > NEWTON_FILL_3D, "smallGrid3D fills {}", lattice.fill);
+    assert!(!newton_first(&lattice, 3));
+    // The lattice's edges in the plane, each measurement the identity.
+    let m = grid.edges.len();
+    let planar = pose_graph(
+        2,
+        grid.count,
+        grid.edges.clone(),
+        vec![DQuat::IDENTITY; m],
+        vec![DVec3::X; m],
+        vec![1.0; m],
+        vec![1.0; m],
+    );
+    let planar = reduced(&planar);
+    assert_eq!(planar.fill, lattice.fill);
+    assert!(newton_first(&planar, 2) && newton_first(&planar, 3));
+}
