@@ -902,6 +902,26 @@ fn newtons_damping_after_a_step_and_its_last_step() {
     assert!(!newton::last_step(0.0, 1, 1e-16, 1e-15));
 }
 
+/// The damping after a refusal (or a step that raised `f` even halved), worked by hand: Newton's own
+/// step refused, a tenth of the last damping that took a step, or the least, 1e-12, if none did;
+/// then, until a damped step is taken, a hundredfold each time (ν untouched); after one, Nielsen's
+/// `μ ν` with `ν` doubling.
+#[test]
+fn newtons_damping_probes_a_hundredfold_until_a_step_is_taken() {
+    let close = |(mu, nu): (f64, f64), (want_mu, want_nu): (f64, f64)| {
+        assert!((mu - want_mu).abs() <= 1e-15 * want_mu, "μ {mu} against {want_mu}");
+        assert_eq!(nu, want_nu);
+    };
+    close(newton::grown(0.0, 2.0, 0.0), (1e-12, 2.0));
+    close(newton::grown(1e-12, 2.0, 0.0), (1e-10, 2.0));
+    close(newton::grown(1e-10, 2.0, 0.0), (1e-8, 2.0));
+    close(newton::grown(0.0, 2.0, 3e-5), (3e-6, 2.0));
+    close(newton::grown(3e-6, 2.0, 3e-5), (6e-6, 4.0));
+    close(newton::grown(6e-6, 4.0, 3e-5), (2.4e-5, 8.0));
+    // The least is a floor for Nielsen's growth too.
+    close(newton::grown(1e-20, 2.0, 1e-9), (1e-12, 4.0));
+}
+
 /// Newton's method (translations kept) and the trust region (translations eliminated) are two
 /// methods on two forms of one cost: from the chordal start of noisy graphs, 2D and 3D, Newton
 /// converges in a handful of steps to the trust region's minimum (the cost to 1e-10, where the
