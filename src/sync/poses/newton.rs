@@ -497,6 +497,8 @@ pub(super) fn refine(
     let mut factored: f64 = 0.0;
     let mut iterations = 0;
     let mut last = f64::INFINITY;
+    // Each factorisation's values, handed on to the next (`Lower::factor_in`).
+    let mut storage = Vec::new();
     let converged = loop {
         if iterations >= MAX_ITERATIONS {
             break false;
@@ -514,18 +516,20 @@ pub(super) fn refine(
         iterations += 1;
         step_begins(iterations);
         let mut taken = None;
+        let mut shifted = values.clone();
         // At most 64 growths of μ (ν doubling each time, so far beyond any scale).
         for _ in 0..64 {
-            let mut shifted = values.clone();
+            shifted.copy_from_slice(&values);
             for (&at, &dk) in system.pivots.iter().zip(&diagonal) {
                 shifted[at] += mu * dk;
             }
-            let Some(factor) = system.lower.factor(&shifted) else {
+            let Some(factor) = system.lower.factor_in(&shifted, &mut storage) else {
                 (mu, nu) = grown(mu, nu, factored);
                 continue;
             };
             let mut step: Vec<f64> = g.iter().map(|x| -x).collect();
             factor.solve(&mut step, 1);
+            storage = factor.into_storage();
             let damped: f64 = (0..step.len()).map(|k| diagonal[k] * step[k] * step[k]).sum();
             let slope: f64 = g.iter().zip(&step).map(|(a, b)| a * b).sum();
             let ((y_trial, t_trial, f_trial, predicted), rho, halvings) = backtrack(|alpha| {
