@@ -135,11 +135,17 @@ fn entry_ordering(size: usize, pairs: &[Pair<usize, usize>]) -> Vec<usize> {
 }
 
 /// The rows and columns ordered block by block: faer's minimum degree on the `v × v` blocks'
-/// pattern, each block's `v` rows kept together in order; row `k` goes to `inverse[k]`.
+/// pattern, each block's `v` rows kept together in order; row `k` goes to `inverse[k]`. A dense
+/// block lists its first entry, so the blocks' pattern is read from those alone (w20000's rank 3
+/// lists 1.4 million entries for 47,000 blocks: natively 56 → 9 ms to order); a block listed
+/// without it would only make the ordering worse, never the factor wrong.
 fn block_ordering(size: usize, pairs: &[Pair<usize, usize>], v: usize) -> Vec<usize> {
     let blocks = size / v;
-    let block_pairs: Vec<Pair<usize, usize>> =
-        pairs.iter().map(|p| Pair { row: p.row / v, col: p.col / v }).collect();
+    let block_pairs: Vec<Pair<usize, usize>> = pairs
+        .iter()
+        .filter(|p| p.row % v == 0 && p.col % v == 0)
+        .map(|p| Pair { row: p.row / v, col: p.col / v })
+        .collect();
     let inverse = minimum_degree(blocks, compressed(blocks, &block_pairs).0.as_ref());
     (0..size).map(|k| v * inverse[k / v] + k % v).collect()
 }
@@ -336,6 +342,44 @@ mod tests {
     /// blocks coupled to all factor in dense supernodes once there are enough of them (faer's
     /// ratio of flops to entries, about a third of the size here, above 40), and natively sooner
     /// as blocks (above 10: `BLOCKS_SUPERNODAL`).
+    /// The blocks' ordering read from each block's first entry is the one read from every entry:
+    /// dense 3 × 3 blocks on a random graph (each block's lower triangle on the diagonal).
+    #[test]
+    fn blocks_are_ordered_from_their_first_entries_as_from_all() {
+        let (v, blocks) = (3, 60);
+        let mut state = 7u64;
+        let mut next = |n: usize| {
+            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((state >> 33) as usize) % n
+        };
+        let mut pairs = Vec::new();
+        for b in 0..blocks {
+            for s in 0..v {
+                for t in 0..=s {
+                    pairs.push(Pair { row: v * b + s, col: v * b + t });
+                }
+            }
+        }
+        for _ in 0..150 {
+            let (i, j) = (next(blocks), next(blocks));
+            if i != j {
+                let (big, small) = (i.max(j), i.min(j));
+                for s in 0..v {
+                    for t in 0..v {
+                        pairs.push(Pair { row: v * big + s, col: v * small + t });
+                    }
+                }
+            }
+        }
+        let size = v * blocks;
+        let every: Vec<Pair<usize, usize>> =
+            pairs.iter().map(|p| Pair { row: p.row / v, col: p.col / v }).collect();
+        let inverse = minimum_degree(blocks, compressed(blocks, &every).0.as_ref());
+        let expected: Vec<usize> = (0..size).map(|k| v * inverse[k / v] + k % v).collect();
+        assert_eq!(block_ordering(size, &pairs, v), expected);
+        assert_ne!(expected, (0..size).collect::<Vec<_>>(), "the identity orders nothing");
+    }
+
     #[test]
     fn both_forms_solve_under_both_orderings() {
         let v = 3;
