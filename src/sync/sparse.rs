@@ -337,11 +337,7 @@ mod tests {
             assert_eq!(summed, faers.val(), "{size}, {count}");
         }
     }
-    /// Both of faer's forms, each read from its own triangle, solve `A x = b` (checked by
-    /// multiplying back) under both orderings: a chain of blocks factors column by column; all
-    /// blocks coupled to all factor in dense supernodes once there are enough of them (faer's
-    /// ratio of flops to entries, about a third of the size here, above 40), and natively sooner
-    /// as blocks (above 10: `BLOCKS_SUPERNODAL`).
+
     /// The blocks' ordering read from each block's first entry is the one read from every entry:
     /// dense 3 × 3 blocks on a random graph (each block's lower triangle on the diagonal).
     #[test]
@@ -380,6 +376,11 @@ mod tests {
         assert_ne!(expected, (0..size).collect::<Vec<_>>(), "the identity orders nothing");
     }
 
+    /// Both of faer's forms, each read from its own triangle, solve `A x = b` (checked by
+    /// multiplying back) under both orderings: a chain of blocks factors column by column; all
+    /// blocks coupled to all factor in dense supernodes once there are enough of them (faer's
+    /// ratio of flops to entries, about a third of the size here, above 40), and natively sooner
+    /// as blocks (above 10: `BLOCKS_SUPERNODAL`).
     #[test]
     fn both_forms_solve_under_both_orderings() {
         let v = 3;

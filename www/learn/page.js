@@ -177,7 +177,8 @@ function playFromStart(/** @type {Host} */ host) {
 }
 
 /** The last figure before `element` in its section, or null: walking back from it, a figure
- *  among the siblings or within one. */
+ *  among the siblings or within one.
+ *  @returns {Element | null} */
 function figureBefore(/** @type {Element | null} */ element) {
   for (let at = element?.previousElementSibling; at; at = at.previousElementSibling) {
     if (at.matches("figure")) return at;
