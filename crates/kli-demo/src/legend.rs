@@ -68,10 +68,18 @@ pub fn legend_row_width(pen: &Pen, entries: &[Entry]) -> f64 {
     entries.iter().map(|e| pen.text_width(e.label, SIZE) + swatch + 14.0).sum::<f64>() - 10.0
 }
 
-/// Draws `entries` in one row ending at `(right, y)` (a plot's title line): each a short line
-/// of its mark and its label.
+/// Draws `entries` in one row ending at `(right, y)` (a plot's title line, or inside a plot):
+/// each a short line of its mark and its label, on a white band that keeps the curves and lines
+/// drawn before it out of its words (inside a plot on a phone, the keys' dotted lines ran through
+/// them; beside a title the band is white on white).
 pub fn draw_legend_row(pen: &Pen, (right, y): (f64, f64), entries: &[Entry]) {
     let swatch = 16.0 * pen.text_scale().sqrt();
+    let (left, half) = (right - legend_row_width(pen, entries) - 4.0, 8.0 * pen.text_scale());
+    pen.alpha(0.88);
+    let band =
+        [(left, y - half), (right + 3.0, y - half), (right + 3.0, y + half), (left, y + half)];
+    pen.fill_polygon(&band, "#ffffff", None);
+    pen.alpha(1.0);
     let mut x = right;
     for entry in entries.iter().rev() {
         let width = pen.text_width(entry.label, SIZE);
@@ -170,15 +178,20 @@ pub fn text_box(pen: &Pen, text: &str, (x, y): (f64, f64), size: f64) -> TextBox
     [x - half_width, y - half_height, x + half_width, y + half_height]
 }
 
+/// Half the side of the box a labelled point's mark takes (the discs are 5.5–8 pixels in radius).
+pub const MARK: f64 = 7.0;
+
 /// Whether two boxes share any area.
 pub fn overlap(a: &TextBox, b: &TextBox) -> bool {
     a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]
 }
 
 /// Where to centre the label `text` of `point`, `distance` from it: away from `centre` (off the
-/// curves, which run inside the sphere's disc) when that is clear of every box in `taken`, else
-/// the first clear place turning from there by ±45°, ±90°, ±135°, 180°; away from `centre` when
-/// none is. The label's box is added to `taken`.
+/// curves, which run inside the sphere's disc) when that is clear of every box in `taken` and of
+/// the point's own mark ([`MARK`] each way: a label wider than twice `distance`, set beside its
+/// point, covered it, as "h(q): the nose" did on a phone), else the first clear place turning
+/// from there by ±45°, ±90°, ±135°, 180°; away from `centre` when none is. The label's box is
+/// added to `taken`.
 pub fn clear_place(
     pen: &Pen,
     text: &str,
@@ -193,12 +206,13 @@ pub fn clear_place(
         let (sin, cos) = degrees.to_radians().sin_cos();
         (point.0 + dx * cos - dy * sin, point.1 + dx * sin + dy * cos)
     };
+    let mark = [point.0 - MARK, point.1 - MARK, point.0 + MARK, point.1 + MARK];
     let place = [0.0, 45.0, -45.0, 90.0, -90.0, 135.0, -135.0, 180.0]
         .into_iter()
         .map(turned)
         .find(|&at| {
             let candidate = text_box(pen, text, at, size);
-            !taken.iter().any(|b| overlap(b, &candidate))
+            !overlap(&mark, &candidate) && !taken.iter().any(|b| overlap(b, &candidate))
         })
         .unwrap_or(away);
     taken.push(text_box(pen, text, place, size));

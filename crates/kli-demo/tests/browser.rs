@@ -280,6 +280,62 @@ fn text_boxes(svg: &str, ctx: &CanvasRenderingContext2d) -> Vec<([f64; 4], Strin
         .collect()
 }
 
+/// A label wider than twice its distance, its point due right of the centre: set straight out
+/// it would cover the point, so it turns to a place clear of the point's mark; a short label
+/// stays straight out; and what is placed is taken.
+#[wasm_bindgen_test]
+fn a_wide_label_clears_its_own_point() {
+    use kli_demo::legend::{MARK, clear_place, outward, overlap, text_box};
+    use kli_demo::pen::Pen;
+
+    let pen = Pen::svg(300.0, 300.0, "#ffffff", "test");
+    let (point, centre) = ((200.0, 150.0), (150.0, 150.0));
+    let mut taken = Vec::new();
+    let wide = "h(q): the nose";
+    assert!(pen.text_width(wide, 12.0) > 2.0 * 18.0 + 2.0 * MARK);
+    let at = clear_place(&pen, wide, (point, centre), 18.0, 12.0, &mut taken);
+    let mark = [point.0 - MARK, point.1 - MARK, point.0 + MARK, point.1 + MARK];
+    assert!(!overlap(&text_box(&pen, wide, at, 12.0), &mark), "{at:?}");
+    assert!((at.0 - point.0).hypot(at.1 - point.1) - 18.0 < 1e-9, "{at:?}");
+    assert_ne!(at, (218.0, 150.0));
+    assert_eq!(taken, [text_box(&pen, wide, at, 12.0)]);
+    let short = clear_place(&pen, "k1", ((100.0, 40.0), centre), 18.0, 12.0, &mut Vec::new());
+    assert_eq!(short, outward((100.0, 40.0), centre, 18.0));
+}
+
+/// A legend row (drawn over a plot's curves, inside its panel on a phone) sits on a white band,
+/// drawn before its words, that holds every one of them: the lines under it do not run through.
+#[wasm_bindgen_test]
+fn a_legend_row_sits_on_a_white_band_that_holds_its_words() {
+    use kli_demo::legend::{Entry, Mark, draw_legend_row};
+    use kli_demo::pen::Pen;
+
+    let pen = Pen::svg(300.0, 100.0, "#ffffff", "test");
+    let entries = [
+        Entry { mark: Mark::Line("#c2410c", 3.0, &[]), label: "KLI chain, smoothness 1" },
+        Entry { mark: Mark::Line("#212529", 1.5, &[2.0, 3.0]), label: "piecewise SLERP" },
+    ];
+    draw_legend_row(&pen, (290.0, 50.0), &entries);
+    let svg = pen.finish();
+    let band = svg.find("<polygon").expect("a band");
+    assert!(band < svg.find("<text").unwrap(), "the band is drawn before the words");
+    let element = &svg[band..];
+    assert!(element.split('>').next().unwrap().contains("fill=\"#ffffff\""), "{element}");
+    let points = element.split("points=\"").nth(1).unwrap().split('"').next().unwrap();
+    let xy: Vec<(f64, f64)> = points
+        .split(' ')
+        .map(|p| p.split_once(',').unwrap())
+        .map(|(x, y)| (x.parse().unwrap(), y.parse().unwrap()))
+        .collect();
+    let (left, right) = xy.iter().fold((f64::MAX, f64::MIN), |(l, r), p| (l.min(p.0), r.max(p.0)));
+    let (top, bottom) = xy.iter().fold((f64::MAX, f64::MIN), |(t, b), p| (t.min(p.1), b.max(p.1)));
+    let boxes = text_boxes(&svg, &canvas(300, 100));
+    assert_eq!(boxes.len(), 2);
+    for ([l, t, r, b], text) in boxes {
+        assert!(l >= left && r <= right && t >= top && b <= bottom, "{text}: {l} {t} {r} {b}");
+    }
+}
+
 /// Every view of every page class, at the pages' sizes on a wide screen and at 390 px wide:
 /// no two labels of a figure overlap (by more than half a pixel each way).
 #[wasm_bindgen_test]

@@ -637,10 +637,11 @@ pub fn draw_rates(pen: &Pen, model: &Model, frame: &Frame) {
         Entry { mark: Mark::Line(KLI, 3.0, &[]), label: &chain_label },
         Entry { mark: Mark::Line(INK, 1.5, &[2.0, 3.0]), label: &words.pieces },
     ];
-    // Along the foot of the panel, below the curves; one above the other where the row is wider
-    // than the panel (a phone, or large text).
+    // Along the foot of the panel, below the curves, clear of the last key's line at the panel's
+    // right edge; one above the other where the row is wider than the panel (a phone, or large
+    // text).
     let (right, foot, line) =
-        (panel.left + panel.width, panel.top + panel.height - 10.0 * text, 15.0 * text);
+        (panel.left + panel.width - 6.0, panel.top + panel.height - 10.0 * text, 15.0 * text);
     if legend_row_width(pen, &entries) <= panel.width - 8.0 {
         draw_legend_row(pen, (right, foot), &entries);
     } else {
