@@ -24,6 +24,15 @@ pub struct Entry<'a> {
 /// The font size of legends and notes (before the pen's text scale).
 const SIZE: f64 = 11.0;
 
+/// A key's white backing over what is drawn beneath, `[left, top, right, bottom]`, nearly opaque
+/// (what it covers shows faintly), with `outline` if any.
+fn backing(pen: &Pen, [left, top, right, bottom]: [f64; 4], outline: Option<&str>) {
+    pen.alpha(0.88);
+    let corners = [(left, top), (right, top), (right, bottom), (left, bottom)];
+    pen.fill_polygon(&corners, "#ffffff", outline);
+    pen.alpha(1.0);
+}
+
 /// Draws `entries` in a box at the bottom left of `area`, one a line, then `note` (muted,
 /// below them) if any. A legend that would cover more than 60% of the area's width or 40% of
 /// its height (a thumbnail, a large text scale on a small figure) is left out: it would hide
@@ -42,10 +51,7 @@ pub fn draw_legend(pen: &Pen, area: &Viewport, entries: &[Entry], note: Option<&
     }
     let (left, bottom) = (area.left + 4.0, area.top + area.height - 4.0);
     let top = bottom - height;
-    pen.alpha(0.88);
-    let corners = [(left, top), (left + width, top), (left + width, bottom), (left, bottom)];
-    pen.fill_polygon(&corners, "#ffffff", Some("#ced4da"));
-    pen.alpha(1.0);
+    backing(pen, [left, top, left + width, bottom], Some("#ced4da"));
     for (i, entry) in entries.iter().enumerate() {
         let y = top + 3.0 + (i as f64 + 0.5) * line;
         let (x0, x1) = (left + 5.0, left + 5.0 + swatch);
@@ -75,11 +81,7 @@ pub fn legend_row_width(pen: &Pen, entries: &[Entry]) -> f64 {
 pub fn draw_legend_row(pen: &Pen, (right, y): (f64, f64), entries: &[Entry]) {
     let swatch = 16.0 * pen.text_scale().sqrt();
     let (left, half) = (right - legend_row_width(pen, entries) - 4.0, 8.0 * pen.text_scale());
-    pen.alpha(0.88);
-    let band =
-        [(left, y - half), (right + 3.0, y - half), (right + 3.0, y + half), (left, y + half)];
-    pen.fill_polygon(&band, "#ffffff", None);
-    pen.alpha(1.0);
+    backing(pen, [left, y - half, right + 3.0, y + half], None);
     let mut x = right;
     for entry in entries.iter().rev() {
         let width = pen.text_width(entry.label, SIZE);

@@ -499,6 +499,8 @@ pub(super) fn refine(
     let mut last = f64::INFINITY;
     // Each factorisation's values, handed on to the next (`Lower::factor_in`).
     let mut storage = Vec::new();
+    // The Hessian's values with the damping on its diagonal, made afresh for each μ.
+    let mut shifted = vec![0.0; system.len];
     let converged = loop {
         if iterations >= MAX_ITERATIONS {
             break false;
@@ -516,7 +518,6 @@ pub(super) fn refine(
         iterations += 1;
         step_begins(iterations);
         let mut taken = None;
-        let mut shifted = values.clone();
         // At most 64 growths of μ (ν doubling each time, so far beyond any scale).
         for _ in 0..64 {
             shifted.copy_from_slice(&values);
