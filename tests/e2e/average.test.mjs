@@ -22,7 +22,12 @@ test("the averaging page draws, the follower flows to the chordal mean, the medi
   assert.ok(m.median[0] < 2.5 && m.median[0] < m.chordal[0] && m.chordal[0] < m["geodesic (Karcher)"][0], JSON.stringify(m));
   assert.match(await page.textContent("#note"), /^40 measurements, \d+ wild; the median weighs \d+ of them least/);
   // Played to its end, the follower is the chordal mean: the object's label says how far from the truth.
-  await page.waitForFunction(() => document.querySelector("#play").textContent === "Play", null, { timeout: 60000 });
+  // The play begins 250 ms after the reader's first input (runtime.js, waitForReader), which may be
+  // after the reads above: the end is the readout's time at its span and Play offered again.
+  await page.waitForFunction(() => {
+    const [, t, end] = document.querySelector("#readout").textContent.match(/t = ([\d.]+) \/ ([\d.]+)/) ?? [];
+    return t !== undefined && t === end && document.querySelector("#play").textContent === "Play";
+  }, null, { timeout: 60000 });
   const readout = await page.textContent("#readout");
   const [, t, end] = readout.match(/t = ([\d.]+) \/ ([\d.]+)/).map(Number);
   assert.equal(t, end, readout);
