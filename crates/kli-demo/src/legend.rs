@@ -180,8 +180,11 @@ pub fn text_box(pen: &Pen, text: &str, (x, y): (f64, f64), size: f64) -> TextBox
     [x - half_width, y - half_height, x + half_width, y + half_height]
 }
 
-/// Half the side of the box a labelled point's mark takes (the discs are 5.5–8 pixels in radius).
-pub const MARK: f64 = 7.0;
+/// How far a disc of `radius` with a ring `width` wide reaches from its centre: the ring is
+/// stroked on the disc's edge, half of it outside. A labelled point's mark, for [`clear_place`].
+pub fn reach(radius: f64, width: f64) -> f64 {
+    radius + 0.5 * width
+}
 
 /// Whether two boxes share any area.
 pub fn overlap(a: &TextBox, b: &TextBox) -> bool {
@@ -190,14 +193,15 @@ pub fn overlap(a: &TextBox, b: &TextBox) -> bool {
 
 /// Where to centre the label `text` of `point`, `distance` from it: away from `centre` (off the
 /// curves, which run inside the sphere's disc) when that is clear of every box in `taken` and of
-/// the point's own mark ([`MARK`] each way: a label wider than twice `distance`, set beside its
-/// point, covered it, as "h(q): the nose" did on a phone), else the first clear place turning
-/// from there by ±45°, ±90°, ±135°, 180°; away from `centre` when none is. The label's box is
-/// added to `taken`.
+/// the point's own mark (`mark` each way, its disc's [`reach`]: a label wider than twice
+/// `distance`, set beside its point, covered it, as "h(q): the nose" did on a phone), else the
+/// first clear place turning from there by ±45°, ±90°, ±135°, 180°; away from `centre` when none
+/// is. The label's box is added to `taken`.
 pub fn clear_place(
     pen: &Pen,
     text: &str,
     (point, centre): ((f64, f64), (f64, f64)),
+    mark: f64,
     distance: f64,
     size: f64,
     taken: &mut Vec<TextBox>,
@@ -208,7 +212,7 @@ pub fn clear_place(
         let (sin, cos) = degrees.to_radians().sin_cos();
         (point.0 + dx * cos - dy * sin, point.1 + dx * sin + dy * cos)
     };
-    let mark = [point.0 - MARK, point.1 - MARK, point.0 + MARK, point.1 + MARK];
+    let mark = [point.0 - mark, point.1 - mark, point.0 + mark, point.1 + mark];
     let place = [0.0, 45.0, -45.0, 90.0, -90.0, 135.0, -135.0, 180.0]
         .into_iter()
         .map(turned)

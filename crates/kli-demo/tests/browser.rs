@@ -285,22 +285,48 @@ fn text_boxes(svg: &str, ctx: &CanvasRenderingContext2d) -> Vec<([f64; 4], Strin
 /// stays straight out; and what is placed is taken.
 #[wasm_bindgen_test]
 fn a_wide_label_clears_its_own_point() {
-    use kli_demo::legend::{MARK, clear_place, outward, overlap, text_box};
+    use kli_demo::legend::{clear_place, outward, overlap, reach, text_box};
     use kli_demo::pen::Pen;
 
     let pen = Pen::svg(300.0, 300.0, "#ffffff", "test");
     let (point, centre) = ((200.0, 150.0), (150.0, 150.0));
     let mut taken = Vec::new();
     let wide = "h(q): the nose";
-    assert!(pen.text_width(wide, 12.0) > 2.0 * 18.0 + 2.0 * MARK);
-    let at = clear_place(&pen, wide, (point, centre), 18.0, 12.0, &mut taken);
-    let mark = [point.0 - MARK, point.1 - MARK, point.0 + MARK, point.1 + MARK];
-    assert!(!overlap(&text_box(&pen, wide, at, 12.0), &mark), "{at:?}");
+    let mark = reach(7.0, 2.0);
+    assert_eq!(mark, 8.0);
+    assert!(pen.text_width(wide, 12.0) > 2.0 * 18.0 + 2.0 * mark);
+    let at = clear_place(&pen, wide, (point, centre), mark, 18.0, 12.0, &mut taken);
+    let own = [point.0 - mark, point.1 - mark, point.0 + mark, point.1 + mark];
+    assert!(!overlap(&text_box(&pen, wide, at, 12.0), &own), "{at:?}");
     assert!((at.0 - point.0).hypot(at.1 - point.1) - 18.0 < 1e-9, "{at:?}");
     assert_ne!(at, (218.0, 150.0));
     assert_eq!(taken, [text_box(&pen, wide, at, 12.0)]);
-    let short = clear_place(&pen, "k1", ((100.0, 40.0), centre), 18.0, 12.0, &mut Vec::new());
+    let short = clear_place(&pen, "k1", ((100.0, 40.0), centre), mark, 18.0, 12.0, &mut Vec::new());
     assert_eq!(short, outward((100.0, 40.0), centre, 18.0));
+}
+
+/// A label is kept off its own point's mark as far as that mark reaches: the swarm's leader, a
+/// disc of 8 pixels with a 2-pixel ring, reaches 9 pixels, past the 7 that every mark was once
+/// given. Set so that its box would start 8 pixels out, the label turns for the leader's mark
+/// and stays for a 7-pixel one.
+#[wasm_bindgen_test]
+fn a_label_clears_its_points_whole_mark() {
+    use kli_demo::legend::{clear_place, outward, overlap, reach, text_box};
+    use kli_demo::pen::Pen;
+
+    let pen = Pen::svg(300.0, 300.0, "#ffffff", "test");
+    let (point, centre) = ((200.0, 150.0), (150.0, 150.0));
+    let text = "pinned";
+    let distance = 8.0 + 0.5 * pen.text_width(text, 12.0);
+    let away = outward(point, centre, distance);
+    let small = clear_place(&pen, text, (point, centre), 7.0, distance, 12.0, &mut Vec::new());
+    assert_eq!(small, away);
+    let leader = reach(8.0, 2.0);
+    assert_eq!(leader, 9.0);
+    let at = clear_place(&pen, text, (point, centre), leader, distance, 12.0, &mut Vec::new());
+    assert_ne!(at, away);
+    let own = [point.0 - leader, point.1 - leader, point.0 + leader, point.1 + leader];
+    assert!(!overlap(&text_box(&pen, text, at, 12.0), &own), "{at:?}");
 }
 
 /// A legend row (drawn over a plot's curves, inside its panel on a phone) sits on a white band,

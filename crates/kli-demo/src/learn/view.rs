@@ -14,7 +14,8 @@ use crate::camera::Viewport;
 use crate::figure::Frame;
 use crate::format::{exponential, fixed};
 use crate::legend::{
-    Entry, Mark, TextBox, clear_place, draw_legend_row, draw_plot_key, legend_row_width, text_box,
+    Entry, Mark, TextBox, clear_place, draw_legend_row, draw_plot_key, legend_row_width, reach,
+    text_box,
 };
 use crate::object_view::{draw_object, object_camera};
 use crate::palette::{AXIS_X, AXIS_Y, AXIS_Z, GRID, INK, KLI, MUTED, SLERP};
@@ -164,17 +165,18 @@ impl Plane {
         pen.text(text, self.at(angle, length), color, 12.5, "center");
     }
 
-    /// The label of the circle's point at `angle`, outside it and clear of the labels `taken`
-    /// (which it joins).
+    /// The label of the circle's point at `angle` (its mark reaching `mark` from it), outside the
+    /// circle and clear of the labels `taken` (which it joins).
     fn clear_label(
         &self,
         pen: &Pen,
         text: &str,
-        angle: f64,
+        (angle, mark): (f64, f64),
         color: &str,
         taken: &mut Vec<TextBox>,
     ) {
-        let at = clear_place(pen, text, (self.at(angle, 1.0), self.centre), 24.0, 12.5, taken);
+        let at =
+            clear_place(pen, text, (self.at(angle, 1.0), self.centre), mark, 24.0, 12.5, taken);
         pen.text(text, at, color, 12.5, "center");
     }
 }
@@ -208,10 +210,11 @@ pub fn draw_cover(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
     };
     plane.label(pen, unit, pi / 2.0, 1.22, INK);
     taken.push(text_box(pen, unit, plane.at(pi / 2.0, 1.22), 12.5));
-    pen.disc(plane.at(half + pi, 1.0), 6.5, Some("#ffffff"), Some((KLI, 2.5)));
-    pen.disc(plane.at(half, 1.0), 7.0, Some(KLI), Some((INK, 1.5)));
-    plane.clear_label(pen, "q", half, KLI, &mut taken);
-    plane.clear_label(pen, "−q", half + pi, KLI, &mut taken);
+    let (minus, plus) = ((6.5, 2.5), (7.0, 1.5));
+    pen.disc(plane.at(half + pi, 1.0), minus.0, Some("#ffffff"), Some((KLI, minus.1)));
+    pen.disc(plane.at(half, 1.0), plus.0, Some(KLI), Some((INK, plus.1)));
+    plane.clear_label(pen, "q", (half, reach(plus.0, plus.1)), KLI, &mut taken);
+    plane.clear_label(pen, "−q", (half + pi, reach(minus.0, minus.1)), KLI, &mut taken);
     let q = model.turn();
     let (a, b) = if wide {
         ((objects.0, 0.0, objects.2, h / 2.0), (objects.0, h / 2.0, objects.2, h / 2.0))
@@ -311,8 +314,11 @@ pub fn draw_hopf(pen: &Pen, model: &Model, frame: &Frame) {
     {
         pen.alpha(if view.in_front(point) { 1.0 } else { 0.45 });
         let at = view.at(point);
-        pen.disc(at, 7.0, Some(fill), Some((ring, 2.0)));
-        let place = clear_place(pen, label, (at, view.at(DVec3::ZERO)), 18.0, 12.0, &mut labels);
+        let (radius, width) = (7.0, 2.0);
+        pen.disc(at, radius, Some(fill), Some((ring, width)));
+        let mark = reach(radius, width);
+        let place =
+            clear_place(pen, label, (at, view.at(DVec3::ZERO)), mark, 18.0, 12.0, &mut labels);
         pen.text(label, place, INK, 12.0, "center");
     }
     pen.alpha(1.0);
@@ -387,10 +393,12 @@ pub fn draw_lohe(pen: &Pen, model: &Model, frame: &Frame) {
     }
     let leader = hopf(swarm.leader);
     pen.alpha(if view.in_front(leader) { 1.0 } else { 0.45 });
-    pen.disc(view.at(leader), 8.0, Some(KLI), Some((INK, 2.0)));
+    let (radius, width) = (8.0, 2.0);
+    pen.disc(view.at(leader), radius, Some(KLI), Some((INK, width)));
     let centre = view.at(DVec3::ZERO);
     let pinned = &model.options.words.pinned;
-    let place = clear_place(pen, pinned, (view.at(leader), centre), 20.0, 12.0, &mut labels);
+    let mark = reach(radius, width);
+    let place = clear_place(pen, pinned, (view.at(leader), centre), mark, 20.0, 12.0, &mut labels);
     pen.text(pinned, place, INK, 12.0, "center");
     pen.alpha(1.0);
     let (t, widest) = (fixed(frame.t, 2), fixed(swarm.spread(frame.t), 1));
