@@ -43,7 +43,9 @@ export const page = {
     `Onda tri broja? <dfn id="def-euler">Eulerovi uglovi</dfn> okreću oko <var>z</var> za skretanje, zatim oko nove
     ose <var>y</var> za propinjanje, pa oko nove ose <var>x</var> (nosa) za nagib (piloti ovaj ugao zovu i valjanje;
     ovaj vodič ga zove nagib, a „valjanje” čuva za dodatni okret oko nosa u odjeljku 5): <var>R</var> = <var>R<sub>z</sub></var>(skretanje)
-    <var>R<sub>y</sub></var>(propinjanje) <var>R<sub>x</sub></var>(nagib). Pomjeri klizač propinjanja ispod prema 90° i
+    <var>R<sub>y</sub></var>(propinjanje) <var>R<sub>x</sub></var>(nagib). (Čitan zdesna nalijevo, kako matrice
+    djeluju na vektor, isti proizvod okreće oko nepomičnih osa svijeta obrnutim redom: nagib oko <var>x</var>, zatim
+    propinjanje oko <var>y</var>, pa skretanje oko <var>z</var>. Oba čitanja daju isto <var>R</var>.) Pomjeri klizač propinjanja ispod prema 90° i
     gledaj kako se osa skretanja i osa nagiba približavaju. Na 90° one su jedna prava: skretanje i nagib sada rade
     isto i jedan stepen slobode je izgubljen. To je <dfn id="def-gimbal">blokada kardana</dfn> (engl. gimbal lock; kardan (kardanski ovjes) je sklop ugniježđenih
     prstenova koji drži kompas ili kameru, a svaki se prsten okreće oko jedne ose), i
@@ -89,8 +91,10 @@ export const page = {
     okreće za <var>q</var>₁. Četiri broja i jedan uslov, |<var>q</var>| = 1, a ako ga zaokruživanje pokvari, dijeljenje <var>q</var> sa
     |<var>q</var>| ga vraća.`,
   "turn.caption1":
-    `Avion zaokrenut za <var>q</var>, osa isprekidano. Njegove ose tijela: <span class="x">x</span> (nos), <span
-    class="y">y</span> (krilo), <span class="z">z</span> (vertikalni stabilizator).`,
+    `Avion zaokrenut za <var>q</var>. Isprekidana linija je osa okreta, nepomična u svijetu. Obojene strelice su ose
+    tijela aviona, koje se okreću zajedno s njim: <span class="x">x</span> (nos), <span class="y">y</span> (krilo),
+    <span class="z">z</span> (vertikalni stabilizator). Prije okreta leže duž osa svijeta <var>x</var>, <var>y</var> i
+    <var>z</var>, pa nakon njega svaka pokazuje kuda <var>q</var> šalje tu osu svijeta.`,
   "turn.legend1": "Okret",
   "turn.p5":
     `Četiri broja sada: <output id="turn-out">q = 0.707 + 0.000 i + 0.000 j + 0.707 k</output>.`,
@@ -156,8 +160,10 @@ export const page = {
     `<var>q</var>(<var>s</var>) = [sin((1 − <var>s</var>)<var>φ</var>₀) <var>p</var> + sin(<var>s</var><var>φ</var>₀)
     <var>r</var>] / sin <var>φ</var>₀, cos <var>φ</var>₀ = <var>p</var>·<var>r</var>.`,
   "slerp.p3":
-    `Njegova tačka je <var>s</var><var>φ</var>₀ duž luka, pa se tijelo okreće oko jedne nepomične ose ujednačenom
-    brzinom. Ispod su dvije rotacije iz rada, <var>p</var> = k, poluokret oko <var>z</var> (θ = 180°, jer je cos 90°
+    `Njegova tačka je <var>s</var><var>φ</var>₀ duž luka. Ekvivalentno, <var>q</var>(<var>s</var>) = <var>w</var>
+    <var>p</var>, gdje je <var>w</var> okret za 2<var>s</var><var>φ</var>₀ oko ose kvaterniona <var>r</var> <var>p̄</var>
+    (okret iz odjeljka 3 od <var>p</var> do <var>r</var>, za 2<var>φ</var>₀), postepeno izveden do udjela
+    <var>s</var>: zato se tijelo okreće oko te jedne nepomične ose ujednačenom brzinom. Ispod su dvije rotacije iz rada, <var>p</var> = k, poluokret oko <var>z</var> (θ = 180°, jer je cos 90°
     + sin 90° k = k), i <var>r</var> = ½(1 + i + j + k), trećina okreta (120°) oko dijagonale (1, 1, 1):
     <var>p</var>·<var>r</var> = ½, pa je <var>φ</var>₀ = 60° na S³, okret tijela za 120°. Ponovo ih srećemo u
     odjeljku 7.`,
@@ -255,7 +261,13 @@ export const page = {
     2(<var>q<sub>i</sub></var>·<var>q<sub>j</sub></var>)<var>q<sub>i</sub></var> − <var>q<sub>j</sub></var> (odjeljak
     7 koristi isti identitet), pa je svaki sabirak 2(<var>q<sub>j</sub></var> −
     (<var>q<sub>i</sub></var>·<var>q<sub>j</sub></var>) <var>q<sub>i</sub></var>): privlačenje prema svakom drugom
-    oscilatoru bez dijela duž <var>q<sub>i</sub></var>. Fiksiraj jednog od njih u rotaciji <var>r</var>,
+    oscilatoru bez dijela duž <var>q<sub>i</sub></var>. Na kružnici je to gornja jednačina faza, sa svim
+    <var>ω<sub>i</sub></var> = 0: stavi <var>z<sub>i</sub></var> = e<sup>i<var>θ<sub>i</sub></var></sup> umjesto
+    <var>q<sub>i</sub></var>; tada je <var>z<sub>j</sub></var> − <var>z<sub>i</sub></var> <var>z̄<sub>j</sub></var>
+    <var>z<sub>i</sub></var> = 2i sin(<var>θ<sub>j</sub></var> − <var>θ<sub>i</sub></var>) <var>z<sub>i</sub></var> i
+    <var>z<sub>i</sub></var>′ = i<var>θ<sub>i</sub></var>′ <var>z<sub>i</sub></var>, pa je
+    <var>θ<sub>i</sub></var>′ = (<var>K</var>/<var>N</var>) Σ<sub><var>j</var></sub> sin(<var>θ<sub>j</sub></var> −
+    <var>θ<sub>i</sub></var>). Fiksiraj jednog od njih u rotaciji <var>r</var>,
     tako da se nikad ne pomjera: to je <dfn id="def-leader">vođa</dfn>, a ostali, <em>sljedbenici</em>, se usklade,
     a zatim se smire na njemu. S jednim sljedbenikom, <var>N</var> = 2, sljedbenik zadovoljava
     <var>q</var>′ = (<var>K</var>/2)(<var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>): metoda iz rada
@@ -314,7 +326,11 @@ export const page = {
     SLERP-ovog luka u trenutku <var>t</var> (traka vremena postavlja <var>t</var>, a iskrivljenje je ono što tok od njega napravi).
     Njegova brzina je <var>s</var>′ = −<var>φ</var>′/<var>φ</var>₀ = sin <var>φ</var>/<var>φ</var>₀: počinje sa sin
     <var>φ</var>₀/<var>φ</var>₀ (0.827 za <var>φ</var>₀ = 60°) i eksponencijalno usporava kako stiže. (Brzina
-    samog kvaterniona <var>q</var> po sferi na početku, |<var>q</var>′|, jednaka je sin <var>φ</var>₀.)`,
+    samog kvaterniona <var>q</var> po sferi na početku, |<var>q</var>′|, jednaka je sin <var>φ</var>₀.) Riječima:
+    <var>q</var> se kreće duž dijela vektora <var>r</var> okomitog na <var>q</var>, čija je dužina sin <var>φ</var>. Daleko od
+    <var>r</var> taj dio je velik; blizu <var>r</var> gotovo cijelo <var>r</var> leži duž <var>q</var> i malo toga preostaje da
+    vuče, pa se preostali ugao u svakoj jedinici vremena smanjuje za gotovo isti udio i nikad ne dostiže 0. Zato
+    metoda staje kad se <var>q</var> približi <var>r</var> na manje od zadate tolerancije (v. u nastavku).`,
   "kli.caption2":
     `Iskrivljenje vremena <var>s</var>(<var>t</var>) za <span class="kli">KLI</span> naspram <span class="slerp">SLERP</span>-a izvedenog
     za isto vrijeme, <var>t</var>/<var>T</var>, gdje je <var>T</var> trenutak u kojem se Algoritam 1 zaustavlja (ispod).`,

@@ -45,7 +45,9 @@ export const page = {
     `Three numbers then? <dfn id="def-euler">Euler angles</dfn> turn about <var>z</var> by the yaw, then about the
     new <var>y</var> by the pitch, then about the new <var>x</var> (the nose) by the bank (pilots also call this
     angle the roll; this tour calls it bank, and keeps “roll” for the extra turn about the nose in section 5): <var>R</var> = <var>R<sub>z</sub></var>(yaw)
-    <var>R<sub>y</sub></var>(pitch) <var>R<sub>x</sub></var>(bank). Move the pitch towards 90° below and watch the
+    <var>R<sub>y</sub></var>(pitch) <var>R<sub>x</sub></var>(bank). (Read right to left, as the matrices act on a
+    vector, the same product turns about the world's fixed axes in the other order: bank about <var>x</var>, then pitch
+    about <var>y</var>, then yaw about <var>z</var>. Both readings give the same <var>R</var>.) Move the pitch towards 90° below and watch the
     yaw axis and the bank axis close in on each other. At 90° they are one line: yaw and bank now do the same thing
     and one freedom is gone. That is <dfn id="def-gimbal">gimbal lock</dfn> (a gimbal is a set of nested rings, each turning about one
     axis, that holds a compass or a camera), and every choice of three angles runs into
@@ -90,8 +92,10 @@ export const page = {
     turns by <var>q</var>₁ first. Four numbers and one condition, |<var>q</var>| = 1, and if rounding spoils it, dividing <var>q</var> by
     |<var>q</var>| restores it.`,
   "turn.caption1":
-    `The aircraft turned by <var>q</var>, the axis dashed. Its body axes: <span class="x">x</span> (the nose), <span
-    class="y">y</span> (a wing), <span class="z">z</span> (the fin).`,
+    `The aircraft turned by <var>q</var>. The dashed line is the turn's axis, fixed in the world. The coloured arrows
+    are the aircraft's body axes, which turn with it: <span class="x">x</span> (the nose), <span class="y">y</span> (a
+    wing), <span class="z">z</span> (the fin). Before the turn they lie along the world's <var>x</var>, <var>y</var> and
+    <var>z</var>, so after it each shows where <var>q</var> sends that world axis.`,
   "turn.legend1": "The turn",
   "turn.p5":
     `The four numbers now: <output id="turn-out">q = 0.707 + 0.000 i + 0.000 j + 0.707 k</output>.`,
@@ -159,7 +163,10 @@ export const page = {
     `<var>q</var>(<var>s</var>) = [sin((1 − <var>s</var>)<var>φ</var>₀) <var>p</var> + sin(<var>s</var><var>φ</var>₀)
     <var>r</var>] / sin <var>φ</var>₀, cos <var>φ</var>₀ = <var>p</var>·<var>r</var>.`,
   "slerp.p3":
-    `Its point is <var>s</var><var>φ</var>₀ along the arc, so the object turns about one fixed axis at a steady rate.
+    `Its point is <var>s</var><var>φ</var>₀ along the arc. Equivalently <var>q</var>(<var>s</var>) = <var>w</var>
+    <var>p</var>, where <var>w</var> is the turn by 2<var>s</var><var>φ</var>₀ about the axis of <var>r</var>
+    <var>p̄</var> (section 3's turn from <var>p</var> to <var>r</var>, by 2<var>φ</var>₀), done a fraction
+    <var>s</var> at a time: so the object turns about that one fixed axis at a steady rate.
     Below are the paper's two rotations, <var>p</var> = k, a half turn about <var>z</var> (θ = 180°, since cos 90° +
     sin 90° k = k), and <var>r</var> = ½(1 + i + j + k), a third of a turn (120°) about the diagonal (1, 1, 1):
     <var>p</var>·<var>r</var> = ½, so <var>φ</var>₀ = 60° on S³, a 120° turn of the object. We meet them again in
@@ -258,7 +265,13 @@ export const page = {
     2(<var>q<sub>i</sub></var>·<var>q<sub>j</sub></var>)<var>q<sub>i</sub></var> − <var>q<sub>j</sub></var> (section
     7 uses the same identity), so each term is 2(<var>q<sub>j</sub></var> −
     (<var>q<sub>i</sub></var>·<var>q<sub>j</sub></var>) <var>q<sub>i</sub></var>): a pull towards each other
-    oscillator with the part along <var>q<sub>i</sub></var> taken away. Pin one of them at a rotation <var>r</var>,
+    oscillator with the part along <var>q<sub>i</sub></var> taken away. On the circle this is the phase equation
+    above with every <var>ω<sub>i</sub></var> = 0: put <var>z<sub>i</sub></var> = e<sup>i<var>θ<sub>i</sub></var></sup>
+    in place of <var>q<sub>i</sub></var>; then <var>z<sub>j</sub></var> − <var>z<sub>i</sub></var>
+    <var>z̄<sub>j</sub></var> <var>z<sub>i</sub></var> = 2i sin(<var>θ<sub>j</sub></var> − <var>θ<sub>i</sub></var>)
+    <var>z<sub>i</sub></var> and <var>z<sub>i</sub></var>′ = i<var>θ<sub>i</sub></var>′ <var>z<sub>i</sub></var>, so
+    <var>θ<sub>i</sub></var>′ = (<var>K</var>/<var>N</var>) Σ<sub><var>j</var></sub> sin(<var>θ<sub>j</sub></var> −
+    <var>θ<sub>i</sub></var>). Pin one of them at a rotation <var>r</var>,
     so that it never moves: it is the <dfn id="def-leader">leader</dfn>, and the others, the <em>followers</em>,
     fall into step and then settle on it. With one follower, <var>N</var> = 2, the follower obeys
     <var>q</var>′ = (<var>K</var>/2)(<var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>): the paper's method
@@ -314,7 +327,11 @@ export const page = {
     another pace. This <var>s</var>(<var>t</var>) is KLI's <em>time warp</em>, how far along SLERP's arc it is at
     time <var>t</var> (the time bar sets <var>t</var>; the warp is what the flow makes of it). Its speed is <var>s</var>′ = −<var>φ</var>′/<var>φ</var>₀ = sin <var>φ</var>/<var>φ</var>₀: it starts at sin
     <var>φ</var>₀/<var>φ</var>₀ (0.827 for <var>φ</var>₀ = 60°) and slows down exponentially as it arrives. (The speed
-    of <var>q</var> itself on the sphere at the start, |<var>q</var>′|, is sin <var>φ</var>₀.)`,
+    of <var>q</var> itself on the sphere at the start, |<var>q</var>′|, is sin <var>φ</var>₀.) In words:
+    <var>q</var> moves along the part of <var>r</var> square to <var>q</var>, whose length is sin <var>φ</var>. Far from
+    <var>r</var> that part is large; near <var>r</var> almost all of <var>r</var> lies along <var>q</var> and little is
+    left to pull, so the angle left shrinks by nearly the same fraction in each unit of time and never reaches 0.
+    That is why the method stops within a tolerance of <var>r</var>, below.`,
   "kli.caption2":
     `<span class="kli">KLI</span>'s time warp <var>s</var>(<var>t</var>) against <span class="slerp">SLERP</span> run over the
     same time, <var>t</var>/<var>T</var>, where <var>T</var> is the time at which Algorithm 1 stops (below).`,
