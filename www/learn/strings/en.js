@@ -331,7 +331,7 @@ export const page = {
     <var>q</var> moves along the part of <var>r</var> square to <var>q</var>, whose length is sin <var>φ</var>. Far from
     <var>r</var> that part is large; near <var>r</var> almost all of <var>r</var> lies along <var>q</var> and little is
     left to pull, so the angle left shrinks by nearly the same fraction in each unit of time and never reaches 0.
-    That is why the method stops within a tolerance of <var>r</var>, below.`,
+    That is why the method stops once <var>q</var> is within a tolerance of <var>r</var> (below).`,
   "kli.caption2":
     `<span class="kli">KLI</span>'s time warp <var>s</var>(<var>t</var>) against <span class="slerp">SLERP</span> run over the
     same time, <var>t</var>/<var>T</var>, where <var>T</var> is the time at which Algorithm 1 stops (below).`,
