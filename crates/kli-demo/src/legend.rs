@@ -57,7 +57,9 @@ pub fn draw_legend(pen: &Pen, area: &Viewport, entries: &[Entry], note: Option<&
         let (x0, x1) = (left + 5.0, left + 5.0 + swatch);
         match entry.mark {
             Mark::Line(colour, width, dash) => pen.line((x0, y), (x1, y), colour, width, dash),
-            Mark::Disc(fill, ring) => pen.disc((0.5 * (x0 + x1), y), 4.5, fill, Some((ring, 1.5))),
+            Mark::Disc(fill, ring) => {
+                pen.disc((0.5 * (x0 + x1), y), 4.5, fill, Some((ring, 1.5)));
+            }
         }
         pen.text(entry.label, (x1 + 6.0, y), INK, SIZE, "left");
     }
@@ -91,7 +93,9 @@ pub fn draw_legend_row(pen: &Pen, (right, y): (f64, f64), entries: &[Entry]) {
             Mark::Line(colour, width, dash) => {
                 pen.line((x - swatch, y), (x, y), colour, width, dash)
             }
-            Mark::Disc(fill, ring) => pen.disc((x - 0.5 * swatch, y), 4.0, fill, Some((ring, 1.5))),
+            Mark::Disc(fill, ring) => {
+                pen.disc((x - 0.5 * swatch, y), 4.0, fill, Some((ring, 1.5)));
+            }
         }
         x -= swatch + 10.0;
     }
@@ -180,12 +184,6 @@ pub fn text_box(pen: &Pen, text: &str, (x, y): (f64, f64), size: f64) -> TextBox
     [x - half_width, y - half_height, x + half_width, y + half_height]
 }
 
-/// How far a disc of `radius` with a ring `width` wide reaches from its centre: the ring is
-/// stroked on the disc's edge, half of it outside. A labelled point's mark, for [`clear_place`].
-pub fn reach(radius: f64, width: f64) -> f64 {
-    radius + 0.5 * width
-}
-
 /// Whether two boxes share any area.
 pub fn overlap(a: &TextBox, b: &TextBox) -> bool {
     a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]
@@ -193,7 +191,7 @@ pub fn overlap(a: &TextBox, b: &TextBox) -> bool {
 
 /// Where to centre the label `text` of `point`, `distance` from it: away from `centre` (off the
 /// curves, which run inside the sphere's disc) when that is clear of every box in `taken` and of
-/// the point's own mark (`mark` each way, its disc's [`reach`]: a label wider than twice
+/// the point's own mark (`mark` each way, how far its disc reaches: [`Pen::disc`]'s answer; a label wider than twice
 /// `distance`, set beside its point, covered it, as "h(q): the nose" did on a phone), else the
 /// first clear place turning from there by ±45°, ±90°, ±135°, 180°; away from `centre` when none
 /// is. The label's box is added to `taken`.

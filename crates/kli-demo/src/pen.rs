@@ -244,8 +244,16 @@ impl<'a> Pen<'a> {
         self.polyline(&[from, to], color, width, dash);
     }
 
-    /// A disc of radius `r`, optionally ringed.
-    pub fn disc(&self, (x, y): (f64, f64), r: f64, fill: Option<&str>, ring: Option<(&str, f64)>) {
+    /// A disc of radius `r`, optionally ringed; returns how far it reaches from its centre, the
+    /// ring stroked on its edge with half its width outside (the mark a label keeps clear of:
+    /// [`crate::legend::clear_place`]).
+    pub fn disc(
+        &self,
+        (x, y): (f64, f64),
+        r: f64,
+        fill: Option<&str>,
+        ring: Option<(&str, f64)>,
+    ) -> f64 {
         match &self.surface {
             Surface::Canvas(ctx) => {
                 ctx.begin_path();
@@ -274,6 +282,7 @@ impl<'a> Pen<'a> {
                 self.element(doc, "circle", &attributes, None);
             }
         }
+        r + ring.map_or(0.0, |(_, width)| 0.5 * width)
     }
 
     /// Discs of radius `r` at every point, filled in one path (one call for many points).

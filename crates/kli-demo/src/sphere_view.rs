@@ -6,7 +6,7 @@ use glam::DVec3;
 
 use crate::camera::{Camera, Viewport};
 use crate::format::fixed;
-use crate::legend::{Entry, Mark, TextBox, clear_place, draw_legend, reach, text_box};
+use crate::legend::{Entry, Mark, TextBox, clear_place, draw_legend, text_box};
 use crate::palette::{AXIS_X, AXIS_Y, AXIS_Z, GRID, INK, KLI, MUTED, SLERP};
 use crate::pen::Pen;
 use crate::scene::Scene;
@@ -182,12 +182,10 @@ fn draw_ends(view: &View, scene: &Scene, labels: &mut Vec<TextBox>) {
     let (start, end) =
         (view.at(hopf(scene.path().arc().start())), view.at(hopf(scene.path().target())));
     let centre = view.at(DVec3::ZERO);
-    let (radius, start_ring, end_ring) = (6.0, 2.0, 1.5);
-    view.pen.disc(start, radius, Some("#ffffff"), Some((INK, start_ring)));
-    view.pen.disc(end, radius, Some(INK), Some(("#ffffff", end_ring)));
-    for (text, point, ring) in [("h(p)", start, start_ring), ("h(r)", end, end_ring)] {
-        let at =
-            clear_place(view.pen, text, (point, centre), reach(radius, ring), 18.0, 12.0, labels);
+    let start_mark = view.pen.disc(start, 6.0, Some("#ffffff"), Some((INK, 2.0)));
+    let end_mark = view.pen.disc(end, 6.0, Some(INK), Some(("#ffffff", 1.5)));
+    for (text, point, mark) in [("h(p)", start, start_mark), ("h(r)", end, end_mark)] {
+        let at = clear_place(view.pen, text, (point, centre), mark, 18.0, 12.0, labels);
         view.pen.text(text, at, INK, 12.0, "center");
     }
 }

@@ -285,14 +285,14 @@ fn text_boxes(svg: &str, ctx: &CanvasRenderingContext2d) -> Vec<([f64; 4], Strin
 /// stays straight out; and what is placed is taken.
 #[wasm_bindgen_test]
 fn a_wide_label_clears_its_own_point() {
-    use kli_demo::legend::{clear_place, outward, overlap, reach, text_box};
+    use kli_demo::legend::{clear_place, outward, overlap, text_box};
     use kli_demo::pen::Pen;
 
     let pen = Pen::svg(300.0, 300.0, "#ffffff", "test");
     let (point, centre) = ((200.0, 150.0), (150.0, 150.0));
     let mut taken = Vec::new();
     let wide = "h(q): the nose";
-    let mark = reach(7.0, 2.0);
+    let mark = pen.disc(point, 7.0, Some("#c2410c"), Some(("#212529", 2.0)));
     assert_eq!(mark, 8.0);
     assert!(pen.text_width(wide, 12.0) > 2.0 * 18.0 + 2.0 * mark);
     let at = clear_place(&pen, wide, (point, centre), mark, 18.0, 12.0, &mut taken);
@@ -311,7 +311,7 @@ fn a_wide_label_clears_its_own_point() {
 /// and stays for a 7-pixel one.
 #[wasm_bindgen_test]
 fn a_label_clears_its_points_whole_mark() {
-    use kli_demo::legend::{clear_place, outward, overlap, reach, text_box};
+    use kli_demo::legend::{clear_place, outward, overlap, text_box};
     use kli_demo::pen::Pen;
 
     let pen = Pen::svg(300.0, 300.0, "#ffffff", "test");
@@ -321,7 +321,7 @@ fn a_label_clears_its_points_whole_mark() {
     let away = outward(point, centre, distance);
     let small = clear_place(&pen, text, (point, centre), 7.0, distance, 12.0, &mut Vec::new());
     assert_eq!(small, away);
-    let leader = reach(8.0, 2.0);
+    let leader = pen.disc(point, 8.0, Some("#c2410c"), Some(("#212529", 2.0)));
     assert_eq!(leader, 9.0);
     let at = clear_place(&pen, text, (point, centre), leader, distance, 12.0, &mut Vec::new());
     assert_ne!(at, away);

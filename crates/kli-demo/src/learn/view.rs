@@ -14,8 +14,7 @@ use crate::camera::Viewport;
 use crate::figure::Frame;
 use crate::format::{exponential, fixed};
 use crate::legend::{
-    Entry, Mark, TextBox, clear_place, draw_legend_row, draw_plot_key, legend_row_width, reach,
-    text_box,
+    Entry, Mark, TextBox, clear_place, draw_legend_row, draw_plot_key, legend_row_width, text_box,
 };
 use crate::object_view::{draw_object, object_camera};
 use crate::palette::{AXIS_X, AXIS_Y, AXIS_Z, GRID, INK, KLI, MUTED, SLERP};
@@ -210,11 +209,10 @@ pub fn draw_cover(pen: &Pen, model: &Model, mesh: &[Face], frame: &Frame) {
     };
     plane.label(pen, unit, pi / 2.0, 1.22, INK);
     taken.push(text_box(pen, unit, plane.at(pi / 2.0, 1.22), 12.5));
-    let (minus, plus) = ((6.5, 2.5), (7.0, 1.5));
-    pen.disc(plane.at(half + pi, 1.0), minus.0, Some("#ffffff"), Some((KLI, minus.1)));
-    pen.disc(plane.at(half, 1.0), plus.0, Some(KLI), Some((INK, plus.1)));
-    plane.clear_label(pen, "q", (half, reach(plus.0, plus.1)), KLI, &mut taken);
-    plane.clear_label(pen, "−q", (half + pi, reach(minus.0, minus.1)), KLI, &mut taken);
+    let minus = pen.disc(plane.at(half + pi, 1.0), 6.5, Some("#ffffff"), Some((KLI, 2.5)));
+    let plus = pen.disc(plane.at(half, 1.0), 7.0, Some(KLI), Some((INK, 1.5)));
+    plane.clear_label(pen, "q", (half, plus), KLI, &mut taken);
+    plane.clear_label(pen, "−q", (half + pi, minus), KLI, &mut taken);
     let q = model.turn();
     let (a, b) = if wide {
         ((objects.0, 0.0, objects.2, h / 2.0), (objects.0, h / 2.0, objects.2, h / 2.0))
@@ -314,9 +312,7 @@ pub fn draw_hopf(pen: &Pen, model: &Model, frame: &Frame) {
     {
         pen.alpha(if view.in_front(point) { 1.0 } else { 0.45 });
         let at = view.at(point);
-        let (radius, width) = (7.0, 2.0);
-        pen.disc(at, radius, Some(fill), Some((ring, width)));
-        let mark = reach(radius, width);
+        let mark = pen.disc(at, 7.0, Some(fill), Some((ring, 2.0)));
         let place =
             clear_place(pen, label, (at, view.at(DVec3::ZERO)), mark, 18.0, 12.0, &mut labels);
         pen.text(label, place, INK, 12.0, "center");
@@ -393,11 +389,9 @@ pub fn draw_lohe(pen: &Pen, model: &Model, frame: &Frame) {
     }
     let leader = hopf(swarm.leader);
     pen.alpha(if view.in_front(leader) { 1.0 } else { 0.45 });
-    let (radius, width) = (8.0, 2.0);
-    pen.disc(view.at(leader), radius, Some(KLI), Some((INK, width)));
+    let mark = pen.disc(view.at(leader), 8.0, Some(KLI), Some((INK, 2.0)));
     let centre = view.at(DVec3::ZERO);
     let pinned = &model.options.words.pinned;
-    let mark = reach(radius, width);
     let place = clear_place(pen, pinned, (view.at(leader), centre), mark, 20.0, 12.0, &mut labels);
     pen.text(pinned, place, INK, 12.0, "center");
     pen.alpha(1.0);
