@@ -318,12 +318,10 @@ E2E_LATE := $(filter-out $(E2E_EARLY),$(wildcard tests/e2e/*.test.mjs))
 # still running when the Rust lane ends is a short one: the machine is half idle until it ends
 # (smaller first, fuzz.test.mjs, 35 s, began 16 s before the Rust lane's end, and the machine
 # stayed 37–71% busy for the 20 s until it ended). How many fit depends on the machine: on a slow
-# one the Rust lane ends first and none run here. average.test.mjs leads: its longest test waits
-# 15 s for the page to play to its end, a core idle that the Rust lane takes here but nothing
-# would after it (last, it ran 18 s past the Rust lane with the machine 50–80% idle).
-E2E_FLEX := $(addprefix tests/e2e/,average.test.mjs page.test.mjs fuzz.test.mjs contract.test.mjs \
+# one the Rust lane ends first and none run here.
+E2E_FLEX := $(addprefix tests/e2e/,page.test.mjs fuzz.test.mjs contract.test.mjs \
               first-picture.test.mjs learn.test.mjs poses.test.mjs sync.test.mjs hostile-load.test.mjs swarm.test.mjs video.test.mjs \
-              keyframes.test.mjs slides.test.mjs embed.test.mjs exports.test.mjs examples.test.mjs)
+              keyframes.test.mjs slides.test.mjs embed.test.mjs average.test.mjs exports.test.mjs examples.test.mjs)
 ifneq ($(sort $(E2E_FLEX)),$(sort $(E2E_LATE)))
 $(error E2E_FLEX must list every end-to-end file not in E2E_EARLY: $(filter-out $(E2E_FLEX),$(E2E_LATE)) missing)
 endif
