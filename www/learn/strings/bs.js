@@ -123,28 +123,33 @@ export const page = {
     <dfn id="def-double-cover">dvostruko natkrivanje</dfn>, i metoda na rotacijama mora ili zanemariti predznak ili
     reći koji uzima.`,
   "cover.p3":
-    `Čitaj svaki jedinični kvaternion <var>a</var> + <var>b</var> i + <var>c</var> j + <var>d</var> k kao vektor
-    (<var>a</var>, <var>b</var>, <var>c</var>, <var>d</var>) u R⁴. Za dva takva, <var>p</var> i <var>r</var>, ugao
-    <var>φ</var> između njih je uobičajeni, iz skalarnog proizvoda dva četverodimenzionalna vektora: cos
-    <var>φ</var> = <var>p</var>·<var>r</var>. On mjeri koliko su rotacije udaljene. Okret koji vodi <var>p</var> u
-    <var>r</var> je <var>r</var> <var>p̄</var>, a njegov realni dio je <var>p</var>·<var>r</var> = cos
-    <var>φ</var>; po odjeljku 2 realni dio cos(<var>θ</var>/2) znači okret za <var>θ</var>, pa rotacija od
-    <var>p</var> do <var>r</var> okreće za 2<var>φ</var>. (Kad je <var>p</var>·<var>r</var> &lt; 0, ugao 2<var>φ</var>
-    je veći od 180°, a ista rotacija je okret za 360° − 2<var>φ</var> u suprotnom smjeru.) Najkraći put po sferi je luk velikog kruga (presjeka sfere i ravni kroz njen centar), <dfn id="def-geodesic">geodezijska linija</dfn>.
-    Između dvije rotacije postoje dva takva luka, do <var>r</var> i do −<var>r</var>; „najkraći put” bira onaj za
-    koji je <var>p</var>·<var>r</var> ≥ 0. <a href="#kli">KLI</a>, metoda iz rada (odjeljak 7), ne bira: kad je
-    <var>p</var>·<var>r</var> &lt; 0, teče dužim putem, pa prvo promijeni predznak od <var>r</var> tako da bude
-    <var>p</var>·<var>r</var> ≥ 0.`,
+    `Posmatraj svaki jedinični kvaternion <var>a</var> + <var>b</var> i + <var>c</var> j + <var>d</var> k kao vektor
+    (<var>a</var>, <var>b</var>, <var>c</var>, <var>d</var>) u R⁴. Za dva takva kvaterniona, <var>p</var> i
+    <var>r</var>, ugao <var>φ</var> između njih je uobičajeni ugao, koji se dobija iz skalarnog proizvoda ta dva
+    četverodimenzionalna vektora: cos <var>φ</var> = <var>p</var>·<var>r</var>. On mjeri koliko su rotacije
+    udaljene jedna od druge.`,
+  "cover.p4":
+    `Kolika je ta udaljenost izražena kao okret? Okret koji prevodi <var>p</var> u <var>r</var> je <var>r</var>
+    <var>p̄</var>, a njegov realni dio je <var>p</var>·<var>r</var> = cos <var>φ</var>. Prema odjeljku 2, realni dio
+    cos(<var>θ</var>/2) odgovara okretu za <var>θ</var>, pa rotacija od <var>p</var> do <var>r</var> okreće za
+    2<var>φ</var>: uglovi na S³ su polovine uglova okreta. (Kad je <var>p</var>·<var>r</var> &lt; 0, ugao
+    2<var>φ</var> je veći od 180°, a ista rotacija je okret za 360° − 2<var>φ</var> u suprotnom smjeru.)`,
+  "cover.p5":
+    `Najkraći put po sferi je luk velikog kruga (presjeka sfere i ravni kroz njen centar), <dfn
+    id="def-geodesic">geodezijska linija</dfn>. Između dvije rotacije postoje dva takva luka, do <var>r</var> i do
+    −<var>r</var>; „najkraći put” bira onaj za koji je <var>p</var>·<var>r</var> ≥ 0. <a href="#kli">KLI</a>, metoda
+    iz rada (odjeljak 7), ne bira: kad je <var>p</var>·<var>r</var> &lt; 0, teče dužim putem, pa zato prvo treba
+    promijeniti predznak kvaterniona <var>r</var>, tako da bude <var>p</var>·<var>r</var> ≥ 0.`,
   "cover.caption1":
     `Lijevo (gore, na uskom ekranu): kružnica na S³ kroz 1 i osu <var>u</var>, luk od 1 do <var>q</var> i
     −<var>q</var> nasuprot. Desno (dolje): avion zaokrenut za <var>q</var> i za −<var>q</var>.`,
-  "cover.p4":
+  "cover.p6":
     `Pri <output id="cover-out">θ = 90°, q = 0.707 + 0.000 i + 0.000 j + 0.707 k</output> (pomjera ga i klizač ugla
     iz odjeljka 2).`,
   "cover.question1": "Predvidi, pa provjeri: koliko se avion mora okrenuti da bi q opet bio 1?",
-  "cover.p5":
+  "cover.p7":
     `Pogodi, pa <a class="set" href="?angle=720#cover" data-state='{"angle":720}'>postavi θ = 720°</a>.`,
-  "cover.p6":
+  "cover.p8":
     `<strong>Odgovor.</strong> Dva puna okreta. Nakon jednog okreta <var>q</var> = −1: ista rotacija, druga tačka.
     Tek na 720° <var>q</var> jednom obiđe svoju kružnicu.`,
   "slerp.title1": `<span class="number">4</span> SLERP: veliki krug konstantnom brzinom`,
@@ -332,8 +337,10 @@ export const page = {
     vuče, pa se preostali ugao u svakoj jedinici vremena smanjuje za gotovo isti udio i nikad ne dostiže 0. Zato
     metoda staje kad se <var>q</var> približi <var>r</var> na manje od zadate tolerancije (v. u nastavku).`,
   "kli.caption2":
-    `Iskrivljenje vremena <var>s</var>(<var>t</var>) za <span class="kli">KLI</span> naspram <span class="slerp">SLERP</span>-a izvedenog
-    za isto vrijeme, <var>t</var>/<var>T</var>, gdje je <var>T</var> trenutak u kojem se Algoritam 1 zaustavlja (ispod).`,
+    `Iskrivljenje vremena <var>s</var>(<var>t</var>) za <span class="kli">KLI</span> naspram <span class="slerp">SLERP</span>-a
+    raspoređenog na isto vrijeme, <var>t</var>/<var>T</var>, gdje je <var>T</var> trenutak u kojem se metoda
+    zaustavlja, čim je <var>q</var> unutar tolerancije oko <var>r</var> (izračunato u nastavku: 11.66 za primjer iz
+    rada).`,
   "kli.p6":
     `<dfn id="def-algorithm-1">Algoritam 1</dfn> iz rada računa tok korak po korak: počni od <var>q</var> =
     <var>p</var>; napravi korak dužine <var>δ</var> u vremenu (ovdje metodom RK4, odjeljak 8); stani čim je

@@ -128,26 +128,29 @@ export const page = {
     `Read each unit quaternion <var>a</var> + <var>b</var> i + <var>c</var> j + <var>d</var> k as the vector
     (<var>a</var>, <var>b</var>, <var>c</var>, <var>d</var>) of R⁴. For two of them, <var>p</var> and <var>r</var>,
     the angle <var>φ</var> between them is the usual one, from the dot product of the two four-vectors: cos
-    <var>φ</var> = <var>p</var>·<var>r</var>. It measures how far apart the rotations are. The turn that takes
-    <var>p</var> to <var>r</var> is <var>r</var> <var>p̄</var>, whose real part is <var>p</var>·<var>r</var> = cos
-    <var>φ</var>; by section 2 a real part cos(<var>θ</var>/2) is a turn by <var>θ</var>, so the rotation from
-    <var>p</var> to <var>r</var> turns by 2<var>φ</var>. (When <var>p</var>·<var>r</var> &lt; 0, 2<var>φ</var> is
-    more than 180°, and the same rotation is the turn by 360° − 2<var>φ</var> the other way.) The shortest way along the sphere is an arc of a great circle (where the sphere meets a plane through its
-    centre), a <dfn
-    id="def-geodesic">geodesic</dfn>. Between two rotations there are two such arcs, to <var>r</var> and to
-    −<var>r</var>; “the shortest path” takes the one with <var>p</var>·<var>r</var> ≥ 0. <a href="#kli">KLI</a>, the paper's
-    method (section 7), does not choose: from <var>p</var>·<var>r</var> &lt; 0 it flows the long way round, so first
-    flip <var>r</var> to make <var>p</var>·<var>r</var> ≥ 0.`,
+    <var>φ</var> = <var>p</var>·<var>r</var>. It measures how far apart the rotations are.`,
+  "cover.p4":
+    `How far, as a turn? The turn that takes <var>p</var> to <var>r</var> is <var>r</var> <var>p̄</var>, whose real
+    part is <var>p</var>·<var>r</var> = cos <var>φ</var>. By section 2 a real part cos(<var>θ</var>/2) is a turn by
+    <var>θ</var>, so the rotation from <var>p</var> to <var>r</var> turns by 2<var>φ</var>: angles on S³ are half
+    the angles of the turns. (When <var>p</var>·<var>r</var> &lt; 0, 2<var>φ</var> is more than 180°, and the same
+    rotation is the turn by 360° − 2<var>φ</var> the other way.)`,
+  "cover.p5":
+    `The shortest way along the sphere is an arc of a great circle (where the sphere meets a plane through its
+    centre), a <dfn id="def-geodesic">geodesic</dfn>. Between two rotations there are two such arcs, to
+    <var>r</var> and to −<var>r</var>; “the shortest path” takes the one with <var>p</var>·<var>r</var> ≥ 0.
+    <a href="#kli">KLI</a>, the paper's method (section 7), does not choose: from <var>p</var>·<var>r</var> &lt; 0
+    it flows the long way round, so first flip <var>r</var> to make <var>p</var>·<var>r</var> ≥ 0.`,
   "cover.caption1":
     `Left (above, on a narrow screen): the circle of S³ through 1 and the axis <var>u</var>, the arc from 1 to
     <var>q</var>, and −<var>q</var> opposite. Right (below): the aircraft turned by <var>q</var> and by −<var>q</var>.`,
-  "cover.p4":
+  "cover.p6":
     `At <output id="cover-out">θ = 90°, q = 0.707 + 0.000 i + 0.000 j + 0.707 k</output> (the angle slider of section
     2 moves it too).`,
   "cover.question1": "Predict, then check: how far must the aircraft turn before q is back at 1?",
-  "cover.p5":
+  "cover.p7":
     `Guess, then <a class="set" href="?angle=720#cover" data-state='{"angle":720}'>set θ = 720°</a>.`,
-  "cover.p6":
+  "cover.p8":
     `<strong>Answer.</strong> Two full turns. After one turn <var>q</var> = −1: the same rotation, the other point.
     Only at 720° has <var>q</var> gone once round its circle.`,
   "slerp.title1": `<span class="number">4</span> SLERP: the great circle at constant speed`,
@@ -334,7 +337,8 @@ export const page = {
     That is why the method stops once <var>q</var> is within a tolerance of <var>r</var> (below).`,
   "kli.caption2":
     `<span class="kli">KLI</span>'s time warp <var>s</var>(<var>t</var>) against <span class="slerp">SLERP</span> run over the
-    same time, <var>t</var>/<var>T</var>, where <var>T</var> is the time at which Algorithm 1 stops (below).`,
+    same time, <var>t</var>/<var>T</var>, where <var>T</var> is the time at which the method stops, once <var>q</var> is within the tolerance of <var>r</var> (worked
+    out below: 11.66 for the paper's example).`,
   "kli.p6":
     `<dfn id="def-algorithm-1">Algorithm 1</dfn> of the paper computes the flow step by step: start at <var>q</var> =
     <var>p</var>; take a step of length <var>δ</var> in time (here by RK4, section 8); stop once ‖<var>r</var> −
