@@ -77,33 +77,50 @@ export const page = {
     <var>b</var>² + <var>c</var>² + <var>d</var>²), njegov konjugovani kvaternion je <var>q̄</var> = <var>a</var> −
     <var>b</var> i − <var>c</var> j − <var>d</var> k, a <dfn id="def-unit-quaternion">jedinični kvaternion</dfn> je
     kvaternion dužine 1.`,
-  "turn.p2": "Okret za <var>θ</var> oko <var>u</var> je jedinični kvaternion",
-  "turn.p3":
+  "turn.p2":
+    `Proizvodi se najbrže računaju pomoću vektora. Zapiši kvaternion kao zbir realnog i vektorskog dijela,
+    <var>a</var> + <var>m</var>, gdje je <var>m</var> = <var>b</var> i + <var>c</var> j + <var>d</var> k, a
+    jedinice i, j i k čitaj kao jedinične vektore duž <var>x</var>, <var>y</var> i <var>z</var>. Realni brojevi
+    komutiraju s jedinicama i, j i k, a gornja pravila daju (<var>a</var> + <var>m</var>)(<var>b</var> +
+    <var>n</var>) = (<var>a</var><var>b</var> − <var>m</var>·<var>n</var>) + (<var>a</var><var>n</var> +
+    <var>b</var><var>m</var> + <var>m</var> × <var>n</var>), uz skalarni i vektorski proizvod u R³ (probaj
+    <var>m</var> = i, <var>n</var> = j: 0 + i × j = k). Iz toga slijede tri činjenice koje se koriste kroz
+    cijeli vodič. Prvo, <var>q</var><var>q̄</var> = <var>q̄</var><var>q</var> = |<var>q</var>|², pa kod
+    jediničnog kvaterniona <var>q̄</var> poništava <var>q</var>. Drugo, konjugovani kvaternion proizvoda je
+    proizvod konjugovanih kvaterniona obrnutim redom: <var>q̄</var><var>p̄</var> za <var>p</var><var>q</var>,
+    jer je <var>m</var> × <var>n</var> = −<var>n</var> × <var>m</var>. Treće, realni dio proizvoda
+    <var>r</var><var>p̄</var> je zbir četiri proizvoda odgovarajućih dijelova kvaterniona <var>p</var> i
+    <var>r</var>.`,
+  "turn.p3": "Okret za <var>θ</var> oko <var>u</var> je jedinični kvaternion",
+  "turn.p4":
     `<var>q</var> = cos(<var>θ</var>/2) + sin(<var>θ</var>/2) (<var>u<sub>x</sub></var> i + <var>u<sub>y</sub></var>
     j + <var>u<sub>z</sub></var> k),`,
-  "turn.p4":
-    `i on okreće vektor <var>v</var>, zapisan kao <var>v<sub>x</sub></var> i + <var>v<sub>y</sub></var> j +
-    <var>v<sub>z</sub></var> k, u <var>q</var> <var>v</var> <var>q̄</var>. Provjeri to na prvom okretu sa slike, 90° oko <var>z</var>:
-    <var>q</var> = (1 + k)/√2, a <var>q̄</var> = (1 − k)/√2. Tada je <var>q</var> i = (i + ki)/√2 = (i + j)/√2, a
-    (i + j)(1 − k)/2 = (i − ik + j − jk)/2 = (i + j + j − i)/2 = j: nos, <var>x</var>, ide u <var>y</var>, četvrtina
-    punog okreta. Svaki od dva činioca, <var>q</var> slijeva i <var>q̄</var> zdesna, okreće za <var>θ</var>/2, i
-    zato <var>q</var> sadrži polovinu ugla. Jedan okret za drugim je proizvod: <var>q</var>₂<var>q</var>₁ prvo
-    okreće za <var>q</var>₁. Četiri broja i jedan uslov, |<var>q</var>| = 1, a ako ga zaokruživanje pokvari, dijeljenje <var>q</var> sa
-    |<var>q</var>| ga vraća.`,
+  "turn.p5":
+    `i on vektor <var>v</var>, zapisan kao <var>v<sub>x</sub></var> i + <var>v<sub>y</sub></var> j +
+    <var>v<sub>z</sub></var> k, prevodi u <var>q</var> <var>v</var> <var>q̄</var>. Provjeri to na prvom okretu
+    sa slike, 90° oko <var>z</var>: <var>q</var> = (1 + k)/√2, a <var>q̄</var> = (1 − k)/√2. Tada je
+    <var>q</var> i = (i + ki)/√2 = (i + j)/√2, a (i + j)(1 − k)/2 = (i − ik + j − jk)/2 = (i + j + j − i)/2 = j:
+    nos, <var>x</var>, ide u <var>y</var>, četvrtina punog okreta. Pogledaj stanje na pola puta: <var>q</var> i
+    = (i + j)/√2 je vektor i već okrenut za 45° oko <var>z</var>, a množenje s <var>q̄</var> zdesna okreće ga za
+    preostalih 45°. Vektor okomit na osu svaki činilac okreće za <var>θ</var>/2, i zato <var>q</var> sadrži
+    polovinu ugla; vektor duž ose par činilaca zajedno ne mijenja, iako ga svaki činilac sam mijenja:
+    <var>q</var> k <var>q̄</var> = k. Jedan okret za drugim je proizvod: <var>q</var>₂<var>q</var>₁ prvo okreće
+    za <var>q</var>₁. Četiri broja i jedan uslov, |<var>q</var>| = 1, a ako ga zaokruživanje pokvari, dijeljenje
+    <var>q</var> sa |<var>q</var>| ga ponovo uspostavlja.`,
   "turn.caption1":
     `Avion zaokrenut za <var>q</var>. Isprekidana linija je osa okreta, nepomična u svijetu. Obojene strelice su ose
     tijela aviona, koje se okreću zajedno s njim: <span class="x">x</span> (nos), <span class="y">y</span> (krilo),
     <span class="z">z</span> (vertikalni stabilizator). Prije okreta leže duž osa svijeta <var>x</var>, <var>y</var> i
     <var>z</var>, pa nakon njega svaka pokazuje kuda <var>q</var> šalje tu osu svijeta.`,
   "turn.legend1": "Okret",
-  "turn.p5":
+  "turn.p6":
     `Četiri broja sada: <output id="turn-out">q = 0.707 + 0.000 i + 0.000 j + 0.707 k</output>.`,
   "turn.question1":
     `Predvidi, pa provjeri: okret za 120° oko dijagonale (1, 1, 1)/√3. Koja su četiri broja i kamo ide nos?`,
-  "turn.p6":
+  "turn.p7":
     `Prvo to izračunaj iz formule. Zatim <a class="set" href="?axis=diagonal&amp;angle=120#turn"
     data-state='{"axis":"diagonal","angle":120}'>postavi 120° oko dijagonale</a>.`,
-  "turn.p7":
+  "turn.p8":
     `<strong>Odgovor.</strong> cos 60° = 0.5, sin 60° = 0.866, a svaka komponenta ose je 1/√3 = 0.577, pa svaka od
     jedinica i, j, k dobija 0.866 × 0.577 = 0.5: <var>q</var> = 0.5 + 0.5 i + 0.5 j + 0.5 k, što je rotacija <var>r</var>
     iz primjera u radu, koju ponovo srećemo u odjeljku 4. Trećina punog okreta oko dijagonale kružno premješta ose: nos, osa <var>x</var>, ide u
@@ -130,8 +147,9 @@ export const page = {
     udaljene jedna od druge.`,
   "cover.p4":
     `Kolika je ta udaljenost izražena kao okret? Okret koji prevodi <var>p</var> u <var>r</var> je <var>r</var>
-    <var>p̄</var>, a njegov realni dio je <var>p</var>·<var>r</var> = cos <var>φ</var>. Prema odjeljku 2, realni dio
-    cos(<var>θ</var>/2) odgovara okretu za <var>θ</var>, pa rotacija od <var>p</var> do <var>r</var> okreće za
+    <var>p̄</var>, jer je (<var>r</var> <var>p̄</var>) <var>p</var> = <var>r</var> (<var>p̄</var> <var>p</var>) =
+    <var>r</var>, a prema odjeljku 2 njegov realni dio je <var>p</var>·<var>r</var> = cos <var>φ</var>. Realni dio
+    cos(<var>θ</var>/2) odgovara okretu za <var>θ</var> (opet odjeljak 2), pa rotacija od <var>p</var> do <var>r</var> okreće za
     2<var>φ</var>: uglovi na S³ su polovine uglova okreta. (Kad je <var>p</var>·<var>r</var> &lt; 0, ugao
     2<var>φ</var> je veći od 180°, a ista rotacija je okret za 360° − 2<var>φ</var> u suprotnom smjeru.)`,
   "cover.p5":
@@ -266,18 +284,23 @@ export const page = {
     2(<var>q<sub>i</sub></var>·<var>q<sub>j</sub></var>)<var>q<sub>i</sub></var> − <var>q<sub>j</sub></var> (odjeljak
     7 koristi isti identitet), pa je svaki sabirak 2(<var>q<sub>j</sub></var> −
     (<var>q<sub>i</sub></var>·<var>q<sub>j</sub></var>) <var>q<sub>i</sub></var>): privlačenje prema svakom drugom
-    oscilatoru bez dijela duž <var>q<sub>i</sub></var>. Na kružnici je to gornja jednačina faza, sa svim
-    <var>ω<sub>i</sub></var> = 0: stavi <var>z<sub>i</sub></var> = e<sup>i<var>θ<sub>i</sub></var></sup> umjesto
+    oscilatoru bez dijela duž <var>q<sub>i</sub></var>.`,
+  "kuramoto.p11":
+    `Provjera na kružnici: tamo je to gornja jednačina faza, sa svim <var>ω<sub>i</sub></var> = 0. Stavi <var>z<sub>i</sub></var> = e<sup>i<var>θ<sub>i</sub></var></sup> umjesto
     <var>q<sub>i</sub></var>; tada je <var>z<sub>j</sub></var> − <var>z<sub>i</sub></var> <var>z̄<sub>j</sub></var>
     <var>z<sub>i</sub></var> = 2i sin(<var>θ<sub>j</sub></var> − <var>θ<sub>i</sub></var>) <var>z<sub>i</sub></var> i
     <var>z<sub>i</sub></var>′ = i<var>θ<sub>i</sub></var>′ <var>z<sub>i</sub></var>, pa je
     <var>θ<sub>i</sub></var>′ = (<var>K</var>/<var>N</var>) Σ<sub><var>j</var></sub> sin(<var>θ<sub>j</sub></var> −
-    <var>θ<sub>i</sub></var>). Fiksiraj jednog od njih u rotaciji <var>r</var>,
-    tako da se nikad ne pomjera: to je <dfn id="def-leader">vođa</dfn>, a ostali, <em>sljedbenici</em>, se usklade,
-    a zatim se smire na njemu. S jednim sljedbenikom, <var>N</var> = 2, sljedbenik zadovoljava
+    <var>θ<sub>i</sub></var>).`,
+  "kuramoto.p12":
+    `Sada fiksiraj jednog od njih u rotaciji <var>r</var>, tako da se nikad ne pomjera: to je <dfn id="def-leader">vođa</dfn>, a ostali, <em>sljedbenici</em>, se usklade,
+    a zatim se smire na njemu. S jednim sljedbenikom, <var>N</var> = 2 (sabirak
+    za <var>j</var> = <var>i</var> je 0), sljedbenik zadovoljava
     <var>q</var>′ = (<var>K</var>/2)(<var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>): metoda iz rada
     (tačno pri <var>K</var> = 2; drugi <var>K</var> prolazi isti put po satu koji je <var>K</var>/2 puta brži), u
-    sljedećem odjeljku. Koliko se slažu, mjeri se kao na kružnici: parametar reda na S³ je dužina <var>R</var> =
+    sljedećem odjeljku.`,
+  "kuramoto.p13":
+    `Koliko se slažu, mjeri se kao na kružnici: parametar reda na S³ je dužina <var>R</var> =
     |(1/<var>N</var>) Σ<sub><var>j</var></sub> <var>q<sub>j</sub></var>| srednje vrijednosti kvaterniona
     <var>q<sub>j</sub></var> kao tačaka u R⁴ (računajući i vođu), 1 kad su svi u jednoj tački, mali kad su
     raspršeni po S³. Nije neosjetljiv na predznak: <var>q</var> i −<var>q</var> u prosjeku daju 0, pa <var>R</var>
@@ -397,9 +420,13 @@ export const page = {
     <var>h</var><var>v</var>|² = 1 + <var>h</var>²|<var>v</var>|² kad je <var>v</var> okomit na <var>q</var>. <dfn
     id="def-rk4">RK4</dfn>, klasična Runge–Kutta metoda četvrtog reda, računa izvod četiri puta u jednom koraku i
     uzima njihov ponderisani prosjek, (<var>k</var>₁ + 2<var>k</var>₂ + 2<var>k</var>₃ + <var>k</var>₄)/6, gdje su <var>k</var>₁ do <var>k</var>₄
-    te četiri vrijednosti izvoda (a ne kvaternionska jedinica k); njena greška opada kao <var>h</var>⁴, a tako i njeno odstupanje od sfere.
-    <strong>Geodezijski</strong> korak uzima prirast metode RK4 kao okret duž velikog kruga, pa je |<var>q</var>| =
-    1 po konstrukciji. Ovaj tok, zapisan kao <var>q</var>′ = <var>r</var> − (<var>q</var>·<var>r</var>)<var>q</var>
+    te četiri vrijednosti izvoda (a ne kvaternionska jedinica k); njena greška opada kao <var>h</var>⁴, a tako i njeno odstupanje od sfere.`,
+  "integrators.p5":
+    `<strong>Geodezijski</strong> korak uzima prirast <var>Δ</var> metode RK4 i, umjesto da ga doda, ide po velikom
+    krugu u njegovom smjeru: do <var>q</var> cos <var>α</var> + <var>u</var> sin <var>α</var>, gdje je <var>u</var>
+    jedinični vektor duž dijela od <var>Δ</var> okomitog na <var>q</var>, a <var>α</var> ugao između <var>q</var> i
+    <var>q</var> + <var>Δ</var>. Dva međusobno okomita jedinična vektora, pomnožena kosinusom i sinusom istog ugla,
+    uvijek daju dužinu 1, pa je |<var>q</var>| = 1 po konstrukciji. Ovaj tok, zapisan kao <var>q</var>′ = <var>r</var> − (<var>q</var>·<var>r</var>)<var>q</var>
     (oblik koji ova stranica integrira; izvan sfere razlikuje se od −½(<var>q</var> <var>r̄</var> <var>q</var> −
     <var>r</var>) iz jednačine 3), vraća zalutali |<var>q</var>| prema 1: za svako
     <var>q</var>, d|<var>q</var>|²/d<var>t</var> = 2 <var>q</var>·<var>q</var>′ = 2(<var>q</var>·<var>r</var>)(1 −
@@ -428,8 +455,13 @@ export const page = {
     iz <var>p</var> brzinom <var>v</var>, |<var>v</var>| = sin <var>φ</var>₀ = 0.866, korak završava na dužini √(1
     + <var>h</var>²|<var>v</var>|²), odstupanje √(1 + 0.1875) − 1 = 0.090; nakon toga tok vraća |<var>q</var>|
     nazad (0.057, zatim 0.017). Pri <var>h</var> = 0.25 prvi korak daje √(1 + 0.047) − 1 = 0.023, a drugi gura još
-    malo dalje, do 0.032, prije nego što privlačenje prevlada. Odstupanje prvog koraka opada kao <var>h</var>² (4
-    puta), ravnoteža guranja i privlačenja iz koraka u korak kao <var>h</var> (2 puta); ovdje je između, 2.8. Kod
+    malo dalje, do 0.032, prije nego što privlačenje prevlada. Zašto između: svaki Eulerov korak gura
+    |<var>q</var>|² prema van za <var>h</var>²|<var>v</var>|² i, po formuli za d|<var>q</var>|²/d<var>t</var> iznad,
+    vraća višak |<var>q</var>|² − 1 za otprilike 2<var>h</var>(<var>q</var>·<var>r</var>) puta taj višak. To dvoje je
+    u ravnoteži pri višku od otprilike <var>h</var>|<var>v</var>|²/(2<var>q</var>·<var>r</var>), srazmjernom
+    <var>h</var>: kad se <var>h</var> prepolovi, i on se prepolovi. Odstupanje prvog koraka, otprilike
+    <var>h</var>²|<var>v</var>|²/2, umjesto toga postane 4 puta manje. Pri <var>h</var> = 0.5 najveće odstupanje je
+    u prvom koraku, a pri 0.25 u nekom kasnijem, na putu ka ravnoteži: 2.8 je između 2 i 4. Kod
     RK4 ide kao <var>h</var>⁴ (2⁴ = 16, nešto više pri ovako velikom koraku). Geodezijski korak ostaje na nivou
     zaokruživanja, oko 10⁻¹⁶.`,
   "many.title1": `<span class="number">9</span> Mnogo rotacija`,
@@ -530,25 +562,39 @@ export const page = {
     pomak uravnoteži: <var>R</var> je 0.000 do <var>t</var> = 8 na vlastitom satu slike. Razmaknute su već bile.`,
   "many.heading3": "Usrednjavanje: jedna rotacija iz mnogo zašumljenih",
   "many.p4":
-    `Kamera robota mnogo puta mjeri svoju orijentaciju, svaki put malo pogrešno, a nekoliko puta jako pogrešno: to su
-    <dfn id="def-outlier">izuzeci</dfn> (autlajeri). Jedan sljedbenik koji privlače sva mjerenja odjednom, svako privlačenje pomnoženo sa
-    <var>q</var>·<var>r<sub>j</sub></var> da predznaci ne bi bili bitni, smiri se u
-    <dfn id="def-chordal">tetivnoj sredini</dfn>, rotaciji <var>q</var> koja maksimizira
-    Σ(<var>q</var>·<var>r<sub>j</sub></var>)² (neosjetljivo na predznak svakog mjerenja). <em>Tetivna</em> znači da
-    se udaljenost mjeri pravo, između matrica rotacije, a ne po sferi: ‖<var>R<sub>q</sub></var> −
-    <var>R<sub>j</sub></var>‖² = 8(1 − (<var>q</var>·<var>r<sub>j</sub></var>)²), isto za <var>r<sub>j</sub></var>
-    i −<var>r<sub>j</sub></var>, pa kratkoj tetivi odgovara velik skalarni proizvod. (Kvadrat tetive između samih
-    kvaterniona, |<var>q</var> − <var>r<sub>j</sub></var>|² = 2 − 2 <var>q</var>·<var>r<sub>j</sub></var>, daje
-    umjesto toga <em>kvaternionsku sredinu</em>: četiri broja mjerenja usrednjena, pa podijeljena dužinom. Ona zavisi
-    od predznaka, pa se mjerenja prvo sva stave na istu stranu S³.) <dfn id="def-karcher">Karcherova sredina</dfn> umjesto toga minimizira zbir
-    kvadrata uglova okreta do mjerenja. Izuzeci povlače obje sredine. <dfn
-    id="def-median">Medijan</dfn>, rotaciju s najmanjim zbirom uglova (ne kvadrata) do mjerenja, izuzeci povlače mnogo manje:
-    izuzetak ga ne vuče jače od bliskog mjerenja. Stranica <a href="average.html">Usrednjavanje</a> računa sve četiri. Pomjeri udio izuzetaka. Na slici je svaka tačka mjesto kamo
-    mjerenje usmjerava nos, njegova Hopfova slika <var>h</var>(<var>r<sub>j</sub></var>); izuzeci imaju svoju boju i
-    dobiju prsten kad ih medijan izdvoji. ★ je istina, ● sljedbenik na putu od 1. Četiri sredine su bijeli krugovi
-    s prstenom u svojoj boji: tetivna sredina narandžasto, kvaternionska sredina zeleno, Karcherova (geodezijska) sredina ljubičasto, medijan plavo.
-    (Legenda slike imenuje svaku; stranica <a href="average.html">Usrednjavanje</a> ih prikazuje uz stupce istih
-    boja.)`,
+    `Kamera robota mnogo puta mjeri svoju orijentaciju, svaki put malo pogrešno, a nekoliko puta jako pogrešno:
+    ta mjerenja su <dfn id="def-outlier">izuzeci</dfn> (autlajeri). Jednog sljedbenika privlače sva mjerenja
+    odjednom, a privlačenje prema <var>r<sub>j</sub></var> ima težinu <var>q</var>·<var>r<sub>j</sub></var>. Ako
+    <var>r<sub>j</sub></var> zamijeniš sa −<var>r<sub>j</sub></var>, i privlačenje i njegova težina mijenjaju
+    predznak, pa se njihov proizvod ne mijenja: predznaci nisu bitni. Sljedbenik se smiri u <dfn
+    id="def-chordal">tetivnoj sredini</dfn>, rotaciji <var>q</var> koja maksimizira
+    Σ(<var>q</var>·<var>r<sub>j</sub></var>)².`,
+  "many.p17":
+    `<em>Tetivna</em> znači da se udaljenost ne mjeri po sferi, nego pravo kroz unutrašnjost, između matrica
+    rotacije 3 × 3, <var>R<sub>q</sub></var> i <var>R<sub>j</sub></var>, koje pripadaju kvaternionima
+    <var>q</var> i <var>r<sub>j</sub></var>; veličina matrice ovdje je kvadratni korijen zbira kvadrata njenih
+    devet elemenata. Ako se dvije rotacije razlikuju za okret <var>θ</var>, onda je ‖<var>R<sub>q</sub></var> −
+    <var>R<sub>j</sub></var>‖² = 3 + 3 − 2(1 + 2 cos <var>θ</var>) = 4 − 4 cos <var>θ</var>: svaka matrica ima
+    tri jedinične kolone, a zbir devet proizvoda odgovarajućih elemenata jedne i druge matrice je 1 + 2 cos
+    <var>θ</var>, trag okreta za <var>θ</var>. Kako je <var>θ</var> = 2<var>φ</var> (odjeljak 3) i cos
+    2<var>φ</var> = 2(<var>q</var>·<var>r<sub>j</sub></var>)² − 1, to je jednako 8(1 −
+    (<var>q</var>·<var>r<sub>j</sub></var>)²), isto za <var>r<sub>j</sub></var> i −<var>r<sub>j</sub></var>:
+    kratkoj tetivi odgovara velik skalarni proizvod. (Kvadrat tetive između samih kvaterniona, |<var>q</var> −
+    <var>r<sub>j</sub></var>|² = 2 − 2 <var>q</var>·<var>r<sub>j</sub></var>, daje umjesto toga
+    <em>kvaternionsku sredinu</em>: prosjek mjerenja kao četvorki brojeva, podijeljen svojom dužinom. Ona zavisi
+    od predznaka, pa se mjerenja prvo sva stave na istu stranu S³.)`,
+  "many.p18":
+    `<dfn id="def-karcher">Karcherova sredina</dfn> umjesto toga minimizira zbir kvadrata uglova okreta do
+    mjerenja. Izuzeci odvlače obje sredine. <dfn id="def-median">Medijan</dfn>, rotaciju s najmanjim zbirom
+    uglova (ne kvadrata) do mjerenja, izuzeci odvlače mnogo manje: izuzetak ga ne vuče jače od bliskog mjerenja.
+    Stranica <a href="average.html">Usrednjavanje</a> računa sve četiri.`,
+  "many.p19":
+    `Pomjeri udio izuzetaka. Na slici svaka tačka pokazuje kamo mjerenje usmjerava nos: to je njegova Hopfova
+    slika <var>h</var>(<var>r<sub>j</sub></var>); izuzeci imaju posebnu boju i dobiju prsten čim ih medijan
+    izdvoji. ★ je istina, ● sljedbenik na putu od 1. Četiri sredine su bijeli krugovi s prstenom u svojoj boji:
+    tetivna sredina narandžasto, kvaternionska sredina zeleno, Karcherova (geodezijska) sredina ljubičasto,
+    medijan plavo. (Legenda slike imenuje svaku; stranica <a href="average.html">Usrednjavanje</a> ih prikazuje
+    uz stupce istih boja.)`,
   "many.heading4": "Sinhronizacija rotacija na grafu",
   "many.p5":
     `Robot koji mapira zgradu (SLAM, simultana lokalizacija i mapiranje: istovremeno gradi mapu i pronalazi sebe u
@@ -566,14 +612,16 @@ export const page = {
     (Ako provjera ne uspije, ništa nije dokazano ni u jednom smjeru.) Pogrešne grane, izuzeci grafa, pronalaze se i
     izdvajaju.`,
   "many.p7":
-    `Na slici je <var>f</var> ispisan na vrhu dok ga tok smanjuje: model iz rada pokrenut na grafu, u kojem svaka
-    grana vuče oba svoja čvora, svaki prema mjestu na kojem bi, prema njenom mjerenju, trebao biti. Svaka grana je obojena prema tome koliko se njeno
-    mjerenje razlikuje od trenutnog rješenja: plavo ispod 2°, tirkizno 2–5°, zeleno 5–15°, narandžasto 15–45°,
-    crveno 45° ili više; pogrešna grana je isprekidana. Svaki čvor nosi iglu: svoju grešku (okret od svoje prave
-    rotacije do rotacije iz rješenja, nakon jednog zajedničkog okreta koji cijelo rješenje najbolje poravna s
-    istinom; mjerenja između parova ne mogu otkriti zajednički okret svih čvorova, pa je rješenje određeno samo do na
-    taj jedan okret) primijenjenu na osu <var>x</var> tijela, gledano odozgo. Igla pokazuje desno kad se čvor slaže s
-    istinom.`,
+    `Na slici je <var>f</var> ispisan na vrhu dok ga tok smanjuje: model iz rada pokrenut na grafu, u kojem
+    svaka grana vuče oba svoja čvora, svaki ka mjestu na kojem bi, po njenom mjerenju, trebao biti. Svaka grana
+    je obojena prema tome koliko se njeno mjerenje razlikuje od trenutnog rješenja: plavo ispod 2°, tirkizno
+    2–5°, zeleno 5–15°, narandžasto 15–45°, crveno 45° ili više; pogrešna grana je isprekidana. Mjerenja između
+    parova ne određuju čvorove jednoznačno: ako se svi čvorovi okrenu jednom zajedničkom rotacijom <var>G</var>,
+    svaki proizvod (<var>G</var> <var>R<sub>i</sub></var>)ᵀ(<var>G</var> <var>R<sub>j</sub></var>) =
+    <var>R<sub>i</sub></var>ᵀ<var>R<sub>j</sub></var> ostaje isti. Zato se rješenje poredi s istinom tek nakon
+    jednog zajedničkog okreta koji ih najbolje poravna. Svaki čvor zatim nosi iglu: okret koji još ostaje između
+    njegove prave rotacije i rotacije iz rješenja, primijenjen na osu <var>x</var> tijela, gledano odozgo. Igla
+    pokazuje udesno kad se čvor slaže s istinom.`,
   "many.question1":
     `Predvidi, pa provjeri: na slici usrednjavanja, kad je pola mjerenja izuzetaka, koje sredine ostaju blizu istine?`,
   "many.p8":

@@ -78,17 +78,31 @@ export const page = {
     to multiply. The order matters: ij = k, jk = i, ki = j, but ji = −k, kj = −i, ik = −j. Its length is |<var>q</var>| = √(<var>a</var>² +
     <var>b</var>² + <var>c</var>² + <var>d</var>²), its conjugate is <var>q̄</var> = <var>a</var> − <var>b</var> i −
     <var>c</var> j − <var>d</var> k, and a <dfn id="def-unit-quaternion">unit quaternion</dfn> is one of length 1.`,
-  "turn.p2": "The turn by <var>θ</var> about <var>u</var> is the unit quaternion",
-  "turn.p3":
+  "turn.p2":
+    `Products are quickest with vectors. Write a quaternion as a real part and a vector part, <var>a</var> +
+    <var>m</var> with <var>m</var> = <var>b</var> i + <var>c</var> j + <var>d</var> k, reading i, j and k as the unit
+    vectors along <var>x</var>, <var>y</var> and <var>z</var>. Real numbers commute with i, j and k, and the rules
+    above give (<var>a</var> + <var>m</var>)(<var>b</var> + <var>n</var>) = (<var>a</var><var>b</var> −
+    <var>m</var>·<var>n</var>) + (<var>a</var><var>n</var> + <var>b</var><var>m</var> + <var>m</var> × <var>n</var>),
+    with the dot and cross products of R³ (try <var>m</var> = i, <var>n</var> = j: 0 + i × j = k). Three facts
+    follow, and the tour uses them all the way through. First, <var>q</var><var>q̄</var> = <var>q̄</var><var>q</var> =
+    |<var>q</var>|², so for a unit quaternion <var>q̄</var> undoes <var>q</var>. Second, the conjugate of a product is
+    the product of the conjugates in the opposite order: <var>q̄</var><var>p̄</var> for <var>p</var><var>q</var>,
+    because <var>m</var> × <var>n</var> = −<var>n</var> × <var>m</var>. Third, the real part of
+    <var>r</var><var>p̄</var> is the four parts of <var>p</var> and <var>r</var> multiplied in pairs and added.`,
+  "turn.p3": "The turn by <var>θ</var> about <var>u</var> is the unit quaternion",
+  "turn.p4":
     `<var>q</var> = cos(<var>θ</var>/2) + sin(<var>θ</var>/2) (<var>u<sub>x</sub></var> i + <var>u<sub>y</sub></var>
     j + <var>u<sub>z</sub></var> k),`,
-  "turn.p4":
+  "turn.p5":
     `and it turns a vector <var>v</var>, written as <var>v<sub>x</sub></var> i + <var>v<sub>y</sub></var> j +
     <var>v<sub>z</sub></var> k, into <var>q</var> <var>v</var> <var>q̄</var>. Try it on the figure's first turn, 90° about <var>z</var>:
     <var>q</var> = (1 + k)/√2 and <var>q̄</var> = (1 − k)/√2. Then <var>q</var> i = (i + ki)/√2 = (i + j)/√2, and
     (i + j)(1 − k)/2 = (i − ik + j − jk)/2 = (i + j + j − i)/2 = j: the nose, <var>x</var>, goes to <var>y</var>, a
-    quarter turn. Each of the two factors, <var>q</var> on the left and <var>q̄</var> on the right, turns by
-    <var>θ</var>/2, which is why <var>q</var> holds half the angle. One turn after another is a product: <var>q</var>₂<var>q</var>₁
+    quarter turn. Look at the halfway point: <var>q</var> i = (i + j)/√2 is i already turned by 45° about
+    <var>z</var>, and multiplying by <var>q̄</var> on the right turns it the other 45°. For a vector square to the
+    axis, each factor turns it by <var>θ</var>/2, which is why <var>q</var> holds half the angle; a vector along the
+    axis is left alone by the pair, though not by either factor alone: <var>q</var> k <var>q̄</var> = k. One turn after another is a product: <var>q</var>₂<var>q</var>₁
     turns by <var>q</var>₁ first. Four numbers and one condition, |<var>q</var>| = 1, and if rounding spoils it, dividing <var>q</var> by
     |<var>q</var>| restores it.`,
   "turn.caption1":
@@ -97,15 +111,15 @@ export const page = {
     wing), <span class="z">z</span> (the fin). Before the turn they lie along the world's <var>x</var>, <var>y</var> and
     <var>z</var>, so after it each shows where <var>q</var> sends that world axis.`,
   "turn.legend1": "The turn",
-  "turn.p5":
+  "turn.p6":
     `The four numbers now: <output id="turn-out">q = 0.707 + 0.000 i + 0.000 j + 0.707 k</output>.`,
   "turn.question1":
     `Predict, then check: a turn by 120° about the diagonal (1, 1, 1)/√3. What are the four numbers, and where does
     the nose go?`,
-  "turn.p6":
+  "turn.p7":
     `Work it out from the formula first. Then <a class="set" href="?axis=diagonal&amp;angle=120#turn"
     data-state='{"axis":"diagonal","angle":120}'>set 120° about the diagonal</a>.`,
-  "turn.p7":
+  "turn.p8":
     `<strong>Answer.</strong> cos 60° = 0.5, sin 60° = 0.866, and each part of the axis is 1/√3 = 0.577, so each
     of i, j, k gets 0.866 × 0.577 = 0.5: <var>q</var> = 0.5 + 0.5 i + 0.5 j + 0.5 k, the rotation <var>r</var>
     of the paper's example, which we meet again in section 4. A third of a full turn about the diagonal takes the axes round in a cycle: the nose, the
@@ -130,9 +144,10 @@ export const page = {
     the angle <var>φ</var> between them is the usual one, from the dot product of the two four-vectors: cos
     <var>φ</var> = <var>p</var>·<var>r</var>. It measures how far apart the rotations are.`,
   "cover.p4":
-    `How far, as a turn? The turn that takes <var>p</var> to <var>r</var> is <var>r</var> <var>p̄</var>, whose real
-    part is <var>p</var>·<var>r</var> = cos <var>φ</var>. By section 2 a real part cos(<var>θ</var>/2) is a turn by
-    <var>θ</var>, so the rotation from <var>p</var> to <var>r</var> turns by 2<var>φ</var>: angles on S³ are half
+    `How far, as a turn? The turn that takes <var>p</var> to <var>r</var> is <var>r</var> <var>p̄</var>, since
+    (<var>r</var> <var>p̄</var>) <var>p</var> = <var>r</var> (<var>p̄</var> <var>p</var>) = <var>r</var>, and by
+    section 2 its real part is <var>p</var>·<var>r</var> = cos <var>φ</var>. A real part cos(<var>θ</var>/2) is a turn by
+    <var>θ</var> (section 2 again), so the rotation from <var>p</var> to <var>r</var> turns by 2<var>φ</var>: angles on S³ are half
     the angles of the turns. (When <var>p</var>·<var>r</var> &lt; 0, 2<var>φ</var> is more than 180°, and the same
     rotation is the turn by 360° − 2<var>φ</var> the other way.)`,
   "cover.p5":
@@ -268,18 +283,23 @@ export const page = {
     2(<var>q<sub>i</sub></var>·<var>q<sub>j</sub></var>)<var>q<sub>i</sub></var> − <var>q<sub>j</sub></var> (section
     7 uses the same identity), so each term is 2(<var>q<sub>j</sub></var> −
     (<var>q<sub>i</sub></var>·<var>q<sub>j</sub></var>) <var>q<sub>i</sub></var>): a pull towards each other
-    oscillator with the part along <var>q<sub>i</sub></var> taken away. On the circle this is the phase equation
-    above with every <var>ω<sub>i</sub></var> = 0: put <var>z<sub>i</sub></var> = e<sup>i<var>θ<sub>i</sub></var></sup>
+    oscillator with the part along <var>q<sub>i</sub></var> taken away.`,
+  "kuramoto.p11":
+    `A check on the circle: there this is the phase equation above with every <var>ω<sub>i</sub></var> = 0. Put <var>z<sub>i</sub></var> = e<sup>i<var>θ<sub>i</sub></var></sup>
     in place of <var>q<sub>i</sub></var>; then <var>z<sub>j</sub></var> − <var>z<sub>i</sub></var>
     <var>z̄<sub>j</sub></var> <var>z<sub>i</sub></var> = 2i sin(<var>θ<sub>j</sub></var> − <var>θ<sub>i</sub></var>)
     <var>z<sub>i</sub></var> and <var>z<sub>i</sub></var>′ = i<var>θ<sub>i</sub></var>′ <var>z<sub>i</sub></var>, so
     <var>θ<sub>i</sub></var>′ = (<var>K</var>/<var>N</var>) Σ<sub><var>j</var></sub> sin(<var>θ<sub>j</sub></var> −
-    <var>θ<sub>i</sub></var>). Pin one of them at a rotation <var>r</var>,
-    so that it never moves: it is the <dfn id="def-leader">leader</dfn>, and the others, the <em>followers</em>,
-    fall into step and then settle on it. With one follower, <var>N</var> = 2, the follower obeys
+    <var>θ<sub>i</sub></var>).`,
+  "kuramoto.p12":
+    `Now pin one of them at a rotation <var>r</var>, so that it never moves: it is the <dfn id="def-leader">leader</dfn>, and the others, the <em>followers</em>,
+    fall into step and then settle on it. With one follower, <var>N</var> = 2 (the term with
+    <var>j</var> = <var>i</var> is 0), the follower obeys
     <var>q</var>′ = (<var>K</var>/2)(<var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>): the paper's method
     (exactly at <var>K</var> = 2; another <var>K</var> runs the same path on a clock <var>K</var>/2 times as fast),
-    next. How much they agree is measured as on the circle: the order parameter on S³ is the length <var>R</var> =
+    next.`,
+  "kuramoto.p13":
+    `How much they agree is measured as on the circle: the order parameter on S³ is the length <var>R</var> =
     |(1/<var>N</var>) Σ<sub><var>j</var></sub> <var>q<sub>j</sub></var>| of the mean of the <var>q<sub>j</sub></var>
     as points of R⁴ (the leader counted too), 1 when all are at one point, small when they are spread over S³. It is not blind to the sign: <var>q</var> and
     −<var>q</var> average to 0, so <var>R</var> can be small while the rotations agree.`,
@@ -394,9 +414,13 @@ export const page = {
     |<var>q</var> + <var>h</var><var>v</var>|² = 1 + <var>h</var>²|<var>v</var>|² when <var>v</var> is square to
     <var>q</var>. <dfn id="def-rk4">RK4</dfn>, the classical fourth-order Runge–Kutta method, samples the slope four
     times in a step and takes their weighted average, (<var>k</var>₁ + 2<var>k</var>₂ + 2<var>k</var>₃ +
-    <var>k</var>₄)/6, where <var>k</var>₁ to <var>k</var>₄ are the four slopes (not the quaternion unit k); its error shrinks like <var>h</var>⁴, and so does its drift off the sphere.
-    The <strong>geodesic</strong> step takes RK4's increment as a turn along the great circle, so |<var>q</var>| = 1
-    by construction. This flow, written <var>q</var>′ = <var>r</var> − (<var>q</var>·<var>r</var>)<var>q</var> (the
+    <var>k</var>₄)/6, where <var>k</var>₁ to <var>k</var>₄ are the four slopes (not the quaternion unit k); its error shrinks like <var>h</var>⁴, and so does its drift off the sphere.`,
+  "integrators.p5":
+    `The <strong>geodesic</strong> step takes RK4's increment <var>Δ</var> and, instead of adding it, walks along the
+    great circle towards it: to <var>q</var> cos <var>α</var> + <var>u</var> sin <var>α</var>, where <var>u</var> is
+    the unit vector along the part of <var>Δ</var> square to <var>q</var> and <var>α</var> is the angle between
+    <var>q</var> and <var>q</var> + <var>Δ</var>. Two unit vectors square to each other, weighted by the cosine and
+    the sine of one angle, always give length 1, so |<var>q</var>| = 1 by construction. This flow, written <var>q</var>′ = <var>r</var> − (<var>q</var>·<var>r</var>)<var>q</var> (the
     form this page integrates; off the sphere it differs from eq. 3's −½(<var>q</var> <var>r̄</var> <var>q</var> −
     <var>r</var>)), pulls a stray |<var>q</var>| back towards 1: for any
     <var>q</var>, d|<var>q</var>|²/d<var>t</var> = 2 <var>q</var>·<var>q</var>′ = 2(<var>q</var>·<var>r</var>)(1 −
@@ -425,9 +449,13 @@ export const page = {
     step: from <var>p</var> with velocity <var>v</var>, |<var>v</var>| = sin <var>φ</var>₀ = 0.866, it lands at
     length √(1 + <var>h</var>²|<var>v</var>|²), a drift of √(1 + 0.1875) − 1 = 0.090; after it the flow pulls
     |<var>q</var>| back (0.057, then 0.017). At <var>h</var> = 0.25 the first step gives √(1 + 0.047) − 1 = 0.023
-    and the second pushes out a little further, to 0.032, before the pull wins. A first step's drift shrinks like
-    <var>h</var>² (4 times), a step-by-step balance of push and pull like <var>h</var> (2 times); here it is in
-    between, 2.8. RK4's goes like <var>h</var>⁴ (2⁴ = 16, a little more at this large step). The geodesic step stays
+    and the second pushes out a little further, to 0.032, before the pull wins. Why in between: each Euler step
+    pushes |<var>q</var>|² out by <var>h</var>²|<var>v</var>|² and, by the formula for d|<var>q</var>|²/d<var>t</var>
+    above, pulls the excess |<var>q</var>|² − 1 back by about 2<var>h</var>(<var>q</var>·<var>r</var>) times itself.
+    The two balance at an excess of about <var>h</var>|<var>v</var>|²/(2<var>q</var>·<var>r</var>), proportional to
+    <var>h</var>: halving <var>h</var> halves it. A first step's drift, about <var>h</var>²|<var>v</var>|²/2, gets 4
+    times smaller instead. At <var>h</var> = 0.5 the worst drift is the first step; at 0.25 it is a later one, on its
+    way to the balance: 2.8 lies between 2 and 4. RK4's goes like <var>h</var>⁴ (2⁴ = 16, a little more at this large step). The geodesic step stays
     at rounding, about 10⁻¹⁶.`,
   "many.title1": `<span class="number">9</span> Many rotations`,
   "many.p1":
@@ -527,24 +555,36 @@ export const page = {
   "many.heading3": "Averaging: one rotation from many noisy ones",
   "many.p4":
     `A robot's camera measures its orientation many times, each a little off, and a few badly off: those are <dfn
-    id="def-outlier">outliers</dfn>. One follower pulled by all the measurements at once, each pull weighted by <var>q</var>·<var>r<sub>j</sub></var>
-    so that signs do not matter, settles on the <dfn
-    id="def-chordal">chordal mean</dfn>, the rotation <var>q</var> that maximises
-    Σ(<var>q</var>·<var>r<sub>j</sub></var>)² (blind to each sign). <em>Chordal</em> means that distance is measured
-    straight through, between the rotation matrices, not along the sphere: ‖<var>R<sub>q</sub></var> −
-    <var>R<sub>j</sub></var>‖² = 8(1 − (<var>q</var>·<var>r<sub>j</sub></var>)²), the same for <var>r<sub>j</sub></var>
-    and −<var>r<sub>j</sub></var>, so a short chord is a large dot product. (The squared chord between the quaternions
+    id="def-outlier">outliers</dfn>. One follower is pulled by all the measurements at once, each pull towards
+    <var>r<sub>j</sub></var> weighted by <var>q</var>·<var>r<sub>j</sub></var>. Replace <var>r<sub>j</sub></var> by
+    −<var>r<sub>j</sub></var> and both the pull and its weight change sign, so their product does not: the signs do
+    not matter. The follower settles on the <dfn id="def-chordal">chordal mean</dfn>, the rotation <var>q</var> that
+    maximises Σ(<var>q</var>·<var>r<sub>j</sub></var>)².`,
+  "many.p17":
+    `<em>Chordal</em> means that distance is measured straight through, between the 3 × 3 rotation matrices
+    <var>R<sub>q</sub></var> and <var>R<sub>j</sub></var> of <var>q</var> and <var>r<sub>j</sub></var>, not along the
+    sphere; the size of a matrix here is the square root of the sum of the squares of its nine entries. If the two
+    rotations differ by a turn <var>θ</var>, then ‖<var>R<sub>q</sub></var> − <var>R<sub>j</sub></var>‖² = 3 + 3 −
+    2(1 + 2 cos <var>θ</var>) = 4 − 4 cos <var>θ</var>: each matrix has three unit columns, and the nine entries of
+    one times the other's, added, give 1 + 2 cos <var>θ</var>, the trace of a turn by <var>θ</var>. Since
+    <var>θ</var> = 2<var>φ</var> (section 3) and cos 2<var>φ</var> = 2(<var>q</var>·<var>r<sub>j</sub></var>)² − 1,
+    this is 8(1 − (<var>q</var>·<var>r<sub>j</sub></var>)²), the same for <var>r<sub>j</sub></var> and
+    −<var>r<sub>j</sub></var>: a short chord is a large dot product. (The squared chord between the quaternions
     themselves, |<var>q</var> − <var>r<sub>j</sub></var>|² = 2 − 2 <var>q</var>·<var>r<sub>j</sub></var>, gives
     instead the <em>quaternion mean</em>: the four numbers of the measurements averaged, then divided by the length.
-    It depends on the signs, so they are first put all on one side of S³.) The <dfn id="def-karcher">Karcher mean</dfn> instead minimises the sum of squared turning angles to the
+    It depends on the signs, so they are first put all on one side of S³.)`,
+  "many.p18":
+    `The <dfn id="def-karcher">Karcher mean</dfn> instead minimises the sum of squared turning angles to the
     measurements. Both are dragged by outliers. The <dfn id="def-median">median</dfn>, the rotation with the least
-    summed angle (not squared) to the measurements, is dragged much less: a wild one pulls on it no harder than a near one. <a
-    href="average.html">Averaging</a> computes all four. Move
-    the share of wild measurements. In the figure each dot is where a measurement points the nose, its Hopf image
-    <var>h</var>(<var>r<sub>j</sub></var>); the wild ones have a colour of their own and are ringed once the median
-    has set them aside. ★ is the truth, ● the follower on its way from 1. The four means are white discs ringed in
-    their colour: the chordal mean orange, the quaternion mean green, the Karcher (geodesic) mean purple, the median blue. (The figure's key names
-    each; the <a href="average.html">Averaging</a> page sets them beside bars of the same colours.)`,
+    summed angle (not squared) to the measurements, is dragged much less: a wild one pulls on it no harder than a near
+    one. <a href="average.html">Averaging</a> computes all four.`,
+  "many.p19":
+    `Move the share of wild measurements. In the figure each dot is where a measurement points the nose, its Hopf
+    image <var>h</var>(<var>r<sub>j</sub></var>); the wild ones have a colour of their own and are ringed once the
+    median has set them aside. ★ is the truth, ● the follower on its way from 1. The four means are white discs ringed
+    in their colour: the chordal mean orange, the quaternion mean green, the Karcher (geodesic) mean purple, the
+    median blue. (The figure's key names each; the <a href="average.html">Averaging</a> page sets them beside bars of
+    the same colours.)`,
   "many.heading4": "Synchronising rotations on a graph",
   "many.p5":
     `A robot mapping a building (SLAM, simultaneous localisation and mapping: it builds the map and finds itself in
@@ -564,10 +604,12 @@ export const page = {
     `In the figure, <var>f</var> is printed at the top as the flow lowers it: the paper's model run on the graph,
     each node pulled towards where each of its edges says it should be. Each edge is coloured by how far its
     measurement disagrees with the current answer: blue under 2°, teal 2–5°, green 5–15°, orange 15–45°, red 45° or
-    more; a wrong edge is dashed. Each node carries a needle: its error (the turn from its true rotation to the
-    answer's, after the one common turn that best lines the whole answer up with the truth; measurements between
-    pairs cannot tell a turn of every node together, so the answer is only fixed up to that one turn) applied to the body's
-    <var>x</var> axis, seen from above. The needle points right once the node agrees with the truth.`,
+    more; a wrong edge is dashed. Measurements between pairs cannot fix every node: turn all the nodes by one common
+    rotation <var>G</var>, and each (<var>G</var> <var>R<sub>i</sub></var>)ᵀ(<var>G</var> <var>R<sub>j</sub></var>) =
+    <var>R<sub>i</sub></var>ᵀ<var>R<sub>j</sub></var> stays the same. So the answer is compared with the truth only
+    after the one common turn that lines them up best. Each node then carries a needle: the turn still left between
+    its true rotation and the answer's, applied to the body's <var>x</var> axis and seen from above. The needle points
+    right once the node agrees with the truth.`,
   "many.question1":
     `Predict, then check: on the averaging figure, with half the measurements wild, which means stay near the truth?`,
   "many.p8":
