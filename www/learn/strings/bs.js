@@ -404,7 +404,9 @@ export const page = {
   "kli.question3": "Napomena za čitaoce rada: štampana jednačina 4 i Tabela 1",
   "kli.p14":
     `Rad zapisuje jednačinu 3 po komponentama kao <var>q<sub>i</sub></var>′ = <var>r<sub>i</sub></var> −
-    <var>q<sub>i</sub></var> − <var>q<sub>i</sub></var> cos <var>θ</var> (jednačina 4). Suvišni
+    <var>q<sub>i</sub></var> − <var>q<sub>i</sub></var> cos <var>θ</var> (jednačina 4), gdje su <var>q<sub>i</sub></var>
+    i <var>r<sub>i</sub></var> četiri dijela kvaterniona <var>q</var> i <var>r</var> (a ne oscilatori, kao u odjeljku
+    6), a <var>θ</var> iz rada je <var>φ</var> u ovom vodiču. Suvišni
     −<var>q<sub>i</sub></var> je štamparska greška: s njim tok napušta sferu i smiruje se u tački dužine (√5 −
     1)/2 ≈ 0.618, nikad ne stižući do <var>r</var>. Ispravan oblik je <var>q<sub>i</sub></var>′ =
     <var>r<sub>i</sub></var> − <var>q<sub>i</sub></var> cos <var>θ</var>, uz cos <var>θ</var> =

@@ -398,7 +398,9 @@ export const page = {
   "kli.question3": "A note for readers of the paper: the printed eq. 4 and Table 1",
   "kli.p14":
     `The paper writes eq. 3 out in components as <var>q<sub>i</sub></var>′ = <var>r<sub>i</sub></var> −
-    <var>q<sub>i</sub></var> − <var>q<sub>i</sub></var> cos <var>θ</var> (eq. 4). The extra
+    <var>q<sub>i</sub></var> − <var>q<sub>i</sub></var> cos <var>θ</var> (eq. 4), where <var>q<sub>i</sub></var> and
+    <var>r<sub>i</sub></var> are the four parts of <var>q</var> and <var>r</var> (not oscillators, as in section 6)
+    and the paper's <var>θ</var> is this tour's <var>φ</var>. The extra
     −<var>q<sub>i</sub></var> is a typo: with it the flow leaves the sphere and settles at a point of length (√5 −
     1)/2 ≈ 0.618, never reaching <var>r</var>. The right form is <var>q<sub>i</sub></var>′ =
     <var>r<sub>i</sub></var> − <var>q<sub>i</sub></var> cos <var>θ</var>, with cos <var>θ</var> =
