@@ -279,32 +279,33 @@ export const page = {
     `<var>q<sub>i</sub></var>′ = (<var>K</var>/(2<var>N</var>)) Σ<sub><var>j</var></sub> (<var>q<sub>j</sub></var> −
     <var>q<sub>i</sub></var> <var>q̄<sub>j</sub></var> <var>q<sub>i</sub></var>),`,
   "kuramoto.p7":
-    `gdje je <var>q<sub>i</sub></var> <var>q̄<sub>j</sub></var> <var>q<sub>i</sub></var> proizvod kvaterniona, kojem
-    je redoslijed bitan. Za jedinične kvaternione on je jednak
-    2(<var>q<sub>i</sub></var>·<var>q<sub>j</sub></var>)<var>q<sub>i</sub></var> − <var>q<sub>j</sub></var> (odjeljak
-    7 koristi isti identitet), pa je svaki sabirak 2(<var>q<sub>j</sub></var> −
-    (<var>q<sub>i</sub></var>·<var>q<sub>j</sub></var>) <var>q<sub>i</sub></var>): privlačenje prema svakom drugom
-    oscilatoru bez dijela duž <var>q<sub>i</sub></var>.`,
+    `gdje je <var>q<sub>i</sub></var> <var>q̄<sub>j</sub></var> <var>q<sub>i</sub></var> proizvod kvaterniona, u
+    kojem je redoslijed faktora bitan. Za jedinične kvaternione on je jednak
+    2(<var>q<sub>i</sub></var>·<var>q<sub>j</sub></var>)<var>q<sub>i</sub></var> − <var>q<sub>j</sub></var>
+    (odjeljak 7 koristi isti identitet), pa je svaki sabirak 2(<var>q<sub>j</sub></var> −
+    (<var>q<sub>i</sub></var>·<var>q<sub>j</sub></var>) <var>q<sub>i</sub></var>): privlačenje prema svakom od
+    ostalih oscilatora, iz kojeg je uklonjen dio duž <var>q<sub>i</sub></var>.`,
   "kuramoto.p11":
-    `Provjera na kružnici: tamo je to gornja jednačina faza, sa svim <var>ω<sub>i</sub></var> = 0. Stavi <var>z<sub>i</sub></var> = e<sup>i<var>θ<sub>i</sub></var></sup> umjesto
-    <var>q<sub>i</sub></var>; tada je <var>z<sub>j</sub></var> − <var>z<sub>i</sub></var> <var>z̄<sub>j</sub></var>
-    <var>z<sub>i</sub></var> = 2i sin(<var>θ<sub>j</sub></var> − <var>θ<sub>i</sub></var>) <var>z<sub>i</sub></var> i
-    <var>z<sub>i</sub></var>′ = i<var>θ<sub>i</sub></var>′ <var>z<sub>i</sub></var>, pa je
-    <var>θ<sub>i</sub></var>′ = (<var>K</var>/<var>N</var>) Σ<sub><var>j</var></sub> sin(<var>θ<sub>j</sub></var> −
-    <var>θ<sub>i</sub></var>).`,
+    `Provjera na kružnici: na njoj se ova jednačina svodi na gornju jednačinu faza sa svim
+    <var>ω<sub>i</sub></var> = 0. Stavi <var>z<sub>i</sub></var> = e<sup>i<var>θ<sub>i</sub></var></sup> umjesto
+    <var>q<sub>i</sub></var>; tada je <var>z<sub>j</sub></var> − <var>z<sub>i</sub></var>
+    <var>z̄<sub>j</sub></var> <var>z<sub>i</sub></var> = 2i sin(<var>θ<sub>j</sub></var> −
+    <var>θ<sub>i</sub></var>) <var>z<sub>i</sub></var>, a <var>z<sub>i</sub></var>′ = i<var>θ<sub>i</sub></var>′
+    <var>z<sub>i</sub></var>, pa je <var>θ<sub>i</sub></var>′ = (<var>K</var>/<var>N</var>)
+    Σ<sub><var>j</var></sub> sin(<var>θ<sub>j</sub></var> − <var>θ<sub>i</sub></var>).`,
   "kuramoto.p12":
-    `Sada fiksiraj jednog od njih u rotaciji <var>r</var>, tako da se nikad ne pomjera: to je <dfn id="def-leader">vođa</dfn>, a ostali, <em>sljedbenici</em>, se usklade,
-    a zatim se smire na njemu. S jednim sljedbenikom, <var>N</var> = 2 (sabirak
-    za <var>j</var> = <var>i</var> je 0), sljedbenik zadovoljava
-    <var>q</var>′ = (<var>K</var>/2)(<var>r</var> − (<var>q</var>·<var>r</var>) <var>q</var>): metoda iz rada
-    (tačno pri <var>K</var> = 2; drugi <var>K</var> prolazi isti put po satu koji je <var>K</var>/2 puta brži), u
-    sljedećem odjeljku.`,
+    `Sada fiksiraj jedan od njih u rotaciji <var>r</var>, tako da se nikad ne pomjera: to je <dfn
+    id="def-leader">vođa</dfn>, a ostali, <em>sljedbenici</em>, najprije se usklade i zatim smire u njegovom
+    položaju. S jednim sljedbenikom, <var>N</var> = 2 (sabirak za <var>j</var> = <var>i</var> jednak je 0), za
+    sljedbenika vrijedi <var>q</var>′ = (<var>K</var>/2)(<var>r</var> − (<var>q</var>·<var>r</var>)
+    <var>q</var>): to je metoda iz rada (tačno pri <var>K</var> = 2; uz drugi <var>K</var> put je isti, samo se
+    prelazi po satu koji ide <var>K</var>/2 puta brže), o kojoj je riječ u sljedećem odjeljku.`,
   "kuramoto.p13":
-    `Koliko se slažu, mjeri se kao na kružnici: parametar reda na S³ je dužina <var>R</var> =
-    |(1/<var>N</var>) Σ<sub><var>j</var></sub> <var>q<sub>j</sub></var>| srednje vrijednosti kvaterniona
-    <var>q<sub>j</sub></var> kao tačaka u R⁴ (računajući i vođu), 1 kad su svi u jednoj tački, mali kad su
-    raspršeni po S³. Nije neosjetljiv na predznak: <var>q</var> i −<var>q</var> u prosjeku daju 0, pa <var>R</var>
-    može biti mali iako se rotacije slažu.`,
+    `Koliko se slažu, mjeri se kao na kružnici: parametar reda na S³ je dužina <var>R</var> = |(1/<var>N</var>)
+    Σ<sub><var>j</var></sub> <var>q<sub>j</sub></var>| srednje vrijednosti kvaterniona <var>q<sub>j</sub></var>
+    kao tačaka u R⁴ (računajući i vođu); jednak je 1 kad su svi u jednoj tački, a mali kad su raspršeni po S³.
+    Osjetljiv je na predznak: <var>q</var> i −<var>q</var> u prosjeku daju 0, pa <var>R</var> može biti mali
+    iako se rotacije slažu.`,
   "kuramoto.caption2":
     `Osam sljedbenika (ljubičasto, sa svojim tragovima) i fiksirani vođa <var>r</var> (narandžasto), nacrtani
     Hopfovim preslikavanjem; sfera se okreće zajedno s onom u odjeljku 5.`,
@@ -415,14 +416,15 @@ export const page = {
     href="math.html#the-papers-example-section-3">stranici s matematikom</a> i testovima projekta.`,
   "integrators.title1": `<span class="number">8</span> Integratori i odstupanje`,
   "integrators.p1":
-    `Računar prati tok u koracima dužine <var>h</var> u vremenu: isto što i <var>δ</var> Algoritma 1 u odjeljku 7,
-    ovdje nazvano <var>h</var> jer ova slika ima svoj klizač. <strong>Eulerov</strong> korak (isti Euler kao kod uglova i ose, njegova treća
-    ideja), <var>q</var> +
-    <var>h</var> <var>q</var>′, ide duž tangente, a korak po tangenti uvijek napušta sferu: |<var>q</var> +
-    <var>h</var><var>v</var>|² = 1 + <var>h</var>²|<var>v</var>|² kad je <var>v</var> okomit na <var>q</var>. <dfn
-    id="def-rk4">RK4</dfn>, klasična Runge–Kutta metoda četvrtog reda, računa izvod četiri puta u jednom koraku i
-    uzima njihov ponderisani prosjek, (<var>k</var>₁ + 2<var>k</var>₂ + 2<var>k</var>₃ + <var>k</var>₄)/6, gdje su <var>k</var>₁ do <var>k</var>₄
-    te četiri vrijednosti izvoda (a ne kvaternionska jedinica k); njena greška opada kao <var>h</var>⁴, a tako i njeno odstupanje od sfere.`,
+    `Računar prati tok u koracima dužine <var>h</var> u vremenu: isto što i <var>δ</var> Algoritma 1 u odjeljku
+    7, ovdje nazvano <var>h</var> jer ova slika ima svoj klizač. <strong>Eulerov</strong> korak (isti Euler kao
+    kod uglova i ose, njegova treća ideja), <var>q</var> + <var>h</var> <var>q</var>′, ide duž tangente, a korak
+    po tangenti uvijek napušta sferu: |<var>q</var> + <var>h</var><var>v</var>|² = 1 +
+    <var>h</var>²|<var>v</var>|² kad je <var>v</var> okomit na <var>q</var>. <dfn id="def-rk4">RK4</dfn>,
+    klasična Runge–Kutta metoda četvrtog reda, u jednom koraku četiri puta računa izvod i uzima ponderisani
+    prosjek dobijenih vrijednosti, (<var>k</var>₁ + 2<var>k</var>₂ + 2<var>k</var>₃ + <var>k</var>₄)/6, gdje su
+    <var>k</var>₁ do <var>k</var>₄ te četiri vrijednosti izvoda (a ne kvaternionska jedinica k); njena greška
+    opada kao <var>h</var>⁴, a tako i njeno odstupanje od sfere.`,
   "integrators.p5":
     `<strong>Geodezijski</strong> korak uzima prirast <var>Δ</var> metode RK4 i, umjesto da ga doda, ide po velikom
     krugu u njegovom smjeru: do <var>q</var> cos <var>α</var> + <var>u</var> sin <var>α</var>, gdje je <var>u</var>
@@ -452,20 +454,20 @@ export const page = {
     sin 60° = 0.866, pri <var>h</var> = 0.5 i pri 0.25, i razmisli je li prvi korak i pri 0.25 još uvijek najgori.
     Pogodi, pa <a class="set" href="?h=0.25#integrators" data-state='{"step":0.25}'>postavi h = 0.25</a>.`,
   "integrators.p4":
-    `<strong>Odgovor.</strong> Eulerovo oko 2.8 puta (s 0.090 na 0.032), RK4 oko 23 puta (s 1.5·10⁻³ na 6.5·10⁻⁵).
-    Eulerovo odstupanje nije gomila malih grešaka. Pri <var>h</var> = 0.5 najveće odstupanje je već u prvom koraku:
-    iz <var>p</var> brzinom <var>v</var>, |<var>v</var>| = sin <var>φ</var>₀ = 0.866, korak završava na dužini √(1
-    + <var>h</var>²|<var>v</var>|²), odstupanje √(1 + 0.1875) − 1 = 0.090; nakon toga tok vraća |<var>q</var>|
-    nazad (0.057, zatim 0.017). Pri <var>h</var> = 0.25 prvi korak daje √(1 + 0.047) − 1 = 0.023, a drugi gura još
-    malo dalje, do 0.032, prije nego što privlačenje prevlada. Zašto između: svaki Eulerov korak gura
-    |<var>q</var>|² prema van za <var>h</var>²|<var>v</var>|² i, po formuli za d|<var>q</var>|²/d<var>t</var> iznad,
-    vraća višak |<var>q</var>|² − 1 za otprilike 2<var>h</var>(<var>q</var>·<var>r</var>) puta taj višak. To dvoje je
-    u ravnoteži pri višku od otprilike <var>h</var>|<var>v</var>|²/(2<var>q</var>·<var>r</var>), srazmjernom
-    <var>h</var>: kad se <var>h</var> prepolovi, i on se prepolovi. Odstupanje prvog koraka, otprilike
-    <var>h</var>²|<var>v</var>|²/2, umjesto toga postane 4 puta manje. Pri <var>h</var> = 0.5 najveće odstupanje je
-    u prvom koraku, a pri 0.25 u nekom kasnijem, na putu ka ravnoteži: 2.8 je između 2 i 4. Kod
-    RK4 ide kao <var>h</var>⁴ (2⁴ = 16, nešto više pri ovako velikom koraku). Geodezijski korak ostaje na nivou
-    zaokruživanja, oko 10⁻¹⁶.`,
+    `<strong>Odgovor.</strong> Eulerovo oko 2.8 puta (s 0.090 na 0.032), RK4 oko 23 puta (s 1.5·10⁻³ na
+    6.5·10⁻⁵). Eulerovo odstupanje nije nagomilavanje mnogo malih grešaka. Pri <var>h</var> = 0.5 najveće
+    odstupanje je već u prvom koraku: iz <var>p</var> brzinom <var>v</var>, |<var>v</var>| = sin <var>φ</var>₀ =
+    0.866, korak završava na dužini √(1 + <var>h</var>²|<var>v</var>|²), odstupanje √(1 + 0.1875) − 1 = 0.090;
+    nakon toga tok vraća |<var>q</var>| nazad (0.057, zatim 0.017). Pri <var>h</var> = 0.25 prvi korak daje √(1
+    + 0.047) − 1 = 0.023, a drugi gura još malo dalje, do 0.032, prije nego što privlačenje prevlada. Zašto je
+    omjer između 2 i 4: svaki Eulerov korak gura |<var>q</var>|² prema van za <var>h</var>²|<var>v</var>|² i, po
+    formuli za d|<var>q</var>|²/d<var>t</var> iznad, vraća višak |<var>q</var>|² − 1 za otprilike
+    2<var>h</var>(<var>q</var>·<var>r</var>) puta taj višak. To dvoje je u ravnoteži pri višku od otprilike
+    <var>h</var>|<var>v</var>|²/(2<var>q</var>·<var>r</var>), srazmjernom <var>h</var>: kad se <var>h</var>
+    prepolovi, i on se prepolovi. Odstupanje prvog koraka, otprilike <var>h</var>²|<var>v</var>|²/2, umjesto
+    toga postane 4 puta manje. Pri <var>h</var> = 0.5 najveće odstupanje je u prvom koraku, a pri 0.25 u nekom
+    kasnijem, na putu ka ravnoteži: 2.8 je između 2 i 4. Odstupanje RK4 raste kao <var>h</var>⁴ (2⁴ = 16, nešto
+    više pri ovako velikom koraku). Geodezijski korak ostaje na nivou greške zaokruživanja, oko 10⁻¹⁶.`,
   "many.title1": `<span class="number">9</span> Mnogo rotacija`,
   "many.p1":
     `Rad interpolira između dvije rotacije, a slučaj mnogo rotacija ostavlja kao otvoreno pitanje. Druge stranice
