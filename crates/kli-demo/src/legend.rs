@@ -191,10 +191,10 @@ pub fn overlap(a: &TextBox, b: &TextBox) -> bool {
 
 /// Where to centre the label `text` of `point`, `distance` from it: away from `centre` (off the
 /// curves, which run inside the sphere's disc) when that is clear of every box in `taken` and of
-/// the point's own mark (`mark` each way, how far its disc reaches: [`Pen::disc`]'s answer; a label wider than twice
-/// `distance`, set beside its point, covered it, as "h(q): the nose" did on a phone), else the
-/// first clear place turning from there by ±45°, ±90°, ±135°, 180°; away from `centre` when none
-/// is. The label's box is added to `taken`.
+/// the point's own mark (`mark` each way, how far its disc reaches: [`Pen::disc`]'s answer; a
+/// label wider than twice `distance`, set beside its point, covered it, as "h(q): the nose" did
+/// on a phone), else the first clear place turning from there by ±45°, ±90°, ±135°, 180°; away
+/// from `centre` when none is. The label's box is added to `taken`.
 pub fn clear_place(
     pen: &Pen,
     text: &str,
