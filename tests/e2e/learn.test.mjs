@@ -394,6 +394,12 @@ test("reduced motion: nothing plays by itself, not even as a moving figure is re
   await page.locator("#many").scrollIntoViewIfNeeded();
   await page.waitForFunction(() => customElements.get("kli-figure") !== undefined, null, { timeout: 10000 });
   assert.deepEqual(await page.$$eval("kli-figure", (all) => all.filter((f) => f.hasAttribute("autoplay")).length), 0);
+  // The keyframes stand where the text says the three curves' points are apart: between k2 (t = 2)
+  // and k3, the end (where all three sit on k3).
+  await page.waitForFunction(() => {
+    const figure = /** @type {any} */ (document.querySelector("#fig-keyframes"));
+    return figure.end === 3 && figure.t > 2 && figure.t < figure.end;
+  }, null, { timeout: 10000 });
   assert.deepEqual(problems, []);
   await context.close();
 });

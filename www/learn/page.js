@@ -271,6 +271,11 @@ function startOnArrival(/** @type {Host} */ host) {
   for (const id of ["#learn-phases", "#learn-lohe", "#learn-kli"]) observer.observe($(id, HTMLCanvasElement));
 }
 
+/** Where each of the other pages' figures stands with reduced motion: the swarm gathered; the
+ *  keyframes between k2 and k3 (its keys at t = 0 … 3), where the three curves' points are apart
+ *  (at its end they all sit on k3); the others at t = 4. */
+const STILL_AT = /** @type {Record<string, string>} */ ({ "fig-swarm": "8", "fig-keyframes": "2.5" });
+
 /** The other pages' figures (<kli-figure>, each loading its page's module) are defined only as
  *  their section nears the screen; each plays (and rests off screen) unless motion is reduced.
  *  Until then (and with no script) each shows a link to its page. */
@@ -287,7 +292,7 @@ function loadOtherFigures() {
     observer.disconnect();
     const still = Player.reducedMotion();
     for (const figure of section.querySelectorAll("kli-figure")) {
-      if (still) figure.setAttribute("t", figure.id === "fig-swarm" ? "8" : "4");
+      if (still) figure.setAttribute("t", STILL_AT[figure.id] ?? "4");
       else figure.setAttribute("autoplay", "");
     }
     import("../kli-figure.js");

@@ -488,8 +488,10 @@ export const page = {
     sastavljena od SLERP-ova između dodatnih kontrolnih tačaka; ljubičasto, isprekidano) i SLERP po dijelovima
     (tamno, tačkasto). Bijele tačke k0, k1, … su ključevi; k0 i k1 dijele jednu tačku, jer je prvi dio čisti okret oko nosa, koji
     Hopfovo preslikavanje ne može pokazati (odjeljak 5). Gledaj k2 i dio poslije njega: kako glatkoća raste, narandžasti lanac
-    zaobljava ugao koji SLERP pravi u k2 i napušta tačkasti luk. Male popunjene tačke koje se kreću su tačke svake
-    krive u trenutku <var>t</var>.`,
+    zaobljava ugao koji SLERP pravi u k2 i napušta tačkasti luk. Animacija na slici teče po svom satu, od k0
+    pri <var>t</var> = 0 do k3 pri <var>t</var> = 3, a zatim kreće ispočetka; tri male ispunjene tačke označavaju položaj
+    na svakoj od triju krivih u istom trenutku <var>t</var>. Ako je u postavkama tvog sistema uključeno smanjeno
+    kretanje, slika miruje pri <var>t</var> = 2.5, između k2 i k3, gdje se krive razilaze.`,
   "many.p10":
     `Slika iznad prikazuje kamo je okrenut nos, a ne koliko se brzo tijelo okreće, a gledalac vidi upravo prelom u toj
     brzini. Tijelo koje se okreće u svakom trenutku se okreće oko neke ose nekom brzinom. Njegova <dfn id="def-omega">brzina

@@ -478,8 +478,10 @@ export const page = {
     built from SLERPs between extra control points; purple, dashed) and piecewise SLERP (dark, dotted). The white
     dots k0, k1, … are the keys; k0 and k1 share one dot, since the first piece is a pure turn about the nose, which
     the Hopf map cannot show (section 5). Watch k2 and the piece after it: as smoothness grows, the orange chain rounds
-    the corner SLERP makes at k2 and leaves the dotted arc. The small filled dots that move are each curve's point at
-    the time <var>t</var>.`,
+    the corner SLERP makes at k2 and leaves the dotted arc. The figure plays on its own clock, from k0 at
+    <var>t</var> = 0 to k3 at <var>t</var> = 3, and then starts again; the three small filled dots are the three curves'
+    points at the same moment <var>t</var>. If your system is set to reduce motion, the figure holds still at
+    <var>t</var> = 2.5, between k2 and k3, where the curves part.`,
   "many.p10":
     `The figure above shows where the nose points, not how fast the object turns, and a kink in how fast is what a
     viewer sees. At each moment a turning object turns about some axis at some rate. Its <dfn id="def-omega">turning rate</dfn>, the
