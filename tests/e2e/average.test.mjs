@@ -1,8 +1,7 @@
 // End-to-end tests of the averaging page (average.html, made from www/average/) in Debian's headless Chromium.
 import { test } from "node:test";
 import assert from "node:assert/strict";
-import { join } from "node:path";
-import { artifacts, axeViolations, canvasStats, open, setup } from "./browser.mjs";
+import { axeViolations, canvasStats, keepShot, open, setup } from "./browser.mjs";
 
 setup();
 
@@ -31,7 +30,7 @@ test("the averaging page draws, the follower flows to the chordal mean, the medi
   const [, t, end] = readout.match(/t = ([\d.]+) \/ ([\d.]+)/).map(Number);
   assert.equal(t, end, readout);
   assert.match(readout, new RegExp(`the chordal mean: ${m.chordal[0].toFixed(2)}° from the truth`));
-  await page.screenshot({ path: join(artifacts, "average.png"), fullPage: true });
+  await keepShot(page, "average.png");
   assert.match(page.url(), /n=40&noise=5&out=0.2&seed=1/);
   assert.deepEqual(problems, []);
   await context.close();
@@ -100,6 +99,6 @@ test("WCAG 2.2 AA, embedded, and at 390 px", async () => {
   const narrow = await open("average.html", { viewport: { width: 390, height: 844 } });
   assert.ok(await narrow.page.evaluate(() => document.documentElement.scrollWidth <= 390), "no horizontal scrolling");
   assert.deepEqual(await axeViolations(narrow.page), []);
-  await narrow.page.screenshot({ path: join(artifacts, "average-390px.png"), fullPage: true });
+  await keepShot(narrow.page, "average-390px.png");
   await narrow.context.close();
 });

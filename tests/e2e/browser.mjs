@@ -93,6 +93,13 @@ export async function blank({ init, prepare, moving = false, ...options } = {}) 
   return { page, context, problems };
 }
 
+/** Keeps a screenshot of `page` in test-artifacts/ for a person to look at, with KLI_SHOTS=1
+ *  only: no test reads them, and the fifteen full-page ones cost about 7 core-seconds a run (the
+ *  tour's alone 1.3, a 3.4 MB PNG). */
+export async function keepShot(page, name, { fullPage = true } = {}) {
+  if (process.env.KLI_SHOTS) await page.screenshot({ path: join(artifacts, name), fullPage });
+}
+
 /** The address of the server for www/. */
 export const address = () => origin;
 

@@ -1,8 +1,7 @@
 // End-to-end tests of the keyframes page (keyframes.html, made from www/keyframes/) in Debian's headless Chromium.
 import { test } from "node:test";
 import assert from "node:assert/strict";
-import { join } from "node:path";
-import { artifacts, axeViolations, canvasStats, open, setup } from "./browser.mjs";
+import { axeViolations, canvasStats, keepShot, open, setup } from "./browser.mjs";
 
 setup();
 
@@ -24,7 +23,7 @@ test("the keyframes page draws three curves through the keys and measures them",
   assert.ok(chain[1] < 0.05 && squad[1] < 0.05 && slerp[1] > 0.5, JSON.stringify(f));
   assert.ok(chain[2] < squad[2] && squad[2] < slerp[2], JSON.stringify(f));
   assert.match(await page.textContent("#solve"), /Newton steps to a residual of [\d.]+e-1[0-9]/);
-  await page.screenshot({ path: join(artifacts, "keyframes.png"), fullPage: true });
+  await keepShot(page, "keyframes.png");
   assert.deepEqual(problems, []);
   await context.close();
 });
@@ -74,7 +73,7 @@ test("keyframes: WCAG 2.2 AA, embedded, and at 390 px", async () => {
   assert.ok(await narrow.page.evaluate(() => document.documentElement.scrollWidth <= 390), "no horizontal scrolling");
   // The measured table scrolls sideways here: a region the keyboard can reach and scroll.
   assert.deepEqual(await axeViolations(narrow.page), []);
-  await narrow.page.screenshot({ path: join(artifacts, "keyframes-390px.png"), fullPage: true });
+  await keepShot(narrow.page, "keyframes-390px.png");
   await narrow.context.close();
 });
 

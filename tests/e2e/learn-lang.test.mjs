@@ -8,7 +8,7 @@ import { test } from "node:test";
 import assert from "node:assert/strict";
 import { readFileSync } from "node:fs";
 import { join } from "node:path";
-import { artifacts, axeViolations, blank, address, open, root, setup } from "./browser.mjs";
+import { address, axeViolations, blank, keepShot, open, root, setup } from "./browser.mjs";
 import * as bs from "../../www/learn/strings/bs.js";
 import * as en from "../../www/learn/strings/en.js";
 import { LEARN } from "../../www/learn/state.js";
@@ -179,7 +179,7 @@ test("390 px in both languages: nothing overflows", async () => {
     // The language switch does not cover the title.
     const [languages, title] = await Promise.all(["nav.languages", "h1"].map((s) => page.locator(s).boundingBox()));
     assert.ok(languages.y + languages.height <= title.y + 8, `${lang}: the switch over the title`);
-    await page.screenshot({ path: join(artifacts, `learn-390px-${lang}.png`), fullPage: true });
+    await keepShot(page, `learn-390px-${lang}.png`);
     assert.deepEqual(problems, []);
     await context.close();
   }

@@ -7,8 +7,7 @@
 import { test } from "node:test";
 import assert from "node:assert/strict";
 import { readFile } from "node:fs/promises";
-import { join } from "node:path";
-import { artifacts, axeViolations, canvasStats, open, painted, setup } from "./browser.mjs";
+import { axeViolations, canvasStats, keepShot, open, painted, setup } from "./browser.mjs";
 
 setup();
 
@@ -180,7 +179,7 @@ test("the tour draws every figure and quotes MATH.md's values; the clock starts 
     const canvas = document.querySelector("#fig-average")?.shadowRoot?.querySelector("canvas");
     return canvas && canvas.width > 300;
   }, null, { timeout: 20000 });
-  await page.screenshot({ path: join(artifacts, "learn.png"), fullPage: true });
+  await keepShot(page, "learn.png");
   assert.deepEqual(problems, []);
   await context.close();
 });
@@ -432,7 +431,7 @@ test("WCAG 2.2 AA and 390 px, every control in words", async () => {
     assert.ok((await canvasStats(narrow.page, `#learn-${name}`)).drawn > 1500, name);
   }
   assert.deepEqual(await axeViolations(narrow.page), []);
-  await narrow.page.screenshot({ path: join(artifacts, "learn-390px.png"), fullPage: true });
+  await keepShot(narrow.page, "learn-390px.png");
   assert.deepEqual(narrow.problems, []);
   await narrow.context.close();
 });

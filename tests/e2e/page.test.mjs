@@ -1,10 +1,10 @@
 // End-to-end tests of the demo page (www/) in Debian's headless Chromium, driven by
-// playwright-core. Screenshots go to test-artifacts/.
+// playwright-core. Screenshots for a person to look at go to test-artifacts/ with KLI_SHOTS=1.
 import { test } from "node:test";
 import assert from "node:assert/strict";
 import { readFileSync } from "node:fs";
 import { join } from "node:path";
-import { artifacts, axeViolations, canvasStats, engage, open, root, setup } from "./browser.mjs";
+import { axeViolations, canvasStats, engage, keepShot, open, root, setup } from "./browser.mjs";
 
 setup();
 
@@ -21,7 +21,7 @@ const currentTime = async (page) => {
 test("loads cleanly and draws every canvas with the paper's example", async () => {
   const { page, context, problems } = await open();
   await page.waitForTimeout(400);
-  await page.screenshot({ path: join(artifacts, "page.png"), fullPage: true });
+  await keepShot(page, "page.png");
   const object = await canvasStats(page, "#object-canvas", { red: WING_RED, green: WING_GREEN });
   const sphere = await canvasStats(page, "#hopf-canvas", { orange: KLI_ORANGE });
   const film = await canvasStats(page, "#filmstrip-canvas", { red: WING_RED });
@@ -178,7 +178,7 @@ test("every bad input shows its message and the page keeps working", async () =>
   await page.fill("[name=r-z]", "-2");
   await page.uncheck("[name=shortestPath]");
   assert.match(await page.textContent("#shortestPath-error"), /^p and r are antipodal and shortestPath is false/);
-  await page.screenshot({ path: join(artifacts, "errors.png"), fullPage: true });
+  await keepShot(page, "errors.png");
   await page.check("[name=shortestPath]");
   assert.equal(await page.textContent("#shortestPath-error"), "");
   assert.match(await page.textContent("#note"), /nothing to interpolate/);
@@ -243,7 +243,7 @@ test("embed=1 is compact; reduced motion does not autoplay; high-DPI is crisp", 
   assert.equal(await embed.page.isVisible("#plots-canvas"), false);
   assert.equal(await embed.page.isVisible("#hopf-canvas"), true);
   await embed.page.waitForTimeout(200);
-  await embed.page.screenshot({ path: join(artifacts, "embed.png") });
+  await keepShot(embed.page, "embed.png", { fullPage: false });
   assert.deepEqual(embed.problems, []);
   await embed.context.close();
 
@@ -260,7 +260,7 @@ test("embed=1 is compact; reduced motion does not autoplay; high-DPI is crisp", 
   await sharp.page.waitForTimeout(200);
   const narrow = await canvasStats(sharp.page, "#hopf-canvas");
   assert.ok(narrow.width !== stats.width && narrow.drawn > 10000, "redrawn at the new size");
-  await sharp.page.screenshot({ path: join(artifacts, "narrow.png"), fullPage: true });
+  await keepShot(sharp.page, "narrow.png");
   assert.deepEqual(sharp.problems, []);
   await sharp.context.close();
 });
@@ -467,7 +467,7 @@ test("at 390 px the filmstrip's labels do not overlap and the page fits", async 
   assert.equal(runs.found.length, 8, JSON.stringify(runs));
   assert.ok(runs.found[0][0] > 0 && runs.found[7][1] < runs.width - 1, "labels inside the canvas");
   assert.ok(await page.evaluate(() => document.documentElement.scrollWidth <= 390), "no horizontal scrolling");
-  await page.screenshot({ path: join(artifacts, "390px.png"), fullPage: true });
+  await keepShot(page, "390px.png");
   assert.deepEqual(problems, []);
   await context.close();
 });

@@ -1,8 +1,7 @@
 // End-to-end tests of the swarm page (swarm.html, made from www/swarm/) in Debian's headless Chromium.
 import { test } from "node:test";
 import assert from "node:assert/strict";
-import { join } from "node:path";
-import { artifacts, axeViolations, canvasStats, open, setup } from "./browser.mjs";
+import { axeViolations, canvasStats, keepShot, open, setup } from "./browser.mjs";
 
 setup();
 
@@ -25,7 +24,7 @@ test("the swarm page draws, plays, and identical oscillators synchronise", async
   assert.ok(sphere.drawn > 20000 && sphere.blue > 5, JSON.stringify(sphere));
   assert.ok((await canvasStats(page, "#swarm-objects")).drawn > 3000);
   assert.ok((await canvasStats(page, "#swarm-plots")).drawn > 3000);
-  await page.screenshot({ path: join(artifacts, "swarm.png"), fullPage: true });
+  await keepShot(page, "swarm.png");
   // A playing page's URL holds the options, and reproduces the run.
   assert.match(page.url(), /K=1&n=500&graph=all/);
   assert.deepEqual(problems, []);
@@ -95,6 +94,6 @@ test("WCAG 2.2 AA, embedded, and at 390 px", async () => {
   await embed.context.close();
   const narrow = await open("swarm.html", { viewport: { width: 390, height: 844 } });
   assert.ok(await narrow.page.evaluate(() => document.documentElement.scrollWidth <= 390), "no horizontal scrolling");
-  await narrow.page.screenshot({ path: join(artifacts, "swarm-390px.png"), fullPage: true });
+  await keepShot(narrow.page, "swarm-390px.png");
   await narrow.context.close();
 });

@@ -3,7 +3,7 @@
 import { test } from "node:test";
 import assert from "node:assert/strict";
 import { join } from "node:path";
-import { artifacts, axeViolations, canvasStats, open, painted, setup } from "./browser.mjs";
+import { axeViolations, canvasStats, keepShot, open, painted, setup } from "./browser.mjs";
 
 setup();
 
@@ -44,7 +44,7 @@ test("the flow turns a random start into agreement, on the certified chordal opt
   assert.ok(chordal < 1.5, note);
   const end = await canvasStats(page, "#sync-graph", CLASSES);
   assert.ok(end.blue > 4 * end.red && end.blue > 2000, JSON.stringify(end));
-  await page.screenshot({ path: join(artifacts, "sync.png"), fullPage: true });
+  await keepShot(page, "sync.png");
   assert.deepEqual(problems, []);
   await context.close();
 });
@@ -210,7 +210,7 @@ test("WCAG 2.2 AA, and at 390 px", async () => {
   const narrow = await open("sync.html", { viewport: { width: 390, height: 844 } });
   assert.ok(await narrow.page.evaluate(() => document.documentElement.scrollWidth <= 390), "no horizontal scrolling");
   assert.deepEqual(await axeViolations(narrow.page), []);
-  await narrow.page.screenshot({ path: join(artifacts, "sync-390px.png"), fullPage: true });
+  await keepShot(narrow.page, "sync-390px.png");
   await narrow.context.close();
 });
 
