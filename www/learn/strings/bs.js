@@ -81,16 +81,22 @@ export const page = {
     `Proizvodi se najbrže računaju pomoću vektora. Zapiši kvaternion kao zbir realnog i vektorskog dijela,
     <var>a</var> + <var>m</var>, gdje je <var>m</var> = <var>b</var> i + <var>c</var> j + <var>d</var> k, a
     jedinice i, j i k čitaj kao jedinične vektore duž <var>x</var>, <var>y</var> i <var>z</var>. Realni brojevi
-    komutiraju s jedinicama i, j i k, a gornja pravila daju (<var>a</var> + <var>m</var>)(<var>b</var> +
-    <var>n</var>) = (<var>a</var><var>b</var> − <var>m</var>·<var>n</var>) + (<var>a</var><var>n</var> +
-    <var>b</var><var>m</var> + <var>m</var> × <var>n</var>), uz skalarni i vektorski proizvod u R³ (probaj
-    <var>m</var> = i, <var>n</var> = j: 0 + i × j = k). Iz toga slijede tri činjenice koje se koriste kroz
-    cijeli vodič. Prvo, <var>q</var><var>q̄</var> = <var>q̄</var><var>q</var> = |<var>q</var>|², pa kod
-    jediničnog kvaterniona <var>q̄</var> poništava <var>q</var>. Drugo, konjugovani kvaternion proizvoda je
-    proizvod konjugovanih kvaterniona obrnutim redom: <var>q̄</var><var>p̄</var> za <var>p</var><var>q</var>,
-    jer je <var>m</var> × <var>n</var> = −<var>n</var> × <var>m</var>. Treće, realni dio proizvoda
-    <var>r</var><var>p̄</var> je zbir četiri proizvoda odgovarajućih dijelova kvaterniona <var>p</var> i
-    <var>r</var>.`,
+    komutiraju s jedinicama i, j i k, a gornja pravila daju (<var>s</var> + <var>m</var>)(<var>t</var> +
+    <var>n</var>) = (<var>s</var><var>t</var> − <var>m</var>·<var>n</var>) + (<var>s</var><var>n</var> +
+    <var>t</var><var>m</var> + <var>m</var> × <var>n</var>), uz skalarni i vektorski proizvod u R³: izmnoži
+    <var>m</var><var>n</var> član po član, pa kvadrati (i² = j² = k² = −1) daju −<var>m</var>·<var>n</var>, a
+    proizvodi različitih jedinica (ij = k, ji = −k, …) daju <var>m</var> × <var>n</var> (probaj <var>m</var> =
+    i, <var>n</var> = j: 0 + i × j = k). Kao i množenje matrica, ovo množenje je asocijativno,
+    (<var>p</var><var>q</var>)<var>r</var> = <var>p</var>(<var>q</var><var>r</var>), ali nije komutativno. Iz
+    toga slijede tri činjenice koje se koriste kroz cijeli vodič. Prvo, <var>q</var><var>q̄</var> =
+    <var>q̄</var><var>q</var> = |<var>q</var>|², pa kod jediničnog kvaterniona <var>q̄</var> poništava
+    <var>q</var>. Drugo, konjugovani kvaternion proizvoda je proizvod konjugovanih kvaterniona obrnutim redom:
+    <var>q̄</var><var>p̄</var> za <var>p</var><var>q</var>, jer je <var>m</var> × <var>n</var> = −<var>n</var> ×
+    <var>m</var>. Treće, za <var>p</var> = <var>a</var> + <var>b</var> i + <var>c</var> j + <var>d</var> k i
+    <var>r</var> = <var>a′</var> + <var>b′</var> i + <var>c′</var> j + <var>d′</var> k, realni dio proizvoda
+    <var>r</var><var>p̄</var> je <var>a</var><var>a′</var> + <var>b</var><var>b′</var> +
+    <var>c</var><var>c′</var> + <var>d</var><var>d′</var>: to je skalarni proizvod kvaterniona <var>p</var> i
+    <var>r</var> kada ih posmatramo kao vektore u R⁴; u odjeljku 3 ga pišemo kao <var>p</var>·<var>r</var>.`,
   "turn.p3": "Okret za <var>θ</var> oko <var>u</var> je jedinični kvaternion",
   "turn.p4":
     `<var>q</var> = cos(<var>θ</var>/2) + sin(<var>θ</var>/2) (<var>u<sub>x</sub></var> i + <var>u<sub>y</sub></var>
@@ -104,9 +110,16 @@ export const page = {
     = (i + j)/√2 je vektor i već okrenut za 45° oko <var>z</var>, a množenje s <var>q̄</var> zdesna okreće ga za
     preostalih 45°. Vektor okomit na osu svaki činilac okreće za <var>θ</var>/2, i zato <var>q</var> sadrži
     polovinu ugla; vektor duž ose par činilaca zajedno ne mijenja, iako ga svaki činilac sam mijenja:
-    <var>q</var> k <var>q̄</var> = k. Jedan okret za drugim je proizvod: <var>q</var>₂<var>q</var>₁ prvo okreće
-    za <var>q</var>₁. Četiri broja i jedan uslov, |<var>q</var>| = 1, a ako ga zaokruživanje pokvari, dijeljenje
-    <var>q</var> sa |<var>q</var>| ga ponovo uspostavlja.`,
+    <var>q</var> k <var>q̄</var> = k. Svaki vektor je zbir dijela duž ose i dijela okomitog na nju, a
+    preslikavanje <var>v</var> ↦ <var>q</var> <var>v</var> <var>q̄</var> je linearno, pa ova dva slučaja
+    pokrivaju svaki vektor; rezultat nema realnog dijela, jer je po drugoj činjenici njegov konjugovani
+    kvaternion <var>q</var> <var>v̄</var> <var>q̄</var> = −<var>q</var> <var>v</var> <var>q̄</var>, pa je opet
+    vektor. Dva okreta jedan za drugim daju proizvod: <var>q</var>₂<var>q</var>₁ prvo okreće za <var>q</var>₁,
+    jer je zbog asocijativnosti <var>q</var>₂(<var>q</var>₁ <var>v</var> <var>q̄</var>₁)<var>q̄</var>₂ =
+    (<var>q</var>₂<var>q</var>₁) <var>v</var> (<var>q̄</var>₁<var>q̄</var>₂), a <var>q̄</var>₁<var>q̄</var>₂ je
+    po drugoj činjenici konjugovani kvaternion proizvoda <var>q</var>₂<var>q</var>₁. Četiri broja i jedan uslov,
+    |<var>q</var>| = 1, a ako ga zaokruživanje pokvari, dijeljenje <var>q</var> sa |<var>q</var>| ga ponovo
+    uspostavlja.`,
   "turn.caption1":
     `Avion zaokrenut za <var>q</var>. Isprekidana linija je osa okreta, nepomična u svijetu. Obojene strelice su ose
     tijela aviona, koje se okreću zajedno s njim: <span class="x">x</span> (nos), <span class="y">y</span> (krilo),

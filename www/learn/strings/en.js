@@ -80,16 +80,23 @@ export const page = {
     <var>c</var> j − <var>d</var> k, and a <dfn id="def-unit-quaternion">unit quaternion</dfn> is one of length 1.`,
   "turn.p2":
     `Products are quickest with vectors. Write a quaternion as a real part and a vector part, <var>a</var> +
-    <var>m</var> with <var>m</var> = <var>b</var> i + <var>c</var> j + <var>d</var> k, reading i, j and k as the unit
-    vectors along <var>x</var>, <var>y</var> and <var>z</var>. Real numbers commute with i, j and k, and the rules
-    above give (<var>a</var> + <var>m</var>)(<var>b</var> + <var>n</var>) = (<var>a</var><var>b</var> −
-    <var>m</var>·<var>n</var>) + (<var>a</var><var>n</var> + <var>b</var><var>m</var> + <var>m</var> × <var>n</var>),
-    with the dot and cross products of R³ (try <var>m</var> = i, <var>n</var> = j: 0 + i × j = k). Three facts
-    follow, and the tour uses them all the way through. First, <var>q</var><var>q̄</var> = <var>q̄</var><var>q</var> =
-    |<var>q</var>|², so for a unit quaternion <var>q̄</var> undoes <var>q</var>. Second, the conjugate of a product is
-    the product of the conjugates in the opposite order: <var>q̄</var><var>p̄</var> for <var>p</var><var>q</var>,
-    because <var>m</var> × <var>n</var> = −<var>n</var> × <var>m</var>. Third, the real part of
-    <var>r</var><var>p̄</var> is the four parts of <var>p</var> and <var>r</var> multiplied in pairs and added.`,
+    <var>m</var> with <var>m</var> = <var>b</var> i + <var>c</var> j + <var>d</var> k, reading i, j and k as the
+    unit vectors along <var>x</var>, <var>y</var> and <var>z</var>. Real numbers commute with i, j and k, and
+    the rules above give (<var>s</var> + <var>m</var>)(<var>t</var> + <var>n</var>) = (<var>s</var><var>t</var>
+    − <var>m</var>·<var>n</var>) + (<var>s</var><var>n</var> + <var>t</var><var>m</var> + <var>m</var> ×
+    <var>n</var>), with the dot and cross products of R³: multiply <var>m</var><var>n</var> out term by term,
+    and the squares (i² = j² = k² = −1) give −<var>m</var>·<var>n</var> while the mixed products (ij = k, ji =
+    −k, …) give <var>m</var> × <var>n</var> (try <var>m</var> = i, <var>n</var> = j: 0 + i × j = k). Like matrix
+    products, these products are associative, (<var>p</var><var>q</var>)<var>r</var> =
+    <var>p</var>(<var>q</var><var>r</var>), though not commutative. Three facts follow, and the tour uses them
+    all the way through. First, <var>q</var><var>q̄</var> = <var>q̄</var><var>q</var> = |<var>q</var>|², so for
+    a unit quaternion <var>q̄</var> undoes <var>q</var>. Second, the conjugate of a product is the product of
+    the conjugates in the opposite order: <var>q̄</var><var>p̄</var> for <var>p</var><var>q</var>, because
+    <var>m</var> × <var>n</var> = −<var>n</var> × <var>m</var>. Third, with <var>p</var> = <var>a</var> +
+    <var>b</var> i + <var>c</var> j + <var>d</var> k and <var>r</var> = <var>a′</var> + <var>b′</var> i +
+    <var>c′</var> j + <var>d′</var> k, the real part of <var>r</var><var>p̄</var> is <var>a</var><var>a′</var> +
+    <var>b</var><var>b′</var> + <var>c</var><var>c′</var> + <var>d</var><var>d′</var>: the dot product of
+    <var>p</var> and <var>r</var> read as vectors of R⁴, which section 3 writes <var>p</var>·<var>r</var>.`,
   "turn.p3": "The turn by <var>θ</var> about <var>u</var> is the unit quaternion",
   "turn.p4":
     `<var>q</var> = cos(<var>θ</var>/2) + sin(<var>θ</var>/2) (<var>u<sub>x</sub></var> i + <var>u<sub>y</sub></var>
@@ -102,8 +109,13 @@ export const page = {
     quarter turn. Look at the halfway point: <var>q</var> i = (i + j)/√2 is i already turned by 45° about
     <var>z</var>, and multiplying by <var>q̄</var> on the right turns it the other 45°. For a vector square to the
     axis, each factor turns it by <var>θ</var>/2, which is why <var>q</var> holds half the angle; a vector along the
-    axis is left alone by the pair, though not by either factor alone: <var>q</var> k <var>q̄</var> = k. One turn after another is a product: <var>q</var>₂<var>q</var>₁
-    turns by <var>q</var>₁ first. Four numbers and one condition, |<var>q</var>| = 1, and if rounding spoils it, dividing <var>q</var> by
+    axis is left alone by the pair, though not by either factor alone: <var>q</var> k <var>q̄</var> = k. Every vector is a part along the axis plus a part square to it,
+    and <var>v</var> ↦ <var>q</var> <var>v</var> <var>q̄</var> is linear, so the two cases settle every vector; and
+    the result has no real part, since by the second fact its conjugate is <var>q</var> <var>v̄</var> <var>q̄</var> =
+    −<var>q</var> <var>v</var> <var>q̄</var>, so it is a vector again. One turn after another is a product:
+    <var>q</var>₂<var>q</var>₁ turns by <var>q</var>₁ first, since <var>q</var>₂(<var>q</var>₁ <var>v</var>
+    <var>q̄</var>₁)<var>q̄</var>₂ = (<var>q</var>₂<var>q</var>₁) <var>v</var> (<var>q̄</var>₁<var>q̄</var>₂) by
+    associativity, and <var>q̄</var>₁<var>q̄</var>₂ is the conjugate of <var>q</var>₂<var>q</var>₁ by the second fact. Four numbers and one condition, |<var>q</var>| = 1, and if rounding spoils it, dividing <var>q</var> by
     |<var>q</var>| restores it.`,
   "turn.caption1":
     `The aircraft turned by <var>q</var>. The dashed line is the turn's axis, fixed in the world. The coloured arrows
