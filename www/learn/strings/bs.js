@@ -162,7 +162,10 @@ export const page = {
     `Kolika je ta udaljenost izražena kao okret? Okret koji prevodi <var>p</var> u <var>r</var> je <var>r</var>
     <var>p̄</var>, jer je (<var>r</var> <var>p̄</var>) <var>p</var> = <var>r</var> (<var>p̄</var> <var>p</var>) =
     <var>r</var>, a prema odjeljku 2 njegov realni dio je <var>p</var>·<var>r</var> = cos <var>φ</var>. Realni dio
-    cos(<var>θ</var>/2) odgovara okretu za <var>θ</var> (opet odjeljak 2), pa rotacija od <var>p</var> do <var>r</var> okreće za
+    cos(<var>θ</var>/2) odgovara okretu za <var>θ</var> (opet odjeljak 2: jedinični kvaternion s realnim dijelom
+    cos(<var>θ</var>/2), za <var>θ</var> od 0° do 360°, ima vektorski dio dužine sin(<var>θ</var>/2), jer je <var>a</var>² + |<var>m</var>|² = 1, pa je
+    to cos(<var>θ</var>/2) + sin(<var>θ</var>/2) <var>u</var>, gdje je <var>u</var> jedinični vektor duž njegovog
+    vektorskog dijela), pa rotacija od <var>p</var> do <var>r</var> okreće za
     2<var>φ</var>: uglovi na S³ su polovine uglova okreta. (Kad je <var>p</var>·<var>r</var> &lt; 0, ugao
     2<var>φ</var> je veći od 180°, a ista rotacija je okret za 360° − 2<var>φ</var> u suprotnom smjeru.)`,
   "cover.p5":

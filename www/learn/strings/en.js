@@ -159,7 +159,9 @@ export const page = {
     `How far, as a turn? The turn that takes <var>p</var> to <var>r</var> is <var>r</var> <var>p̄</var>, since
     (<var>r</var> <var>p̄</var>) <var>p</var> = <var>r</var> (<var>p̄</var> <var>p</var>) = <var>r</var>, and by
     section 2 its real part is <var>p</var>·<var>r</var> = cos <var>φ</var>. A real part cos(<var>θ</var>/2) is a turn by
-    <var>θ</var> (section 2 again), so the rotation from <var>p</var> to <var>r</var> turns by 2<var>φ</var>: angles on S³ are half
+    <var>θ</var> (section 2 again: a unit quaternion with real part cos(<var>θ</var>/2), <var>θ</var> from 0° to 360°, has a vector part of length
+    sin(<var>θ</var>/2), since <var>a</var>² + |<var>m</var>|² = 1, so it is cos(<var>θ</var>/2) + sin(<var>θ</var>/2)
+    <var>u</var> with <var>u</var> the unit vector along its vector part), so the rotation from <var>p</var> to <var>r</var> turns by 2<var>φ</var>: angles on S³ are half
     the angles of the turns. (When <var>p</var>·<var>r</var> &lt; 0, 2<var>φ</var> is more than 180°, and the same
     rotation is the turn by 360° − 2<var>φ</var> the other way.)`,
   "cover.p5":
