@@ -277,7 +277,7 @@ test-native:
 # tests/browser.rs), named with `--test`: like `--tests`, it leaves out the doctests and plain
 # `#[test]`s that wasm would report as passed without running them, and it builds no library test
 # harness, which on wasm holds only native tests (the lib's `#[test]`s, run by test-native) and
-# ran nothing: the two harnesses' builds and bindings cost about 8 core-seconds (their cfg(test)
+# ran nothing: the two harnesses' builds and bindings cost 9–10 core-seconds (their cfg(test)
 # code is linted natively, by lint-rust's `--all-targets`).
 CLIPPY_DRIVER = $(shell rustup which clippy-driver 2>/dev/null || command -v clippy-driver)
 WASM_CLIPPY = RUSTC_WORKSPACE_WRAPPER=$(CLIPPY_DRIVER) CLIPPY_ARGS=-D__CLIPPY_HACKERY__warnings__CLIPPY_HACKERY__
